@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian packages aapat builds, tests and benchmarks with.
+set -euo pipefail
+packages=(cmake ninja-build g++ pkg-config
+  libcli11-dev nlohmann-json3-dev libfmt-dev libpng-dev libtbb-dev
+  libgtest-dev libgmock-dev libbenchmark-dev librapidcheck-dev clang-format)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,20 @@
+// Each subcommand registers its options on the CLI11 app and returns the
+// action to run once parsing succeeded.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <iosfwd>
+
+namespace aapat {
+
+using Action = std::function<void(std::ostream& out)>;
+
+Action add_list_command(CLI::App& app);
+Action add_show_command(CLI::App& app);
+Action add_eval_command(CLI::App& app);
+
+// Writes `content` to `path` whole or not at all; "-" writes to `out`.
+void write_output(const std::string& path, const std::string& content, std::ostream& out);
+
+}  // namespace aapat

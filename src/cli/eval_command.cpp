@@ -1,0 +1,78 @@
+// `aapat eval PATTERN...`: E2 (Laine-Aila Eq. 5), the worst angle and n for
+// each pattern; optionally the per-angle profile W(theta) E1(theta).
+#include <fmt/format.h>
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "cli/commands.h"
+#include "cli/metric_options.h"
+#include "io/pattern_json.h"
+#include "io/profile_plot.h"
+
+namespace aapat {
+
+Action add_eval_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("eval", "evaluate E2 of patterns against a reference filter");
+  struct Options {
+    std::vector<std::string> patterns;
+    MetricOptions metric;
+    bool json = false;
+    std::string profile;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("patterns", o->patterns, "catalog names or pattern files (.json)")->required();
+  o->metric.add_to(cmd);
+  cmd->add_flag("--json", o->json, "print one JSON array, an object per pattern");
+  cmd->add_option("--profile", o->profile,
+                  "write W(theta) E1(theta) of all patterns to a .svg plot or .csv table");
+  return [o](std::ostream& out) {
+    if (!o->profile.empty() && !o->profile.ends_with(".svg") && !o->profile.ends_with(".csv"))
+      throw Error(fmt::format("--profile: '{}' must end in .svg or .csv", o->profile));
+    const Metric metric = o->metric.make();
+    std::vector<Pattern> patterns;
+    for (const auto& name : o->patterns) patterns.push_back(resolve_pattern(name));
+
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    std::vector<ProfileSeries> series;
+    if (!o->json)
+      out << fmt::format(
+          "filter {}, acuity {} ({} angles), norm {}\n{:<22} {:<14} {:>6} {:>8} {:>12} {:>7}\n",
+          metric.filter().name(), metric.acuity().name, metric.angle_count(), o->metric.norm,
+          "pattern", "family", "n", "E2", "worst angle", "kernel");
+    for (const Pattern& p : patterns) {
+      const PatternError e = metric.evaluate(p);
+      const double n = samples_per_pixel(p);
+      if (o->json) {
+        rows.push_back({{"pattern", p.name},
+                        {"family", family(p)},
+                        {"n", n},
+                        {"e2", e.e2},
+                        {"worst_angle", e.worst_angle_deg},
+                        {"worst_kernel", e.worst_kernel},
+                        {"kernel_e2", e.kernel_e2},
+                        {"filter", metric.filter().name()},
+                        {"acuity", metric.acuity().name},
+                        {"norm", o->metric.norm}});
+      } else {
+        out << fmt::format("{:<22} {:<14} {:>6} {:>8.4f} {:>12g} {:>7}\n", p.name, family(p),
+                           format_cost(n), e.e2, e.worst_angle_deg, e.worst_kernel);
+      }
+      if (!o->profile.empty())
+        series.push_back({p.name, metric.profile(make_kernel(p, e.worst_kernel))});
+    }
+    if (o->json) out << rows.dump(2) << "\n";
+    if (!o->profile.empty()) {
+      const std::string title = fmt::format("W(theta) E1(theta), filter {}, acuity {}",
+                                            metric.filter().name(), metric.acuity().name);
+      write_output(o->profile,
+                   o->profile.ends_with(".svg") ? profile_svg(metric.acuity(), series, title)
+                                                : profile_csv(metric.acuity(), series),
+                   out);
+      if (!o->json) out << "wrote " << o->profile << "\n";
+    }
+  };
+}
+
+}  // namespace aapat

@@ -1,0 +1,33 @@
+// `aapat list`: the catalog, the filters and the acuity tables, one line each.
+#include <fmt/format.h>
+
+#include <ostream>
+
+#include "cli/commands.h"
+#include "core/acuity.h"
+#include "core/filter_catalog.h"
+#include "generate/catalog.h"
+
+namespace aapat {
+
+Action add_list_command(CLI::App& app) {
+  app.add_subcommand("list", "list the catalog patterns, reference filters and acuity tables");
+  return [](std::ostream& out) {
+    out << "patterns:\n";
+    for (const auto& e : pattern_catalog()) {
+      const std::string fam = e.name == "grid-NxN" ? "P(1,1,N*N)" : family(catalog_pattern(e.name));
+      out << fmt::format("  {:<20} {:<13} {} [{}]\n", e.name, fam, e.summary, e.source);
+    }
+    out << "filters:\n";
+    for (const auto& f : filter_catalog()) {
+      std::string params;
+      for (const auto& p : f.params)
+        params += fmt::format("{}{}={}", params.empty() ? ":" : ",", p.key, p.default_text);
+      out << fmt::format("  {:<34} {} [{}]\n", f.name + params, f.summary, f.source);
+    }
+    out << "acuity tables:\n";
+    for (const auto& a : acuity_catalog()) out << fmt::format("  {:<27} {}\n", a.spec, a.summary);
+  };
+}
+
+}  // namespace aapat

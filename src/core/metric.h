@@ -1,0 +1,74 @@
+// The weighted error metric of Laine & Aila Sec. 4.
+//
+// E1 (Eq. 4) compares the step response of a 1D pattern, ghat0(a) = sum of
+// the weights of the samples at or left of a, with the filter's g0(a):
+//   E1^2 = int (ghat0(a) - g0(a))^2 da.
+// For weights summing to 1 this integral has the closed form (the 1D energy
+// identity; derivation in docs/metric.md)
+//   E1^2 = sum_j w_j J(p_j) - sum_{j<k} w_j w_k |p_j - p_k| - (1/2) E|S - T|,
+// with J(p) = int |p - t| h(t) dt, tabulated exactly per filter. No sort and
+// no small steps in a; `e1_squared_piecewise` integrates piece by piece
+// between the sorted samples instead, as a cross-check.
+//
+// E1(theta) projects a 2D kernel on the normal (-sin theta, cos theta) of an
+// edge of direction theta; E2 = max over the acuity table's angles of
+// W(theta) E1(theta) (Eq. 5), or their L_p mean, and max over kernels.
+#pragma once
+
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "core/acuity.h"
+#include "core/filter.h"
+#include "core/pattern.h"
+
+namespace aapat {
+
+// E1^2 of a 1D pattern whose weights sum to 1, in closed form.
+double e1_squared(const Filter& filter, std::span<const double> p, std::span<const double> w);
+// The same integral, sorted and integrated piece by piece with the filter's
+// exact antiderivatives; slower, used to check the closed form.
+double e1_squared_piecewise(const Filter& filter, std::span<const double> p,
+                            std::span<const double> w);
+
+struct KernelError {
+  double e2 = 0;            // the combined weighted error over angles
+  int worst_angle = 0;      // index into the acuity table of the largest W E1
+};
+
+struct PatternError {
+  double e2 = 0;               // max over kernels
+  int worst_kernel = 0;
+  double worst_angle_deg = 0;  // edge direction of the worst kernel's largest W E1
+  std::vector<double> kernel_e2;
+};
+
+class Metric {
+ public:
+  static constexpr double kMaxNorm = std::numeric_limits<double>::infinity();
+
+  // norm: p of the L_p mean over angles, ((1/M) sum (W E1)^p)^(1/p); infinity
+  // (the default, Laine-Aila Eq. 5) is the maximum.
+  Metric(Filter filter, AcuityTable acuity, double norm = kMaxNorm);
+
+  const Filter& filter() const { return filter_; }
+  const AcuityTable& acuity() const { return acuity_; }
+  double norm() const { return norm_; }
+  int angle_count() const { return static_cast<int>(cos_.size()); }
+
+  // W(theta_i) E1(theta_i) for the i-th angle of the table.
+  double weighted_e1(const Kernel& k, int angle) const;
+  // The per-angle profile W(theta) E1(theta).
+  std::vector<double> profile(const Kernel& k) const;
+  KernelError kernel_error(const Kernel& k) const;
+  PatternError evaluate(const Pattern& p) const;
+
+ private:
+  Filter filter_;
+  AcuityTable acuity_;
+  double norm_;
+  std::vector<double> cos_, sin_;
+};
+
+}  // namespace aapat
