@@ -38,8 +38,8 @@ AcuityTable uniform_acuity(double step_deg, double weight) {
   check_step(step_deg);
   if (!(weight > 0 && std::isfinite(weight)))
     throw Error(fmt::format("uniform acuity: weight {} must be positive", weight));
-  AcuityTable t{fmt::format("uniform:step={},weight={}", step_deg, weight), angles_every(step_deg),
-                {}};
+  AcuityTable t{
+      fmt::format("uniform:step={},weight={}", step_deg, weight), angles_every(step_deg), {}};
   t.weights.assign(t.angles_deg.size(), weight);
   return t;
 }
@@ -92,6 +92,7 @@ AcuityTable make_acuity(std::string_view spec) {
   const std::string_view kind = spec.substr(0, colon);
   if ((kind == "uniform" || kind == "linear") && colon != std::string_view::npos) {
     double step = 0, weight = 1;
+    bool has_step = false;
     std::string_view rest = spec.substr(colon + 1);
     while (!rest.empty()) {
       const auto comma = rest.find(',');
@@ -99,12 +100,15 @@ AcuityTable make_acuity(std::string_view spec) {
       rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
       const auto eq = item.find('=');
       const std::string_view key = item.substr(0, eq);
-      if (eq == std::string_view::npos || !(key == "step" || (key == "weight" && kind == "uniform")))
+      if (eq == std::string_view::npos ||
+          !(key == "step" || (key == "weight" && kind == "uniform")))
         throw Error(fmt::format("acuity {}: unknown parameter '{}' (it takes step{})", kind, item,
                                 kind == "uniform" ? " and weight" : ""));
       (key == "step" ? step : weight) = parse_number(item.substr(eq + 1), key);
+      has_step = has_step || key == "step";
     }
-    if (step == 0) throw Error(fmt::format("acuity {}: give the angle step, e.g. {}:step=1", kind, kind));
+    if (!has_step)
+      throw Error(fmt::format("acuity {}: give the angle step, e.g. {}:step=1", kind, kind));
     return kind == "uniform" ? uniform_acuity(step, weight) : linear_acuity(step);
   }
   std::ifstream file{std::string(spec)};
@@ -120,9 +124,11 @@ AcuityTable make_acuity(std::string_view spec) {
 
 const std::vector<AcuityInfo>& acuity_catalog() {
   static const std::vector<AcuityInfo> kInfo = {
-      {"laine-aila", "4 edge angles: 0/90 deg weigh 3.93, 45/135 weigh 2.50 (default; data/README.md)"},
+      {"laine-aila",
+       "4 edge angles: 0/90 deg weigh 3.93, 45/135 weigh 2.50 (default; data/README.md)"},
       {"uniform:step=S[,weight=W]", "every S degrees in [0, 180), all weights W (default 1)"},
-      {"linear:step=S", "every S degrees, laine-aila weights interpolated linearly between 45-degree nodes"},
+      {"linear:step=S",
+       "every S degrees, laine-aila weights interpolated linearly between 45-degree nodes"},
       {"FILE.csv", "rows 'edge_angle_deg,weight'; '#' starts a comment"},
   };
   return kInfo;

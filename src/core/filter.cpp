@@ -32,14 +32,18 @@ double mitchell(double b, double c, double x) {
 
 // Pieces on [0, radius]: the breakpoints of a piecewise polynomial, or 1/16
 // pixel for the smooth filters that are interpolated.
+bool is_piecewise_polynomial(const FilterShape& shape) {
+  return std::holds_alternative<BoxShape>(shape) || std::holds_alternative<TentShape>(shape) ||
+         std::holds_alternative<MitchellShape>(shape);
+}
+
 int segment_count(const FilterShape& shape, double radius) {
-  return std::visit(Overloaded{[](const BoxShape&) { return 1; },
-                               [](const TentShape&) { return 1; },
-                               [](const MitchellShape&) { return 2; },
-                               [&](const auto&) {
-                                 return std::max(1, static_cast<int>(std::ceil(radius * 16)));
-                               }},
-                    shape);
+  return std::visit(
+      Overloaded{
+          [](const BoxShape&) { return 1; }, [](const TentShape&) { return 1; },
+          [](const MitchellShape&) { return 2; },
+          [&](const auto&) { return std::max(1, static_cast<int>(std::ceil(radius * 16))); }},
+      shape);
 }
 
 }  // namespace
@@ -80,6 +84,8 @@ Filter::Filter(FilterShape shape, std::string name)
   width_ = radius_ / segments_;
   inv_width_ = 1.0 / width_;
   const double half = width_ / 2;  // dx = half * dt on every piece
+  const int degree = is_piecewise_polynomial(shape_) ? kPolynomialDegree : kInterpolatedDegree;
+  coefs_ = degree + 3;
 
   // Tabularize the unnormalized filter on [0, radius], then normalize.
   pieces_.resize(segments_);
@@ -87,7 +93,7 @@ Filter::Filter(FilterShape shape, std::string name)
   for (int k = 0; k < segments_; ++k) {
     const double x0 = k * width_;
     pieces_[k].h = chebyshev_interpolant(
-        [&](double t) { return shape_value(shape_, x0 + (t + 1) * half); }, kFitDegree);
+        [&](double t) { return shape_value(shape_, x0 + (t + 1) * half); }, degree);
     total += 2 * half * antiderivative(pieces_[k].h)(1.0);
   }
   scale_ = 1.0 / total;
@@ -114,11 +120,11 @@ Filter::Filter(FilterShape shape, std::string name)
   s_total_ = s;
   // J(radius) = radius fixes the constant of integration.
   const double shift = radius_ - j_start;
-  abs_moment_coef_.assign(static_cast<size_t>(segments_) * kAbsMomentCoefs, 0.0);
+  abs_moment_coef_.assign(static_cast<size_t>(segments_) * coefs_, 0.0);
   for (int k = 0; k < segments_; ++k) {
     j_pieces[k].c[0] += shift;
-    for (size_t i = 0; i < j_pieces[k].c.size() && i < size_t(kAbsMomentCoefs); ++i)
-      abs_moment_coef_[k * kAbsMomentCoefs + i] = j_pieces[k].c[i];
+    for (size_t i = 0; i < j_pieces[k].c.size() && i < size_t(coefs_); ++i)
+      abs_moment_coef_[k * coefs_ + i] = j_pieces[k].c[i];
   }
   // int_{-R}^{R} g0^2 - R = -(1/2) E|S - T| (the energy identity of the metric).
   half_mean_distance_ = radius_ - (q_total_ + s_total_);
@@ -143,7 +149,9 @@ double Filter::step_response(double a) const {
   return pieces_[k].g(t);
 }
 
-double Filter::step_integral(double a) const { return (abs_moment(a) + a) / 2; }
+double Filter::step_integral(double a) const {
+  return (abs_moment(a) + a) / 2;
+}
 
 double Filter::step_square_integral(double a) const {
   if (a <= -radius_) return 0.0;

@@ -31,64 +31,82 @@ double in_range(const Params& p, const std::string& key, double lo, double hi, b
 int whole(const Params& p, const std::string& key, int lo, int hi, std::string_view filter) {
   const double v = p.at(key);
   if (v != std::floor(v) || v < lo || v > hi)
-    throw Error(fmt::format("filter {}: {} = {} must be a whole number in {}..{}", filter, key, v,
-                            lo, hi));
+    throw Error(
+        fmt::format("filter {}: {} = {} must be a whole number in {}..{}", filter, key, v, lo, hi));
   return static_cast<int>(v);
 }
 
 const std::vector<FilterEntry>& entries() {
   static const std::vector<FilterEntry> kEntries = {
-      {{"box", "rectangle of the given width (Goss-Wu 'box', the A-buffer's filter)",
+      {{"box",
+        "rectangle of the given width (Goss-Wu 'box', the A-buffer's filter)",
         "Goss & Wu 2000, Table 3 (rectangle)",
         {{"width", "1", "support width in pixels"}}},
        [](const Params& p) { return BoxShape{in_range(p, "width", 0, 16, true, "box")}; }},
-      {{"tent", "triangle 1 - |x|/radius", "Goss & Wu 2000, Table 3 (triangle) and Sec. 3.3.2",
+      {{"tent",
+        "triangle 1 - |x|/radius",
+        "Goss & Wu 2000, Table 3 (triangle) and Sec. 3.3.2",
         {{"radius", "1", "half width in pixels"}}},
        [](const Params& p) { return TentShape{in_range(p, "radius", 0, 16, true, "tent")}; }},
-      {{"gaussian", "exp(-x^2 / (2 sigma^2)), truncated at the radius (not shifted)",
+      {{"gaussian",
+        "exp(-x^2 / (2 sigma^2)), truncated at the radius (not shifted)",
         "defaults as pbrt-v4's Gaussian filter",
         {{"sigma", "0.5", "standard deviation in pixels"}, {"radius", "1.5", "truncation radius"}}},
        [](const Params& p) {
          return GaussianShape{in_range(p, "sigma", 0, 16, true, "gaussian"),
                               in_range(p, "radius", 0, 16, true, "gaussian")};
        }},
-      {{"gaussian-half", "Goss-Wu 'Gaussian 1/2': 2^(-4x^2), height 1/2 at 1/2, cut at 1.5",
+      {{"gaussian-half",
+        "Goss-Wu 'Gaussian 1/2': 2^(-4x^2), height 1/2 at 1/2, cut at 1.5",
         "Goss & Wu 2000, Sec. 3.3.3 (sigma = 1/sqrt(8 ln 2) = 0.4247)",
         {}},
-       [](const Params&) { return GaussianShape{1.0 / std::sqrt(8.0 * std::log(2.0)), 1.5}; }},
-      {{"mitchell", "Mitchell-Netravali cubic (B, C), radius 2",
+       [](const Params&) {
+         return GaussianShape{1.0 / std::sqrt(8.0 * std::log(2.0)), 1.5};
+       }},
+      {{"mitchell",
+        "Mitchell-Netravali cubic (B, C), radius 2",
         "Mitchell & Netravali 1988; (1/3, 1/3) is the reference of Laine-Aila and Hasselgren",
         {{"b", "1/3", "B parameter"}, {"c", "1/3", "C parameter"}}},
        [](const Params& p) {
          return MitchellShape{in_range(p, "b", -10, 10, false, "mitchell"),
                               in_range(p, "c", -10, 10, false, "mitchell")};
        }},
-      {{"notch", "Mitchell-Netravali notch filter (B, C) = (3/2, -1/4)",
+      {{"notch",
+        "Mitchell-Netravali notch filter (B, C) = (3/2, -1/4)",
         "Mitchell & Netravali 1988 (cited by Laine-Aila Sec. 2)",
         {}},
-       [](const Params&) { return MitchellShape{1.5, -0.25}; }},
-      {{"catmull-rom", "Catmull-Rom spline, Mitchell-Netravali (B, C) = (0, 1/2)",
+       [](const Params&) {
+         return MitchellShape{1.5, -0.25};
+       }},
+      {{"catmull-rom",
+        "Catmull-Rom spline, Mitchell-Netravali (B, C) = (0, 1/2)",
         "Mitchell & Netravali 1988; Keys' cubic with a = -1/2",
         {}},
-       [](const Params&) { return MitchellShape{0.0, 0.5}; }},
-      {{"keys", "Keys' cubic convolution with parameter a (= Mitchell-Netravali B = 0, C = -a)",
+       [](const Params&) {
+         return MitchellShape{0.0, 0.5};
+       }},
+      {{"keys",
+        "Keys' cubic convolution with parameter a (= Mitchell-Netravali B = 0, C = -a)",
         "Goss & Wu 2000, Table 3 (cubic)",
         {{"a", "-1/2", "Keys' a"}}},
        [](const Params& p) {
          return MitchellShape{0.0, -in_range(p, "a", -10, 10, false, "keys")};
        }},
-      {{"lanczos", "Lanczos-M windowed sinc: sinc(x) sinc(x/M) on |x| < M",
+      {{"lanczos",
+        "Lanczos-M windowed sinc: sinc(x) sinc(x/M) on |x| < M",
         "Goss & Wu 2000, Table 3 (Lanczos-M sinc)",
         {{"lobes", "3", "M, the radius in pixels"}}},
        [](const Params& p) { return LanczosShape{whole(p, "lobes", 1, 16, "lanczos")}; }},
-      {{"lanczos-gaussian", "Lanczos-windowed Gaussian: exp(-x^2/(2 sigma^2)) sinc(x/M), |x| < M",
+      {{"lanczos-gaussian",
+        "Lanczos-windowed Gaussian: exp(-x^2/(2 sigma^2)) sinc(x/M), |x| < M",
         "Goss & Wu 2000, Table 3 (Lanczos-M Gaussian; sigma is a parameter here)",
         {{"lobes", "2", "M, the radius in pixels"}, {"sigma", "0.5", "Gaussian deviation"}}},
        [](const Params& p) {
          return LanczosGaussianShape{whole(p, "lobes", 1, 16, "lanczos-gaussian"),
                                      in_range(p, "sigma", 0, 16, true, "lanczos-gaussian")};
        }},
-      {{"blinn", "Blinn's nice filter: sinc(x/2) sinc(x/4) on |x| < 4",
+      {{"blinn",
+        "Blinn's nice filter: sinc(x/2) sinc(x/4) on |x| < 4",
         "Goss & Wu 2000, Table 3 and Table 4 (8N x 8N kernel); see docs/filters.md",
         {}},
        [](const Params&) { return BlinnNiceShape{}; }},

@@ -35,6 +35,8 @@ class Error : public std::runtime_error {
 };
 
 inline constexpr double kPi = 3.14159265358979323846;
-inline double radians(double degrees) { return degrees * (kPi / 180.0); }
+inline double radians(double degrees) {
+  return degrees * (kPi / 180.0);
+}
 
 }  // namespace aapat

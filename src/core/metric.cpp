@@ -72,43 +72,52 @@ Metric::Metric(Filter filter, AcuityTable acuity, double norm)
     cos_.push_back(std::cos(radians(a)));
     sin_.push_back(std::sin(radians(a)));
   }
+  for (double w : acuity_.weights) weight_sq_.push_back(w * w);
+}
+
+double Metric::e1_squared_at(const Kernel& k, int angle, double* proj) const {
+  const size_t n = k.w.size();
+  const double c = cos_[angle], s = sin_[angle];
+  for (size_t j = 0; j < n; ++j) proj[j] = c * k.y[j] - s * k.x[j];
+  return e1_squared(filter_, {proj, n}, k.w);
+}
+
+template <class Visit>
+void Metric::for_each_angle(const Kernel& k, Visit&& visit) const {
+  const size_t n = k.w.size();
+  // Projections on the edge normal: on the stack for ordinary kernel sizes.
+  constexpr size_t kStack = 256;
+  std::array<double, kStack> stack;
+  std::vector<double> heap(n > kStack ? n : 0);
+  double* proj = n > kStack ? heap.data() : stack.data();
+  for (int a = 0; a < angle_count(); ++a) visit(a, e1_squared_at(k, a, proj));
 }
 
 double Metric::weighted_e1(const Kernel& k, int angle) const {
-  const int n = k.size();
-  // Project on the edge normal without allocating for ordinary kernel sizes.
-  constexpr int kStack = 256;
-  std::array<double, kStack> stack;
-  thread_local std::vector<double> heap;
-  double* proj = stack.data();
-  if (n > kStack) {
-    heap.resize(n);
-    proj = heap.data();
-  }
-  const double c = cos_[angle], s = sin_[angle];
-  for (int j = 0; j < n; ++j) proj[j] = c * k.y[j] - s * k.x[j];
-  const double e1sq = e1_squared(filter_, {proj, static_cast<size_t>(n)}, k.w);
-  return acuity_.weights[angle] * std::sqrt(e1sq);
+  std::vector<double> proj(k.w.size());
+  return acuity_.weights[angle] * std::sqrt(e1_squared_at(k, angle, proj.data()));
 }
 
 std::vector<double> Metric::profile(const Kernel& k) const {
   std::vector<double> out(angle_count());
-  for (int a = 0; a < angle_count(); ++a) out[a] = weighted_e1(k, a);
+  for_each_angle(k, [&](int a, double e1sq) { out[a] = acuity_.weights[a] * std::sqrt(e1sq); });
   return out;
 }
 
 KernelError Metric::kernel_error(const Kernel& k) const {
+  // Compare W^2 E1^2: one square root per kernel, not one per angle.
   KernelError r;
   double worst = -1, sum = 0;
-  for (int a = 0; a < angle_count(); ++a) {
-    const double e = weighted_e1(k, a);
+  const bool max_norm = norm_ == kMaxNorm;
+  for_each_angle(k, [&](int a, double e1sq) {
+    const double e = weight_sq_[a] * e1sq;
     if (e > worst) {
       worst = e;
       r.worst_angle = a;
     }
-    if (norm_ != kMaxNorm) sum += std::pow(e, norm_);
-  }
-  r.e2 = norm_ == kMaxNorm ? worst : std::pow(sum / angle_count(), 1.0 / norm_);
+    if (!max_norm) sum += std::pow(e, norm_ / 2);
+  });
+  r.e2 = max_norm ? std::sqrt(worst) : std::pow(sum / angle_count(), 1.0 / norm_);
   return r;
 }
 

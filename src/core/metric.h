@@ -33,12 +33,12 @@ double e1_squared_piecewise(const Filter& filter, std::span<const double> p,
                             std::span<const double> w);
 
 struct KernelError {
-  double e2 = 0;            // the combined weighted error over angles
-  int worst_angle = 0;      // index into the acuity table of the largest W E1
+  double e2 = 0;        // the combined weighted error over angles
+  int worst_angle = 0;  // index into the acuity table of the largest W E1
 };
 
 struct PatternError {
-  double e2 = 0;               // max over kernels
+  double e2 = 0;  // max over kernels
   int worst_kernel = 0;
   double worst_angle_deg = 0;  // edge direction of the worst kernel's largest W E1
   std::vector<double> kernel_e2;
@@ -65,10 +65,16 @@ class Metric {
   PatternError evaluate(const Pattern& p) const;
 
  private:
+  // E1^2 at one angle; proj has room for the kernel's projections.
+  double e1_squared_at(const Kernel& k, int angle, double* proj) const;
+  // Calls visit(angle index, E1^2) for every angle of the table.
+  template <class Visit>
+  void for_each_angle(const Kernel& k, Visit&& visit) const;
+
   Filter filter_;
   AcuityTable acuity_;
   double norm_;
-  std::vector<double> cos_, sin_;
+  std::vector<double> cos_, sin_, weight_sq_;
 };
 
 }  // namespace aapat

@@ -12,14 +12,22 @@ constexpr int kMaxTileSide = 128;
 constexpr int kMaxSamplesPerSet = 1024;
 constexpr double kWeightSumTolerance = 1e-6;
 
-bool on(double v, double target) { return std::abs(v - target) <= kSameSampleEps; }
+bool on(double v, double target) {
+  return std::abs(v - target) <= kSameSampleEps;
+}
 
-int wrap(int v, int n) { return ((v % n) + n) % n; }
+int wrap(int v, int n) {
+  return ((v % n) + n) % n;
+}
 
 // The first and last pixel offset of a footprint relative to the kernel's
 // pixel, and where its output point sits relative to that pixel's centre.
-int first_offset(const Footprint& f) { return f.size == 1 ? 0 : 1 - f.size / 2; }
-double output_offset(const Footprint& f) { return f.size == 1 ? 0.0 : 0.5; }
+int first_offset(const Footprint& f) {
+  return f.size == 1 ? 0 : 1 - f.size / 2;
+}
+double output_offset(const Footprint& f) {
+  return f.size == 1 ? 0.0 : 0.5;
+}
 
 std::string direction(int dx, int dy) {
   const char* v = dy > 0 ? "top" : dy < 0 ? "bottom" : "";
@@ -39,9 +47,12 @@ Footprint parse_footprint(std::string_view text) {
   Footprint f;
   f.plus = text.ends_with('+');
   const std::string_view base = f.plus ? text.substr(0, text.size() - 1) : text;
-  if (base == "1") f.size = 1;
-  else if (base == "2x2" || base == "4") f.size = 2;
-  else if (base == "4x4" || base == "16") f.size = 4;
+  if (base == "1")
+    f.size = 1;
+  else if (base == "2x2" || base == "4")
+    f.size = 2;
+  else if (base == "4x4" || base == "16")
+    f.size = 4;
   else
     throw Error(fmt::format(
         "footprint: '{}' is not one of 1, 1+, 2x2, 2x2+, 4x4, 4x4+ (or r = 4, 16 with optional +)",
@@ -111,7 +122,9 @@ double samples_per_pixel(const Pattern& p) {
   return static_cast<double>(unique.size()) / p.set_count();
 }
 
-std::string format_cost(double n) { return fmt::format("{}", std::round(n * 1e6) / 1e6); }
+std::string format_cost(double n) {
+  return fmt::format("{}", std::round(n * 1e6) / 1e6);
+}
 
 std::string family(const Pattern& p) {
   return fmt::format("P({},{}{},{})", p.set_count(), p.footprint.pixels(),
@@ -150,12 +163,12 @@ void validate(const Pattern& p) {
         throw Error(fmt::format("sets[{}][{}]: y is not a finite number", k, i));
       if (std::abs(s.x) > 0.5 + kSameSampleEps || std::abs(s.y) > 0.5 + kSameSampleEps)
         throw Error(fmt::format(
-            "sets[{}][{}]: ({:.6g}, {:.6g}) lies outside the pixel [-0.5, 0.5] x [-0.5, 0.5]", k,
-            i, s.x, s.y));
+            "sets[{}][{}]: ({:.6g}, {:.6g}) lies outside the pixel [-0.5, 0.5] x [-0.5, 0.5]", k, i,
+            s.x, s.y));
       for (size_t j = 0; j < i; ++j)
         if (same_point(set[j], s))
-          throw Error(fmt::format("sets[{}][{}]: same position as sets[{}][{}] ({:.6g}, {:.6g})",
-                                  k, i, k, j, s.x, s.y));
+          throw Error(fmt::format("sets[{}][{}]: same position as sets[{}][{}] ({:.6g}, {:.6g})", k,
+                                  i, k, j, s.x, s.y));
     }
   }
   if (p.footprint.plus) {

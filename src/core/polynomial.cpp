@@ -28,7 +28,9 @@ Polynomial operator*(double s, const Polynomial& a) {
   return r;
 }
 
-Polynomial constant(double v) { return Polynomial{{v}}; }
+Polynomial constant(double v) {
+  return Polynomial{{v}};
+}
 
 Polynomial antiderivative(const Polynomial& p) {
   Polynomial r{std::vector<double>(p.c.size() + 1, 0.0)};

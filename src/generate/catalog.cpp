@@ -23,7 +23,9 @@ struct Entry {
   Builder build;
 };
 
-std::vector<double> equal_weights(size_t n) { return std::vector<double>(n, 1.0 / n); }
+std::vector<double> equal_weights(size_t n) {
+  return std::vector<double>(n, 1.0 / n);
+}
 
 Pattern one_pixel(std::string name, std::vector<Vec2> s, std::vector<double> w = {},
                   Footprint f = {1, false}) {
@@ -66,23 +68,35 @@ Pattern hasselgren(std::string name, std::vector<Vec2> s, std::vector<double> w)
 const std::vector<Entry>& entries() {
   static const std::vector<Entry> kEntries = {
       {{"centroid", "one sample at the pixel centre", "Hasselgren et al. 2005, Fig. 1a, Table 2"},
-       [] { return one_pixel("centroid", {{0, 0}}); }},
+       [] {
+         return one_pixel("centroid", {{0, 0}});
+       }},
       {{"kyro-h", "two samples on the horizontal midline at x = -1/4, 1/4",
         "Hasselgren et al. 2005, Fig. 1b (positions read from the figure)"},
-       [] { return one_pixel("kyro-h", {{-0.25, 0}, {0.25, 0}}); }},
+       [] {
+         return one_pixel("kyro-h", {{-0.25, 0}, {0.25, 0}});
+       }},
       {{"kyro-v", "two samples on the vertical midline at y = -1/4, 1/4",
         "Hasselgren et al. 2005, Fig. 1c (positions read from the figure)"},
-       [] { return one_pixel("kyro-v", {{0, -0.25}, {0, 0.25}}); }},
-      {{"diagonal", "two samples at (-1/4, -1/4) and (1/4, 1/4)", "Hasselgren et al. 2005, Fig. 1d"},
-       [] { return one_pixel("diagonal", {{-0.25, -0.25}, {0.25, 0.25}}); }},
+       [] {
+         return one_pixel("kyro-v", {{0, -0.25}, {0, 0.25}});
+       }},
+      {{"diagonal", "two samples at (-1/4, -1/4) and (1/4, 1/4)",
+        "Hasselgren et al. 2005, Fig. 1d"},
+       [] {
+         return one_pixel("diagonal", {{-0.25, -0.25}, {0.25, 0.25}});
+       }},
       {{"diagonal-hasselgren", "position-optimized diagonal, (+-0.259, +-0.339)",
         "Hasselgren et al. 2005, Table 2 'Diagonal' (E2 0.692; shared/reference/README.md)"},
-       [] { return one_pixel("diagonal-hasselgren", {{-0.259, -0.339}, {0.259, 0.339}}); }},
+       [] {
+         return one_pixel("diagonal-hasselgren", {{-0.259, -0.339}, {0.259, 0.339}});
+       }},
       {{"box2x2", "2x2 uniform grid at +-1/4", "Laine & Aila 2006, Table 2; Hasselgren Fig. 1e"},
        [] {
          return one_pixel("box2x2", {{-0.25, -0.25}, {0.25, -0.25}, {-0.25, 0.25}, {0.25, 0.25}});
        }},
-      {{"rgss", "rotated grid: 4-rooks at +-1/8, +-3/8", "Laine & Aila 2006, Table 2; Hasselgren Fig. 1f"},
+      {{"rgss", "rotated grid: 4-rooks at +-1/8, +-3/8",
+        "Laine & Aila 2006, Table 2; Hasselgren Fig. 1f"},
        [] {
          return one_pixel("rgss",
                           {{0.125, 0.375}, {0.375, -0.125}, {-0.125, -0.375}, {-0.375, 0.125}});
@@ -109,8 +123,11 @@ const std::vector<Entry>& entries() {
        }},
       {{"fliptri", "top-left corner and the bottom and right edge midpoints, weights 1/3",
         "Akenine-Moller 2003; Laine & Aila 2006, Table 2; Hasselgren Sec. 4"},
-       [] { return hasselgren("fliptri", {{-0.5, 0.5}, {0, -0.5}, {0.5, 0}}, equal_weights(3)); }},
-      {{"hasselgren-a", "scheme A, optimized FLIPTRI, n = 1.25", "Hasselgren et al. 2005, Appendix A"},
+       [] {
+         return hasselgren("fliptri", {{-0.5, 0.5}, {0, -0.5}, {0.5, 0}}, equal_weights(3));
+       }},
+      {{"hasselgren-a", "scheme A, optimized FLIPTRI, n = 1.25",
+        "Hasselgren et al. 2005, Appendix A"},
        [] {
          return hasselgren("hasselgren-a", {{-0.5, 0.5}, {-0.133, -0.5}, {0.5, -0.064}},
                            {0.299, 0.360, 0.341});
@@ -136,7 +153,8 @@ const std::vector<Entry>& entries() {
                            {{-0.5, -0.5}, {-0.5, 0.045}, {0.004, 0.5}, {0.5, -0.222}},
                            {0.158, 0.156, 0.380, 0.306});
        }},
-      {{"hasselgren-f", "scheme F, optimized FLIPQUAD, n = 2", "Hasselgren et al. 2005, Appendix A"},
+      {{"hasselgren-f", "scheme F, optimized FLIPQUAD, n = 2",
+        "Hasselgren et al. 2005, Appendix A"},
        [] {
          return hasselgren("hasselgren-f",
                            {{-0.5, 0.143}, {0.5, -0.143}, {0.143, 0.5}, {-0.143, -0.5}},
@@ -153,14 +171,22 @@ const std::vector<Entry>& entries() {
       {{"cross-16", "Cross's edge-optimized irregular grid, 16 samples",
         "Goss & Wu 2000, Table 7 'sixteensamples' (one sample lies on the top border)"},
        [] {
-         return cross_pattern(
-             "cross-16",
-             {{0.755279, 0.0497319}, {0.384479, 0.688268}, {0.666094, 0.868388},
-              {0.317172, 0.0331764}, {0.729309, 0.43103},  {0.0867931, 0.368519},
-              {0.322668, 1.0},       {0.442302, 0.572752}, {0.889074, 0.606985},
-              {0.0343768, 0.191404}, {0.910321, 0.872547}, {0.92479, 0.345332},
-              {0.289126, 0.389783},  {0.896551, 0.141167}, {0.23357, 0.678942},
-              {0.11281, 0.526939}});
+         return cross_pattern("cross-16", {{0.755279, 0.0497319},
+                                           {0.384479, 0.688268},
+                                           {0.666094, 0.868388},
+                                           {0.317172, 0.0331764},
+                                           {0.729309, 0.43103},
+                                           {0.0867931, 0.368519},
+                                           {0.322668, 1.0},
+                                           {0.442302, 0.572752},
+                                           {0.889074, 0.606985},
+                                           {0.0343768, 0.191404},
+                                           {0.910321, 0.872547},
+                                           {0.92479, 0.345332},
+                                           {0.289126, 0.389783},
+                                           {0.896551, 0.141167},
+                                           {0.23357, 0.678942},
+                                           {0.11281, 0.526939}});
        }},
       {{"msaa-1", "standard MSAA, 1 sample", "Direct3D/Vulkan/Metal standard positions (data/)"},
        [] { return msaa_pattern(1); }},
@@ -222,8 +248,8 @@ Pattern catalog_pattern(std::string_view name) {
   }
   std::string known;
   for (const auto& e : entries()) known += (known.empty() ? "" : ", ") + e.info.name;
-  throw Error(fmt::format("unknown pattern '{}': not a catalog name ({}) nor a .json file", name,
-                          known));
+  throw Error(
+      fmt::format("unknown pattern '{}': not a catalog name ({}) nor a .json file", name, known));
 }
 
 }  // namespace aapat

@@ -17,9 +17,13 @@ constexpr std::string_view kFormat = "aapat-pattern";
 constexpr int kVersion = 1;
 constexpr int kPerLine = 4;  // samples (or 2 x weights) per line
 
-std::string number(double v) { return json(v).dump(); }
+std::string number(double v) {
+  return json(v).dump();
+}
 
-std::string json_string(std::string_view s) { return json(std::string(s)).dump(); }
+std::string json_string(std::string_view s) {
+  return json(std::string(s)).dump();
+}
 
 [[noreturn]] void fail(std::string_view source, const std::string& message) {
   throw Error(fmt::format("pattern file {}: {}", source, message));
@@ -70,12 +74,12 @@ Pattern pattern_from_json(std::string_view text, std::string_view source) {
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse errors and number overflow
     fail(source, fmt::format("not valid JSON: {}", e.what()));
   }
   if (!doc.is_object()) fail(source, "expected a JSON object at the top level");
-  static const std::vector<std::string> kKeys = {"format", "version", "name",    "description",
-                                                 "family", "tile",    "footprint", "sets",
+  static const std::vector<std::string> kKeys = {"format",  "version",   "name",      "description",
+                                                 "family",  "tile",      "footprint", "sets",
                                                  "kernels", "provenance"};
   for (const auto& [key, value] : doc.items())
     if (std::find(kKeys.begin(), kKeys.end(), key) == kKeys.end())
@@ -118,14 +122,16 @@ Pattern pattern_from_json(std::string_view text, std::string_view source) {
       const json& s = sets[k][i];
       const std::string field = fmt::format("sets[{}][{}]", k, i);
       if (!s.is_array() || s.size() != 2) fail(source, field + ": expected [x, y]");
-      set.push_back({get_number(s[0], source, field + ".x"), get_number(s[1], source, field + ".y")});
+      set.push_back(
+          {get_number(s[0], source, field + ".x"), get_number(s[1], source, field + ".y")});
     }
     p.sets.push_back(std::move(set));
   }
   const json& kernels = doc["kernels"];
   if (!kernels.is_array()) fail(source, "kernels: expected an array of weight lists");
   for (size_t k = 0; k < kernels.size(); ++k) {
-    if (!kernels[k].is_array()) fail(source, fmt::format("kernels[{}]: expected an array of weights", k));
+    if (!kernels[k].is_array())
+      fail(source, fmt::format("kernels[{}]: expected an array of weights", k));
     std::vector<double> w;
     for (size_t i = 0; i < kernels[k].size(); ++i)
       w.push_back(get_number(kernels[k][i], source, fmt::format("kernels[{}][{}]", k, i)));

@@ -58,14 +58,15 @@ std::string pattern_svg(const Pattern& p) {
     const double w = p.weights[0][i];
     const double r = 0.22 * std::sqrt(std::abs(w)) * kScale;
     const Vec2 pos{samples[i].pos.x + o, samples[i].pos.y + o};
-    svg += w >= 0 ? fmt::format(
-                        "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"#1f5fa8\" "
-                        "fill-opacity=\"0.75\"><title>w = {:.6g}</title></circle>\n",
-                        sx(pos.x), sy(pos.y), r, w)
-                  : fmt::format(
-                        "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"none\" "
-                        "stroke=\"#c0392b\" stroke-width=\"2\"><title>w = {:.6g}</title></circle>\n",
-                        sx(pos.x), sy(pos.y), r, w);
+    svg += w >= 0
+               ? fmt::format(
+                     "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"#1f5fa8\" "
+                     "fill-opacity=\"0.75\"><title>w = {:.6g}</title></circle>\n",
+                     sx(pos.x), sy(pos.y), r, w)
+               : fmt::format(
+                     "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"none\" "
+                     "stroke=\"#c0392b\" stroke-width=\"2\"><title>w = {:.6g}</title></circle>\n",
+                     sx(pos.x), sy(pos.y), r, w);
   }
   svg += fmt::format(
       "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"16\">{} {}: n = {}, kernel 0 weights shown "

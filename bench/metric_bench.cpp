@@ -1,0 +1,48 @@
+// E2 evaluations per second (issue: >= 200,000 per core for a 4-sample kernel
+// at 180 angles). Results and the machine: docs/benchmarks.md.
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "core/filter_catalog.h"
+#include "core/metric.h"
+
+namespace aapat {
+namespace {
+
+Kernel jittered_kernel(int n, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  const int side = static_cast<int>(std::ceil(std::sqrt(n)));
+  std::vector<Vec2> s;
+  for (int i = 0; i < n; ++i)
+    s.push_back({(i % side + u(rng)) / side - 0.5, (i / side + u(rng)) / side - 0.5});
+  return make_kernel(s, std::vector<double>(n, 1.0));
+}
+
+void E2Evaluation(benchmark::State& state, const char* filter, const char* acuity) {
+  const Metric metric(make_filter(filter), make_acuity(acuity));
+  const Kernel k = jittered_kernel(static_cast<int>(state.range(0)), 42);
+  for (auto _ : state) benchmark::DoNotOptimize(metric.kernel_error(k).e2);
+  state.SetItemsProcessed(state.iterations());
+  state.counters["angles"] = metric.angle_count();
+}
+
+BENCHMARK_CAPTURE(E2Evaluation, mitchell_180_angles, "mitchell", "uniform:step=1")
+    ->Arg(4)
+    ->Arg(16)
+    ->Arg(64);
+BENCHMARK_CAPTURE(E2Evaluation, mitchell_laine_aila_4_angles, "mitchell", "laine-aila")
+    ->Arg(4)
+    ->Arg(16)
+    ->Arg(64);
+BENCHMARK_CAPTURE(E2Evaluation, lanczos3_180_angles, "lanczos:lobes=3", "uniform:step=1")->Arg(4);
+
+void FilterTabulation(benchmark::State& state, const char* filter) {
+  for (auto _ : state) benchmark::DoNotOptimize(make_filter(filter).half_mean_distance());
+}
+BENCHMARK_CAPTURE(FilterTabulation, mitchell, "mitchell");
+BENCHMARK_CAPTURE(FilterTabulation, lanczos3, "lanczos:lobes=3");
+
+}  // namespace
+}  // namespace aapat

@@ -1,0 +1,143 @@
+#include "cli/app.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace aapat {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int code;
+  std::string out, err;
+};
+
+CliRun run(std::vector<std::string> args) {
+  args.insert(args.begin(), "aapat");
+  std::vector<const char*> argv;
+  for (const auto& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  const int code = run_aapat(static_cast<int>(argv.size()), argv.data(), out, err);
+  return {code, out.str(), err.str()};
+}
+
+std::string temp_path(const std::string& name) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "aapat_cli_test";
+  fs::create_directories(dir);
+  return (dir / name).string();
+}
+
+TEST(Cli, EvalJsonHasTheDocumentedKeys) {
+  const CliRun r = run({"eval", "flipquad", "centroid", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto rows = nlohmann::json::parse(r.out);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0]["pattern"], "flipquad");
+  EXPECT_EQ(rows[0]["family"], "P(4,1+,2)");
+  EXPECT_EQ(rows[0]["n"], 2.0);
+  EXPECT_NEAR(rows[0]["e2"].get<double>(), 0.364, 0.001);  // Laine-Aila Table 2
+  EXPECT_EQ(rows[1]["worst_angle"], 0.0);
+  EXPECT_NEAR(rows[1]["e2"].get<double>(), 1.256, 0.001);  // Hasselgren Table 2
+}
+
+TEST(Cli, EvalTableAndOtherFiltersAndNorms) {
+  const CliRun r = run({"eval", "rgss", "--filter", "gaussian:sigma=0.5", "--acuity",
+                        "uniform:step=5", "--norm", "4"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("filter gaussian:sigma=0.5,radius=1.5, acuity uniform:step=5,weight=1 "
+                       "(36 angles), norm 4"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("rgss"), std::string::npos);
+}
+
+TEST(Cli, ProfileWritesSvgAndCsv) {
+  const std::string svg = temp_path("profile.svg"), csv = temp_path("profile.csv");
+  ASSERT_EQ(run({"eval", "flipquad", "rgss", "--profile", svg}).code, 0);
+  ASSERT_EQ(run({"eval", "flipquad", "rgss", "--profile", csv}).code, 0);
+  std::ifstream s(svg), c(csv);
+  std::stringstream svg_text, csv_text;
+  svg_text << s.rdbuf();
+  csv_text << c.rdbuf();
+  EXPECT_NE(svg_text.str().find("<svg"), std::string::npos);
+  EXPECT_NE(svg_text.str().find("flipquad"), std::string::npos);
+  std::string header;
+  std::getline(csv_text, header);
+  EXPECT_EQ(header, "edge_angle_deg,acuity,flipquad,rgss");
+}
+
+TEST(Cli, ShowWritesDrawingAndPatternFile) {
+  const std::string svg = temp_path("fq.svg"), json = temp_path("fq.json");
+  const CliRun r = run({"show", "flipquad", "-o", svg});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("P(4,1+,2)"), std::string::npos);
+  EXPECT_NE(r.out.find("left"), std::string::npos);
+  EXPECT_TRUE(fs::exists(svg));
+  ASSERT_EQ(run({"show", "flipquad", "-o", json}).code, 0);
+  const CliRun again = run({"eval", json, "--json"});
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_NEAR(nlohmann::json::parse(again.out)[0]["e2"].get<double>(), 0.364, 0.001);
+}
+
+TEST(Cli, ListNamesCatalogFiltersAndTables) {
+  const CliRun r = run({"list"});
+  ASSERT_EQ(r.code, 0);
+  for (const char* s : {"hasselgren-f", "msaa-16", "grid-NxN", "mitchell:b=1/3,c=1/3",
+                        "lanczos:lobes=3", "laine-aila", "uniform:step=S"})
+    EXPECT_NE(r.out.find(s), std::string::npos) << s;
+}
+
+TEST(Cli, BadInputGivesAClearErrorAndNonZeroExit) {
+  CliRun r = run({"eval", "nosuch"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("aapat: error: unknown pattern 'nosuch'"), std::string::npos) << r.err;
+  r = run({"eval", "flipquad", "--filter", "mitchel"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("unknown filter 'mitchel'"), std::string::npos);
+  r = run({"eval", "flipquad", "--norm", "nan"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("--norm: 'nan' is not a finite number"), std::string::npos) << r.err;
+  r = run({"eval", "flipquad", "--norm", "0.5"});
+  EXPECT_EQ(r.code, 1);
+  r = run({"eval", "flipquad", "--profile", "x.png"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("--profile: 'x.png' must end in .svg or .csv"), std::string::npos);
+  r = run({"frobnicate"});
+  EXPECT_NE(r.code, 0);
+  r = run({"eval"});
+  EXPECT_NE(r.code, 0);
+}
+
+TEST(Cli, NoOutputFileOnError) {
+  const std::string bad = temp_path("bad.json"), out = temp_path("never.svg");
+  std::ofstream(bad) << "{\"format\": \"aapat-pattern\"";
+  const CliRun r = run({"show", bad, "-o", out});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("not valid JSON"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  // A folder that does not exist: an error, and no temporary left behind.
+  const std::string missing = temp_path("no_such_dir/p.svg");
+  EXPECT_EQ(run({"show", "rgss", "-o", missing}).code, 1);
+  EXPECT_FALSE(fs::exists(fs::path(missing).parent_path()));
+}
+
+TEST(Cli, AnExistingFileIsReplacedWhole) {
+  const std::string path = temp_path("replace.svg");
+  std::ofstream(path) << std::string(100000, 'x');
+  ASSERT_EQ(run({"show", "centroid", "-o", path}).code, 0);
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  EXPECT_EQ(s.str().find('x' + std::string(10, 'x')), std::string::npos);
+  EXPECT_TRUE(s.str().ends_with("</svg>\n"));
+  for (const auto& e : fs::directory_iterator(fs::path(path).parent_path()))
+    EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << e.path();
+}
+
+}  // namespace
+}  // namespace aapat
