@@ -111,7 +111,7 @@ KernelError Metric::kernel_error(const Kernel& k) const {
   const bool max_norm = norm_ == kMaxNorm;
   for_each_angle(k, [&](int a, double e1sq) {
     const double e = weight_sq_[a] * e1sq;
-    if (e > worst) {
+    if (e > worst * (1 + 1e-12)) {  // ties (symmetric patterns) go to the first angle
       worst = e;
       r.worst_angle = a;
     }

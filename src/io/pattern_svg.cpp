@@ -18,7 +18,7 @@ std::string pattern_svg(const Pattern& p) {
   // Pixels shown: the tile and kernel 0's footprint.
   const int x0 = std::min(0, first), y0 = std::min(0, first);
   const int x1 = std::max(p.tile_w, first + f.size), y1 = std::max(p.tile_h, first + f.size);
-  const double width = (x1 - x0 + 2 * kMargin) * kScale;
+  const double width = std::max(560.0, (x1 - x0 + 2 * kMargin) * kScale);
   const double height = (y1 - y0 + 2 * kMargin) * kScale + kCaption;
   // World (pixel centres at integers, y up) to SVG (y down).
   auto sx = [&](double x) { return (x - (x0 - 0.5) + kMargin) * kScale; };
@@ -69,8 +69,8 @@ std::string pattern_svg(const Pattern& p) {
                      sx(pos.x), sy(pos.y), r, w);
   }
   svg += fmt::format(
-      "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"16\">{} {}: n = {}, kernel 0 weights shown "
-      "as areas</text>\n</svg>\n",
+      "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"14\">{} {}: n = {}; disc areas are kernel 0's "
+      "weights</text>\n</svg>\n",
       8.0, height - 14, xml_escape(p.name), family(p), format_cost(samples_per_pixel(p)));
   return svg;
 }

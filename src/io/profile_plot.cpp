@@ -63,8 +63,12 @@ std::string profile_svg(const AcuityTable& acuity, const std::vector<ProfileSeri
     std::string points;
     for (size_t i : order)
       points += fmt::format("{:.2f},{:.2f} ", px(folded(i)), py(series[s].values[i]));
-    svg += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"2\"/>\n",
-                       points, color);
+    // Past ten series the colours repeat, dashed.
+    const char* dash = s < std::size(kColors) ? "none" : "6,3";
+    svg += fmt::format(
+        "<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"2\" "
+        "stroke-dasharray=\"{}\"/>\n",
+        points, color, dash);
     if (order.size() <= 48)
       for (size_t i : order)
         svg += fmt::format("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"{}\"/>\n",
