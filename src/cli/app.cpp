@@ -31,6 +31,7 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   add(add_list_command);
   add(add_show_command);
   add(add_eval_command);
+  add(add_optimize_command);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

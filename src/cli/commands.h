@@ -13,6 +13,7 @@ using Action = std::function<void(std::ostream& out)>;
 Action add_list_command(CLI::App& app);
 Action add_show_command(CLI::App& app);
 Action add_eval_command(CLI::App& app);
+Action add_optimize_command(CLI::App& app);
 
 // Writes `content` to `path` whole or not at all; "-" writes to `out`.
 void write_output(const std::string& path, const std::string& content, std::ostream& out);

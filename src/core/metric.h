@@ -56,6 +56,9 @@ class Metric {
   const AcuityTable& acuity() const { return acuity_; }
   double norm() const { return norm_; }
   int angle_count() const { return static_cast<int>(cos_.size()); }
+  double cos(int angle) const { return cos_[angle]; }
+  double sin(int angle) const { return sin_[angle]; }
+  double weight_sq(int angle) const { return weight_sq_[angle]; }
 
   // W(theta_i) E1(theta_i) for the i-th angle of the table.
   double weighted_e1(const Kernel& k, int angle) const;

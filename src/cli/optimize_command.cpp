@@ -1,0 +1,179 @@
+// `aapat optimize`: multi-start optimization of a family (Laine-Aila Sec. 5),
+// or polishing of an existing pattern.
+#include <fmt/format.h>
+
+#include <chrono>
+#include <memory>
+#include <ostream>
+
+#include "cli/commands.h"
+#include "cli/metric_options.h"
+#include "cli/progress.h"
+#include "io/pattern_json.h"
+#include "io/pattern_svg.h"
+#include "optimize/family.h"
+#include "optimize/multistart.h"
+
+namespace aapat {
+
+Action add_optimize_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "optimize", "optimize positions and weights: a family from random starts, or a pattern");
+  struct Options {
+    std::string pattern, family, placement, seeds = "jittered", method = "descent";
+    std::string output, csv, svg;
+    MetricOptions metric;
+    int starts = 16, threads = 0, iterations = 4000;
+    uint64_t seed = 1;
+    double time_limit = 0;
+    bool weights_only = false, nonnegative = false;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("pattern", o->pattern, "catalog name or pattern file to polish");
+  cmd->add_option("--family", o->family, "family to search, e.g. 'P(4,1+,2)'");
+  cmd->add_option("--placement", o->placement,
+                  "sites of the base pixel's samples: inside, left, right, bottom, top, "
+                  "bottom-left, ... (FLIPQUAD: left,right,bottom,top)");
+  o->metric.add_to(cmd);
+  cmd->add_option("--starts", o->starts, "random starts (run in parallel)")
+      ->capture_default_str()->check(CLI::Range(1, 1000000));
+  cmd->add_option("--seed", o->seed, "random seed")->capture_default_str();
+  cmd->add_option("--seeds", o->seeds, "seed patterns: jittered, poisson, uniform")
+      ->capture_default_str();
+  cmd->add_option("--time-limit", o->time_limit, "seconds for the whole run (0: none)")
+      ->check(CLI::Range(0.0, 1e7));
+  cmd->add_option("--iterations", o->iterations, "iterations per start at most")
+      ->capture_default_str()->check(CLI::Range(1, 100000000));
+  cmd->add_option("--method", o->method,
+                  "descent (Laine-Aila heuristic), minimax (eps-active min-norm descent) or anneal")
+      ->capture_default_str()->check(CLI::IsMember({"descent", "minimax", "anneal"}));
+  cmd->add_option("--threads", o->threads, "threads (0: all cores)")->check(CLI::Range(0, 1024));
+  cmd->add_flag("--weights-only", o->weights_only, "keep positions, optimize weights (Opt W)");
+  cmd->add_flag("--nonnegative", o->nonnegative,
+                "keep weights >= 0 and report the E2 this costs");
+  cmd->add_option("-o,--output", o->output, "write the best pattern (.json)");
+  cmd->add_option("--csv", o->csv, "write every start: start, initial E2, final E2, iterations, seconds");
+  cmd->add_option("--svg", o->svg, "write a drawing of the best pattern");
+
+  return [o](std::ostream& out) {
+    if (o->pattern.empty() == o->family.empty())
+      throw Error("optimize: give either --family (a search) or a PATTERN to polish");
+    if (!o->output.empty() && !o->output.ends_with(".json"))
+      throw Error(fmt::format("--output: '{}' must end in .json", o->output));
+    const Metric metric = o->metric.make();
+    OptimizerSettings settings;
+    settings.method = o->method == "anneal"    ? Method::kAnneal
+                      : o->method == "minimax" ? Method::kMinimax
+                                               : Method::kDescent;
+    settings.max_iterations = o->iterations;
+    settings.weights_only = o->weights_only;
+    settings.nonnegative_weights = o->nonnegative;
+    if (o->time_limit > 0)
+      settings.deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(o->time_limit));
+
+    SeedFunction make_seed;
+    std::string what;
+    int starts = o->starts;
+    FamilySpec spec;
+    if (!o->pattern.empty()) {
+      const Pattern start = resolve_pattern(o->pattern);
+      make_seed = [start](int) { return problem_from_pattern(start); };
+      starts = 1;
+      what = fmt::format("{} {}", start.name, family(start));
+    } else {
+      spec = parse_family(o->family, o->placement);
+      const SeedKind kind = parse_seed_kind(o->seeds);
+      const Filter& filter = metric.filter();
+      const uint64_t seed = o->seed;
+      make_seed = [spec, kind, &filter, seed](int i) {
+        auto rng = start_rng(seed, static_cast<uint64_t>(i));
+        return problem_from_pattern(seed_pattern(spec, kind, rng, filter));
+      };
+      what = fmt::format("{} from {} {} starts", spec.text(), starts, o->seeds);
+    }
+
+    const auto t0 = std::chrono::steady_clock::now();
+    MultiStartResult result;
+    {
+      Progress bar("optimize");
+      result = multistart(metric, starts, o->seed, make_seed, settings, o->threads,
+                          [&](int done, int total, double best) {
+                            bar.update(done, total, fmt::format("best E2 {:.4f}", best));
+                          });
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (result.best < 0) throw Error("optimize: the time limit passed before any start ran");
+    const StartRecord& best = result.starts[result.best];
+
+    Pattern p = pattern_of(result.best_problem);
+    if (!o->pattern.empty()) {
+      p.name = p.name + "-optimized";
+    } else {
+      p.name = fmt::format("best-{}", spec.text());
+    }
+    p.description = fmt::format("optimized {} for {}", family(p), metric.filter().name());
+    p.provenance = {{"optimizer", o->method == "anneal"    ? "simulated annealing"
+                                  : o->method == "minimax" ? "eps-active minimum-norm descent"
+                                                           : "Laine-Aila heuristic (t 0.99, c1 = 100 c0)"},
+                    {"family", family(p)},
+                    {"placement", o->placement},
+                    {"filter", metric.filter().name()},
+                    {"acuity", metric.acuity().name},
+                    {"norm", o->metric.norm},
+                    {"seed", std::to_string(o->seed)},
+                    {"seeds", o->pattern.empty() ? o->seeds : o->pattern},
+                    {"start", std::to_string(best.start)},
+                    {"iterations", std::to_string(best.run.iterations)},
+                    {"weights", o->weights_only ? "weights only" : "positions and weights"},
+                    {"nonnegative", o->nonnegative ? "yes" : "no"},
+                    {"e2", fmt::format("{:.6f}", best.run.final_e2)}};
+    validate(p);
+
+    out << fmt::format("optimized {} ({}, acuity {}, norm {})\n", what, metric.filter().name(),
+                       metric.acuity().name, o->metric.norm);
+    out << fmt::format("{} starts ran in {:.2f} s; best start {}: E2 {:.4f} -> {:.4f} in {} iterations\n",
+                       result.starts.size(), seconds, best.start, best.run.initial_e2,
+                       best.run.final_e2, best.run.iterations);
+    if (result.polished_from > 0)
+      out << fmt::format("(the heuristic's best {:.5f}, polished by the minimax descent to {:.5f})\n",
+                         result.polished_from, best.run.final_e2);
+    if (o->nonnegative) {
+      // What non-negative weights cost: the same best start, unconstrained.
+      OptimizerSettings free = settings;
+      free.nonnegative_weights = false;
+      Problem again = make_seed(best.start);
+      const MultiStartResult unconstrained =
+          multistart(metric, 1, o->seed, [&](int) { return again; }, free, o->threads);
+      const double e_free = unconstrained.starts.empty() ? NAN : unconstrained.starts[0].run.final_e2;
+      out << fmt::format("non-negative weights: E2 {:.4f}; unconstrained from the same start: {:.4f} "
+                         "(cost {:+.4f})\n",
+                         best.run.final_e2, e_free, best.run.final_e2 - e_free);
+    }
+    out << fmt::format("{}  {}  n = {}\n", p.name, family(p), format_cost(samples_per_pixel(p)));
+    for (const Vec2& s : p.sets[0]) out << fmt::format("  {:>9.5f} {:>9.5f}  {}\n", s.x, s.y, site_name(s));
+    out << "  weights:";
+    for (double w : p.weights[0]) out << fmt::format(" {:.5f}", w);
+    out << "\n";
+
+    if (!o->output.empty()) {
+      save_pattern_file(p, o->output);
+      out << "wrote " << o->output << "\n";
+    }
+    if (!o->svg.empty()) {
+      write_output(o->svg, pattern_svg(p), out);
+      out << "wrote " << o->svg << "\n";
+    }
+    if (!o->csv.empty()) {
+      std::string csv = "start,initial_e2,final_e2,iterations,seconds\n";
+      for (const auto& r : result.starts)
+        csv += fmt::format("{},{:.10g},{:.10g},{},{:.4f}\n", r.start, r.run.initial_e2,
+                           r.run.final_e2, r.run.iterations, r.seconds);
+      write_output(o->csv, csv, out);
+      out << "wrote " << o->csv << "\n";
+    }
+  };
+}
+
+}  // namespace aapat

@@ -1,0 +1,27 @@
+#include "cli/progress.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace aapat {
+
+Progress::Progress(std::string label) : label_(std::move(label)), active_(::isatty(2) == 1) {}
+
+Progress::~Progress() {
+  if (active_) std::fputs("\n", stderr);
+}
+
+void Progress::update(int done, int total, const std::string& note) {
+  if (!active_ || total <= 0) return;
+  constexpr int kWidth = 30;
+  const int filled = done * kWidth / total;
+  std::fputs(fmt::format("\r{} [{}{}] {}/{} {}", label_, std::string(filled, '='),
+                         std::string(kWidth - filled, ' '), done, total, note)
+                 .c_str(),
+             stderr);
+  std::fflush(stderr);
+}
+
+}  // namespace aapat
