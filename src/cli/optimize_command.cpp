@@ -36,23 +36,26 @@ Action add_optimize_command(CLI::App& app) {
                   "bottom-left, ... (FLIPQUAD: left,right,bottom,top)");
   o->metric.add_to(cmd);
   cmd->add_option("--starts", o->starts, "random starts (run in parallel)")
-      ->capture_default_str()->check(CLI::Range(1, 1000000));
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
   cmd->add_option("--seed", o->seed, "random seed")->capture_default_str();
   cmd->add_option("--seeds", o->seeds, "seed patterns: jittered, poisson, uniform")
       ->capture_default_str();
   cmd->add_option("--time-limit", o->time_limit, "seconds for the whole run (0: none)")
       ->check(CLI::Range(0.0, 1e7));
   cmd->add_option("--iterations", o->iterations, "iterations per start at most")
-      ->capture_default_str()->check(CLI::Range(1, 100000000));
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000000));
   cmd->add_option("--method", o->method,
                   "descent (Laine-Aila heuristic), minimax (eps-active min-norm descent) or anneal")
-      ->capture_default_str()->check(CLI::IsMember({"descent", "minimax", "anneal"}));
+      ->capture_default_str()
+      ->check(CLI::IsMember({"descent", "minimax", "anneal"}));
   cmd->add_option("--threads", o->threads, "threads (0: all cores)")->check(CLI::Range(0, 1024));
   cmd->add_flag("--weights-only", o->weights_only, "keep positions, optimize weights (Opt W)");
-  cmd->add_flag("--nonnegative", o->nonnegative,
-                "keep weights >= 0 and report the E2 this costs");
+  cmd->add_flag("--nonnegative", o->nonnegative, "keep weights >= 0 and report the E2 this costs");
   cmd->add_option("-o,--output", o->output, "write the best pattern (.json)");
-  cmd->add_option("--csv", o->csv, "write every start: start, initial E2, final E2, iterations, seconds");
+  cmd->add_option("--csv", o->csv,
+                  "write every start: start, initial E2, final E2, iterations, seconds");
   cmd->add_option("--svg", o->svg, "write a drawing of the best pattern");
 
   return [o](std::ostream& out) {
@@ -103,7 +106,8 @@ Action add_optimize_command(CLI::App& app) {
                             bar.update(done, total, fmt::format("best E2 {:.4f}", best));
                           });
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (result.best < 0) throw Error("optimize: the time limit passed before any start ran");
     const StartRecord& best = result.starts[result.best];
 
@@ -114,45 +118,51 @@ Action add_optimize_command(CLI::App& app) {
       p.name = fmt::format("best-{}", spec.text());
     }
     p.description = fmt::format("optimized {} for {}", family(p), metric.filter().name());
-    p.provenance = {{"optimizer", o->method == "anneal"    ? "simulated annealing"
-                                  : o->method == "minimax" ? "eps-active minimum-norm descent"
-                                                           : "Laine-Aila heuristic (t 0.99, c1 = 100 c0)"},
-                    {"family", family(p)},
-                    {"placement", o->placement},
-                    {"filter", metric.filter().name()},
-                    {"acuity", metric.acuity().name},
-                    {"norm", o->metric.norm},
-                    {"seed", std::to_string(o->seed)},
-                    {"seeds", o->pattern.empty() ? o->seeds : o->pattern},
-                    {"start", std::to_string(best.start)},
-                    {"iterations", std::to_string(best.run.iterations)},
-                    {"weights", o->weights_only ? "weights only" : "positions and weights"},
-                    {"nonnegative", o->nonnegative ? "yes" : "no"},
-                    {"e2", fmt::format("{:.6f}", best.run.final_e2)}};
+    p.provenance = {
+        {"optimizer", o->method == "anneal"    ? "simulated annealing"
+                      : o->method == "minimax" ? "eps-active minimum-norm descent"
+                                               : "Laine-Aila heuristic (t 0.99, c1 = 100 c0)"},
+        {"family", family(p)},
+        {"placement", o->placement},
+        {"filter", metric.filter().name()},
+        {"acuity", metric.acuity().name},
+        {"norm", o->metric.norm},
+        {"seed", std::to_string(o->seed)},
+        {"seeds", o->pattern.empty() ? o->seeds : o->pattern},
+        {"start", std::to_string(best.start)},
+        {"iterations", std::to_string(best.run.iterations)},
+        {"weights", o->weights_only ? "weights only" : "positions and weights"},
+        {"nonnegative", o->nonnegative ? "yes" : "no"},
+        {"e2", fmt::format("{:.6f}", best.run.final_e2)}};
     validate(p);
 
     out << fmt::format("optimized {} ({}, acuity {}, norm {})\n", what, metric.filter().name(),
                        metric.acuity().name, o->metric.norm);
-    out << fmt::format("{} starts ran in {:.2f} s; best start {}: E2 {:.4f} -> {:.4f} in {} iterations\n",
-                       result.starts.size(), seconds, best.start, best.run.initial_e2,
-                       best.run.final_e2, best.run.iterations);
+    out << fmt::format(
+        "{} starts ran in {:.2f} s; best start {}: E2 {:.4f} -> {:.4f} in {} iterations\n",
+        result.starts.size(), seconds, best.start, best.run.initial_e2, best.run.final_e2,
+        best.run.iterations);
     if (result.polished_from > 0)
-      out << fmt::format("(the heuristic's best {:.5f}, polished by the minimax descent to {:.5f})\n",
-                         result.polished_from, best.run.final_e2);
+      out << fmt::format(
+          "(the heuristic's best {:.5f}, polished by the minimax descent to {:.5f})\n",
+          result.polished_from, best.run.final_e2);
     if (o->nonnegative) {
       // What non-negative weights cost: the same best start, unconstrained.
       OptimizerSettings free = settings;
       free.nonnegative_weights = false;
       Problem again = make_seed(best.start);
-      const MultiStartResult unconstrained =
-          multistart(metric, 1, o->seed, [&](int) { return again; }, free, o->threads);
-      const double e_free = unconstrained.starts.empty() ? NAN : unconstrained.starts[0].run.final_e2;
-      out << fmt::format("non-negative weights: E2 {:.4f}; unconstrained from the same start: {:.4f} "
-                         "(cost {:+.4f})\n",
-                         best.run.final_e2, e_free, best.run.final_e2 - e_free);
+      const MultiStartResult unconstrained = multistart(
+          metric, 1, o->seed, [&](int) { return again; }, free, o->threads);
+      const double e_free =
+          unconstrained.starts.empty() ? NAN : unconstrained.starts[0].run.final_e2;
+      out << fmt::format(
+          "non-negative weights: E2 {:.4f}; unconstrained from the same start: {:.4f} "
+          "(cost {:+.4f})\n",
+          best.run.final_e2, e_free, best.run.final_e2 - e_free);
     }
     out << fmt::format("{}  {}  n = {}\n", p.name, family(p), format_cost(samples_per_pixel(p)));
-    for (const Vec2& s : p.sets[0]) out << fmt::format("  {:>9.5f} {:>9.5f}  {}\n", s.x, s.y, site_name(s));
+    for (const Vec2& s : p.sets[0])
+      out << fmt::format("  {:>9.5f} {:>9.5f}  {}\n", s.x, s.y, site_name(s));
     out << "  weights:";
     for (double w : p.weights[0]) out << fmt::format(" {:.5f}", w);
     out << "\n";

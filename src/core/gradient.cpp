@@ -5,7 +5,6 @@
 #include <numeric>
 #include <vector>
 
-
 namespace aapat {
 namespace {
 constexpr size_t kPairwiseLimit = 24;

@@ -29,8 +29,10 @@ RunResult anneal(const Objective& objective, Problem& problem, const OptimizerSe
     const bool move_weight = s.weights_only || u(rng) < 0.5;
     if (!move_weight) {
       Generator& g = trial.generators[rng() % trial.generators.size()];
-      if (g.freedom == Freedom::kFree || g.freedom == Freedom::kSlideX) g.pos.x += scale * gauss(rng);
-      if (g.freedom == Freedom::kFree || g.freedom == Freedom::kSlideY) g.pos.y += scale * gauss(rng);
+      if (g.freedom == Freedom::kFree || g.freedom == Freedom::kSlideX)
+        g.pos.x += scale * gauss(rng);
+      if (g.freedom == Freedom::kFree || g.freedom == Freedom::kSlideY)
+        g.pos.y += scale * gauss(rng);
     } else {
       // Move weight from one sample to another: the group's sum stays 1.
       const auto& group = trial.weight_groups[rng() % trial.weight_groups.size()];

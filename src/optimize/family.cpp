@@ -31,7 +31,9 @@ constexpr SiteInfo kSites[] = {
     {Site::kTopRight, "top-right", 0.25, {0.5, 0.5}},
 };
 
-const SiteInfo& info(Site s) { return kSites[static_cast<int>(s)]; }
+const SiteInfo& info(Site s) {
+  return kSites[static_cast<int>(s)];
+}
 
 Site parse_site(std::string_view text) {
   for (const auto& s : kSites)
@@ -55,50 +57,76 @@ uint64_t splitmix(uint64_t x) {
   return x ^ (x >> 31);
 }
 
-// Inside positions for one pixel: m points by the seed kind.
-std::vector<Vec2> inside_points(int m, SeedKind kind, std::mt19937_64& rng, double limit) {
+// Inside positions for every pixel of a side x side tile, m per pixel.
+// Jittered and uniform treat each pixel alone; Poisson disk throws darts over
+// the whole tile with distances measured on the torus (the tile repeats), so
+// samples keep apart across pixel borders too.
+std::vector<std::vector<Vec2>> inside_points(int side, int m, SeedKind kind, std::mt19937_64& rng,
+                                             double limit) {
   std::uniform_real_distribution<double> u(0, 1);
-  std::vector<Vec2> pts;
   auto clampv = [&](Vec2 v) {
     return Vec2{std::clamp(v.x, -limit, limit), std::clamp(v.y, -limit, limit)};
   };
-  if (kind == SeedKind::kJittered) {
-    // m strata of a g x g grid, chosen at random, one jittered point each.
-    const int g = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(m))));
-    std::vector<int> cells(g * g);
-    for (int i = 0; i < g * g; ++i) cells[i] = i;
-    std::shuffle(cells.begin(), cells.end(), rng);
-    for (int i = 0; i < m; ++i)
-      pts.push_back(clampv({(cells[i] % g + u(rng)) / g - 0.5, (cells[i] / g + u(rng)) / g - 0.5}));
-  } else if (kind == SeedKind::kPoisson) {
-    // Dart throwing with rejection; the distance shrinks when darts keep missing.
-    double d = 0.75 / std::sqrt(static_cast<double>(m));
-    while (static_cast<int>(pts.size()) < m) {
-      bool placed = false;
-      for (int attempt = 0; attempt < 200 && !placed; ++attempt) {
-        const Vec2 c = clampv({u(rng) - 0.5, u(rng) - 0.5});
-        placed = std::all_of(pts.begin(), pts.end(), [&](Vec2 q) {
-          return std::hypot(q.x - c.x, q.y - c.y) >= d;
-        });
-        if (placed) pts.push_back(c);
+  std::vector<std::vector<Vec2>> sets(side * side);
+  if (kind == SeedKind::kPoisson) {
+    // Darts of radius 0.75 of the densest packing's, shrinking when they keep missing.
+    double d = 0.75 * std::sqrt(2 / (std::sqrt(3.0) * std::max(m, 1)));
+    std::vector<Vec2> world;  // tile coordinates, pixel centres at integers
+    auto torus = [&](double a) {
+      a = std::fmod(std::abs(a), static_cast<double>(side));
+      return std::min(a, side - a);
+    };
+    for (int k = 0; k < side * side; ++k) {
+      const int tx = k % side, ty = k / side;
+      while (static_cast<int>(sets[k].size()) < m) {
+        bool placed = false;
+        for (int attempt = 0; attempt < 300 && !placed; ++attempt) {
+          const Vec2 c = clampv({u(rng) - 0.5, u(rng) - 0.5});
+          const Vec2 w{tx + c.x, ty + c.y};
+          placed = std::all_of(world.begin(), world.end(), [&](Vec2 q) {
+            return std::hypot(torus(q.x - w.x), torus(q.y - w.y)) >= d;
+          });
+          if (placed) {
+            sets[k].push_back(c);
+            world.push_back(w);
+          }
+        }
+        if (!placed) d *= 0.95;
       }
-      if (!placed) d *= 0.9;
     }
-  } else {
-    for (int i = 0; i < m; ++i) pts.push_back(clampv({u(rng) - 0.5, u(rng) - 0.5}));
+    return sets;
   }
-  return pts;
+  for (auto& pts : sets) {
+    if (kind == SeedKind::kJittered) {
+      // m strata of a g x g grid, chosen at random, one jittered point each.
+      const int g = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(m))));
+      std::vector<int> cells(g * g);
+      for (int i = 0; i < g * g; ++i) cells[i] = i;
+      std::shuffle(cells.begin(), cells.end(), rng);
+      for (int i = 0; i < m; ++i)
+        pts.push_back(
+            clampv({(cells[i] % g + u(rng)) / g - 0.5, (cells[i] / g + u(rng)) / g - 0.5}));
+    } else {
+      for (int i = 0; i < m; ++i) pts.push_back(clampv({u(rng) - 0.5, u(rng) - 0.5}));
+    }
+  }
+  return sets;
 }
 
 }  // namespace
 
-std::string site_text(Site s) { return info(s).text; }
-double site_cost(Site s) { return info(s).cost; }
+std::string site_text(Site s) {
+  return info(s).text;
+}
+double site_cost(Site s) {
+  return info(s).cost;
+}
 
 std::string FamilySpec::text() const {
-  return fmt::format("P({},{},{})", s, footprint.pixels() == 1 ? (footprint.plus ? "1+" : "1")
-                                          : fmt::format("{}{}", footprint.pixels(),
-                                                        footprint.plus ? "+" : ""),
+  return fmt::format("P({},{},{})", s,
+                     footprint.pixels() == 1
+                         ? (footprint.plus ? "1+" : "1")
+                         : fmt::format("{}{}", footprint.pixels(), footprint.plus ? "+" : ""),
                      format_cost(n));
 }
 
@@ -116,18 +144,20 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
   spec.n = parse_number(body.substr(c2 + 1), "--family: n");
   const int side = static_cast<int>(std::lround(std::sqrt(s)));
   if (s < 1 || side * side != s || side > 8)
-    throw Error(fmt::format("--family {}: s = {} must be a square number of sets 1, 4, 9, ... 64 "
-                            "(a square tile)",
-                            family, s));
+    throw Error(
+        fmt::format("--family {}: s = {} must be a square number of sets 1, 4, 9, ... 64 "
+                    "(a square tile)",
+                    family, s));
   spec.s = static_cast<int>(s);
   if (!(spec.n > 0) || spec.n > 256)
     throw Error(fmt::format("--family {}: n = {} is out of range (0, 256]", family, spec.n));
 
   if (placement.empty()) {
     if (spec.n != std::floor(spec.n))
-      throw Error(fmt::format("--family {}: n = {} is not a whole number of inside samples; give "
-                              "--placement with border sites (corner 1/4, edge 1/2)",
-                              family, spec.n));
+      throw Error(
+          fmt::format("--family {}: n = {} is not a whole number of inside samples; give "
+                      "--placement with border sites (corner 1/4, edge 1/2)",
+                      family, spec.n));
     spec.sites.assign(static_cast<size_t>(spec.n), Site::kInside);
   } else {
     std::string_view rest = placement;
@@ -137,20 +167,23 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
       rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
     }
   }
-  const bool on_border = std::any_of(spec.sites.begin(), spec.sites.end(),
-                                     [](Site x) { return x != Site::kInside; });
+  const bool on_border =
+      std::any_of(spec.sites.begin(), spec.sites.end(), [](Site x) { return x != Site::kInside; });
   spec.mirrored = spec.s == 4 && spec.footprint == Footprint{1, true};
   if (on_border && !spec.footprint.plus)
-    throw Error(fmt::format("--family {}: border sites are shared with the neighbours, which only "
-                            "a sharing footprint (r with +) reads",
-                            family));
+    throw Error(
+        fmt::format("--family {}: border sites are shared with the neighbours, which only "
+                    "a sharing footprint (r with +) reads",
+                    family));
   if (on_border && !spec.mirrored && !(spec.s == 1 && spec.footprint.size == 1))
-    throw Error(fmt::format("--family {}: border sites are supported for P(1,1+,n) and the "
-                            "mirrored P(4,1+,n)",
-                            family));
+    throw Error(
+        fmt::format("--family {}: border sites are supported for P(1,1+,n) and the "
+                    "mirrored P(4,1+,n)",
+                    family));
   for (Site site : {Site::kBottomLeft, Site::kBottomRight, Site::kTopLeft, Site::kTopRight})
     if (std::count(spec.sites.begin(), spec.sites.end(), site) > 1)
-      throw Error(fmt::format("--placement: the {} corner holds one sample at most", site_text(site)));
+      throw Error(
+          fmt::format("--placement: the {} corner holds one sample at most", site_text(site)));
   if (spec.s == 1 && spec.footprint.plus) {
     // In a 1x1 tile a pixel's left-edge sample is its neighbour's right-edge
     // sample, which this pixel also reads: such sites come in pairs.
@@ -164,9 +197,10 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
     const auto corners = count(Site::kBottomLeft) + count(Site::kBottomRight) +
                          count(Site::kTopLeft) + count(Site::kTopRight);
     if (corners != 0 && corners != 4)
-      throw Error(fmt::format("--placement: in {} a corner sample is every corner's sample: list "
-                              "all four corners or none",
-                              family));
+      throw Error(
+          fmt::format("--placement: in {} a corner sample is every corner's sample: list "
+                      "all four corners or none",
+                      family));
   }
   // n from the sites: each physical sample once (in a 1x1 1+ tile the paired
   // edges and the four corners are one sample each, whose reads cost 1/2, 1/4).
@@ -174,7 +208,8 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
   std::string terms;
   for (Site x : spec.sites) {
     cost += site_cost(x);
-    terms += fmt::format("{}{} {}", terms.empty() ? "" : " + ", site_text(x), format_cost(site_cost(x)));
+    terms +=
+        fmt::format("{}{} {}", terms.empty() ? "" : " + ", site_text(x), format_cost(site_cost(x)));
   }
   if (std::abs(cost - spec.n) > 1e-9)
     throw Error(fmt::format("--family {} says n = {} but the placement costs {} ({})", family,
@@ -186,7 +221,8 @@ SeedKind parse_seed_kind(std::string_view text) {
   if (text == "jittered") return SeedKind::kJittered;
   if (text == "poisson") return SeedKind::kPoisson;
   if (text == "uniform") return SeedKind::kUniform;
-  throw Error(fmt::format("--seeds: '{}' is not jittered, poisson, uniform or a pattern file", text));
+  throw Error(
+      fmt::format("--seeds: '{}' is not jittered, poisson, uniform or a pattern file", text));
 }
 
 std::string seed_kind_text(SeedKind k) {
@@ -215,9 +251,12 @@ Pattern seed_pattern(const FamilySpec& spec, SeedKind kind, std::mt19937_64& rng
                      const Filter& filter) {
   std::uniform_real_distribution<double> along(-0.5 + kEdgeMargin, 0.5 - kEdgeMargin);
   const double limit = 0.5 - kEdgeMargin;
-  auto make_set = [&]() {
-    const int inside = static_cast<int>(std::count(spec.sites.begin(), spec.sites.end(), Site::kInside));
-    const std::vector<Vec2> in = inside_points(inside, kind, rng, limit);
+  const int side = static_cast<int>(std::lround(std::sqrt(spec.s)));
+  const int inside =
+      static_cast<int>(std::count(spec.sites.begin(), spec.sites.end(), Site::kInside));
+  const auto tile_inside = inside_points(spec.mirrored ? 1 : side, inside, kind, rng, limit);
+  auto make_set = [&](int k) {
+    const std::vector<Vec2>& in = tile_inside[k];
     // Paired sites of a 1x1 sharing tile share one coordinate: right takes
     // the y of a left, top the x of a bottom.
     std::vector<double> left_y, bottom_x;
@@ -230,27 +269,38 @@ Pattern seed_pattern(const FamilySpec& spec, SeedKind kind, std::mt19937_64& rng
     size_t next_inside = 0, l = 0, b = 0, r = 0, t = 0;
     for (Site x : spec.sites) {
       switch (x) {
-        case Site::kInside: set.push_back(in[next_inside++]); break;
-        case Site::kLeft: set.push_back({-0.5, left_y[l++]}); break;
-        case Site::kBottom: set.push_back({bottom_x[b++], -0.5}); break;
-        case Site::kRight: set.push_back({0.5, paired ? left_y[r++] : along(rng)}); break;
-        case Site::kTop: set.push_back({paired ? bottom_x[t++] : along(rng), 0.5}); break;
-        default: set.push_back(info(x).fixed);
+        case Site::kInside:
+          set.push_back(in[next_inside++]);
+          break;
+        case Site::kLeft:
+          set.push_back({-0.5, left_y[l++]});
+          break;
+        case Site::kBottom:
+          set.push_back({bottom_x[b++], -0.5});
+          break;
+        case Site::kRight:
+          set.push_back({0.5, paired ? left_y[r++] : along(rng)});
+          break;
+        case Site::kTop:
+          set.push_back({paired ? bottom_x[t++] : along(rng), 0.5});
+          break;
+        default:
+          set.push_back(info(x).fixed);
       }
     }
     return set;
   };
 
-  const int side = static_cast<int>(std::lround(std::sqrt(spec.s)));
   Pattern p;
   if (spec.mirrored) {
-    std::vector<Vec2> base = make_set();
-    p = mirrored_tile_pattern("optimized", base, std::vector<double>(base.size(), 1.0 / base.size()));
+    std::vector<Vec2> base = make_set(0);
+    p = mirrored_tile_pattern("optimized", base,
+                              std::vector<double>(base.size(), 1.0 / base.size()));
   } else {
     p.name = "optimized";
     p.tile_w = p.tile_h = side;
     p.footprint = spec.footprint;
-    for (int k = 0; k < spec.s; ++k) p.sets.push_back(make_set());
+    for (int k = 0; k < spec.s; ++k) p.sets.push_back(make_set(k));
     for (int k = 0; k < spec.s; ++k) {
       const size_t reads = kernel_samples(p, k).size();
       p.weights.push_back(std::vector<double>(reads, 1.0 / reads));

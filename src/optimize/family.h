@@ -14,16 +14,24 @@
 namespace aapat {
 
 enum class Site {
-  kInside, kLeft, kRight, kBottom, kTop, kBottomLeft, kBottomRight, kTopLeft, kTopRight
+  kInside,
+  kLeft,
+  kRight,
+  kBottom,
+  kTop,
+  kBottomLeft,
+  kBottomRight,
+  kTopLeft,
+  kTopRight
 };
 
 std::string site_text(Site s);
 double site_cost(Site s);  // 1 inside, 1/2 on an edge, 1/4 on a corner
 
 struct FamilySpec {
-  int s = 1;             // distinct sets (a square tile)
-  Footprint footprint;   // r
-  double n = 1;          // samples per pixel
+  int s = 1;                // distinct sets (a square tile)
+  Footprint footprint;      // r
+  double n = 1;             // samples per pixel
   std::vector<Site> sites;  // where each sample of a base set sits
   bool mirrored = false;    // P(4,1+,n): the base set mirrored over a 2x2 tile
   std::string text() const;

@@ -3,6 +3,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <mutex>
@@ -47,25 +48,36 @@ MultiStartResult multistart(const Metric& metric, int starts, uint64_t seed,
     }
   });
   MultiStartResult out;
-  for (int i = 0; i < starts; ++i) {
-    if (!records[i]) continue;
-    out.starts.push_back(*records[i]);
-    const int j = static_cast<int>(out.starts.size()) - 1;
-    if (out.best < 0 || records[i]->run.final_e2 < out.starts[out.best].run.final_e2) {
-      out.best = j;
-      out.best_problem = *results[i];
-    }
-  }
-  if (out.best >= 0 && settings.polish && settings.method == Method::kDescent && !past(settings)) {
-    OptimizerSettings polish = settings;
-    polish.method = Method::kMinimax;
-    RunResult& best = out.starts[out.best].run;
-    out.polished_from = best.final_e2;
-    const RunResult more = descend(objective, out.best_problem, polish);
-    best.final_e2 = more.final_e2;
-    best.iterations += more.iterations;
-    best.evaluations += more.evaluations;
-  }
+  for (int i = 0; i < starts; ++i)
+    if (records[i]) out.starts.push_back(*records[i]);
+  if (out.starts.empty()) return out;
+  // The heuristic's best few starts, polished by the minimax descent (in
+  // parallel); the lowest E2 after polishing wins, ties to the lower start.
+  std::vector<int> order(out.starts.size());
+  for (size_t j = 0; j < order.size(); ++j) order[j] = static_cast<int>(j);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return out.starts[a].run.final_e2 < out.starts[b].run.final_e2;
+  });
+  const bool polish = settings.polish && settings.method == Method::kDescent && !past(settings);
+  const int polished = polish ? std::min<int>(settings.polish_count, order.size()) : 0;
+  std::vector<double> before(polished);
+  tbb::parallel_for(0, polished, [&](int r) {
+    StartRecord& rec = out.starts[order[r]];
+    Problem& problem = *results[rec.start];
+    OptimizerSettings minimax = settings;
+    minimax.method = Method::kMinimax;
+    before[r] = rec.run.final_e2;
+    const RunResult more = descend(objective, problem, minimax);
+    rec.run.final_e2 = more.final_e2;
+    rec.run.iterations += more.iterations;
+    rec.run.evaluations += more.evaluations;
+  });
+  for (size_t j = 0; j < out.starts.size(); ++j)
+    if (out.best < 0 || out.starts[j].run.final_e2 < out.starts[out.best].run.final_e2)
+      out.best = static_cast<int>(j);
+  out.best_problem = *results[out.starts[out.best].start];
+  for (int r = 0; r < polished; ++r)
+    if (order[r] == out.best) out.polished_from = before[r];
   return out;
 }
 

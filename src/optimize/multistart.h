@@ -2,8 +2,8 @@
 // draws its seed pattern and randomness from (seed, i) alone and the best is
 // the lowest E2 (ties: the lowest start), so the result is the same for any
 // thread count. A deadline skips the starts not yet begun. With the
-// heuristic (Method::kDescent) and settings.polish, the best start is then
-// polished by the minimax descent.
+// heuristic (Method::kDescent) and settings.polish, the best few starts are
+// then polished by the minimax descent.
 #pragma once
 
 #include <functional>

@@ -43,8 +43,8 @@ class Objective {
   // (the eps-active set), the convex combination of their gradients with the
   // smallest norm (Demyanov). Where it is not zero, a small step along it
   // lowers every active term, so E2 falls even at a kink of the maximum.
-  void minimax_direction(const Problem& pr, Workspace& ws, double e2, double t,
-                         bool move_positions, Direction& dir) const;
+  void minimax_direction(const Problem& pr, Workspace& ws, double e2, double t, bool move_positions,
+                         Direction& dir) const;
 
   // The plain gradient of W E1 at one (kernel, angle), for tests.
   void term_gradient(const Problem& pr, Workspace& ws, int kernel, int angle, Direction& dir) const;

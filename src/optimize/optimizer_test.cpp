@@ -33,13 +33,15 @@ MultiStartResult search(const std::string& family, const std::string& placement,
       OptimizerSettings{}, threads);
 }
 
-double best_e2(const MultiStartResult& r) { return r.starts[r.best].run.final_e2; }
+double best_e2(const MultiStartResult& r) {
+  return r.starts[r.best].run.final_e2;
+}
 
 // Laine-Aila Table 2, "Best E2" column, reached from random starts. The paper
 // prints three decimals: "<= 0.359" is read as rounding to 0.359 (< 0.3595).
 TEST(LaineAilaTable2, BestE2FromRandomStarts) {
   EXPECT_LT(best_e2(search("P(1,1,4)", "", 32)), 0.3595);
-  EXPECT_LT(best_e2(search("P(4,1+,2)", "left,right,bottom,top", 32)), 0.3595);  // FLIPQUAD sites
+  EXPECT_LT(best_e2(search("P(4,1+,2)", "left,right,bottom,top", 32)), 0.3595);    // FLIPQUAD sites
   EXPECT_LE(best_e2(search("P(4,1+,1.25)", "top-left,bottom,right", 32)), 0.560);  // FLIPTRI sites
   // Quincunx sites: the weight-optimized Quincunx of Hasselgren Table 2 is 0.484.
   EXPECT_LE(best_e2(search("P(1,1+,2)", "inside,bottom-left,bottom-right,top-left,top-right", 32)),
@@ -89,8 +91,9 @@ TEST(LaineAilaTable2, QuincunxPlacementIsBoundedAtHorizontalEdges) {
   EXPECT_NEAR(bound, 0.48421, 0.00005);
   // The optimizer, given the horizontal edge alone, finds the same bound.
   const Metric only_horizontal(make_filter("mitchell"), parse_acuity_csv("0,3.93\n", "h"));
-  const double found = best_e2(search("P(1,1+,2)", "inside,bottom-left,bottom-right,top-left,top-right",
-                                      16, 1, 0, only_horizontal));
+  const double found =
+      best_e2(search("P(1,1+,2)", "inside,bottom-left,bottom-right,top-left,top-right", 16, 1, 0,
+                     only_horizontal));
   EXPECT_GE(found, bound - 1e-6);
   EXPECT_LT(found, bound + 0.002);
 }
@@ -120,7 +123,8 @@ TEST(Optimizer, SameSeedSameResultAnyThreadCount) {
   const auto one = search("P(4,1+,1.5)", "left,bottom,top", 12, 5, 1);
   const auto two = search("P(4,1+,1.5)", "left,bottom,top", 12, 5, 2);
   EXPECT_EQ(one.starts[one.best].start, two.starts[two.best].start);
-  EXPECT_EQ(pattern_to_json(pattern_of(one.best_problem)), pattern_to_json(pattern_of(two.best_problem)));
+  EXPECT_EQ(pattern_to_json(pattern_of(one.best_problem)),
+            pattern_to_json(pattern_of(two.best_problem)));
   for (size_t i = 0; i < one.starts.size(); ++i)
     EXPECT_EQ(one.starts[i].run.final_e2, two.starts[i].run.final_e2);
 }
@@ -214,14 +218,17 @@ TEST(Family, ParsesAndExplainsWhatDoesNotFit) {
   expect_family_error("P(3,1,2)", "",
                       "--family P(3,1,2): s = 3 must be a square number of sets 1, 4, 9, ... 64 (a "
                       "square tile)");
-  expect_family_error("Q(1,1,2)", "", "--family: 'Q(1,1,2)' is not of the form P(s,r,n), e.g. P(4,1+,2)");
-  expect_family_error("P(1,1+,1.5)", "inside,left",
-                      "--placement: in P(1,1+,1.5) every pixel repeats the same set, so a left-edge "
-                      "sample is also the right-edge sample of the pixel to the left: list left and "
-                      "right (and top and bottom) in pairs");
-  expect_family_error("P(1,1,1.5)", "inside,left",
-                      "--family P(1,1,1.5): border sites are shared with the neighbours, which only "
-                      "a sharing footprint (r with +) reads");
+  expect_family_error("Q(1,1,2)", "",
+                      "--family: 'Q(1,1,2)' is not of the form P(s,r,n), e.g. P(4,1+,2)");
+  expect_family_error(
+      "P(1,1+,1.5)", "inside,left",
+      "--placement: in P(1,1+,1.5) every pixel repeats the same set, so a left-edge "
+      "sample is also the right-edge sample of the pixel to the left: list left and "
+      "right (and top and bottom) in pairs");
+  expect_family_error(
+      "P(1,1,1.5)", "inside,left",
+      "--family P(1,1,1.5): border sites are shared with the neighbours, which only "
+      "a sharing footprint (r with +) reads");
   expect_family_error("P(4,1+,2)", "left,right,middle",
                       "--placement: unknown site 'middle' (sites are inside, left, right, bottom, "
                       "top, bottom-left, bottom-right, top-left, top-right)");

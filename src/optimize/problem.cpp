@@ -11,14 +11,19 @@ namespace {
 // border, so that they never turn into shared samples (changing n).
 constexpr double kBorderMargin = 1e-6;
 
-bool near(double v, double target) { return std::abs(v - target) <= kSameSampleEps; }
+bool near(double v, double target) {
+  return std::abs(v - target) <= kSameSampleEps;
+}
 
 Generator generator_at(Vec2 pos, bool sharing) {
   const bool vx = near(std::abs(pos.x), 0.5), vy = near(std::abs(pos.y), 0.5);
   Generator g{pos, Freedom::kFree, 0.5};
-  if (vx && vy) g.freedom = Freedom::kFixed;
-  else if (vy) g.freedom = Freedom::kSlideX;  // on a horizontal border: moves along x
-  else if (vx) g.freedom = Freedom::kSlideY;
+  if (vx && vy)
+    g.freedom = Freedom::kFixed;
+  else if (vy)
+    g.freedom = Freedom::kSlideX;  // on a horizontal border: moves along x
+  else if (vx)
+    g.freedom = Freedom::kSlideY;
   if (sharing || g.freedom != Freedom::kFree) g.limit = 0.5 - kBorderMargin;
   return g;
 }
@@ -33,8 +38,8 @@ void add_kernels(Problem& pr, bool share_weights) {
       Placement place = pr.set_samples[s.set][s.index];
       const Vec2 base = place.at(pr.generators);  // the sample in its own pixel
       place.offset = place.offset + (s.pos - base);
-      const int weight = share_weights ? static_cast<int>(reads.size())
-                                       : static_cast<int>(pr.weights.size());
+      const int weight =
+          share_weights ? static_cast<int>(reads.size()) : static_cast<int>(pr.weights.size());
       if (!share_weights || k == 0) {
         pr.weights.push_back(p.weights[k][reads.size()]);
         group.push_back(weight);
@@ -95,7 +100,8 @@ Problem problem_from_pattern(const Pattern& p) {
         return ((std::llround(v * 1e7) % m) + m) % m;
       };
       const auto key = std::make_pair(reduce(tx + s.x, p.tile_w), reduce(ty + s.y, p.tile_h));
-      auto [it, inserted] = orbit_generator.try_emplace(key, static_cast<int>(pr.generators.size()));
+      auto [it, inserted] =
+          orbit_generator.try_emplace(key, static_cast<int>(pr.generators.size()));
       if (inserted) pr.generators.push_back(generator_at(s, p.footprint.plus));
       set.push_back({it->second, 1, 1, s - pr.generators[it->second].pos});
     }

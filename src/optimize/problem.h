@@ -44,7 +44,7 @@ struct Problem {
   Pattern layout;  // names, tile, footprint and provenance of the result
   std::vector<Generator> generators;
   std::vector<double> weights;
-  std::vector<std::vector<int>> weight_groups;    // each group sums to 1
+  std::vector<std::vector<int>> weight_groups;      // each group sums to 1
   std::vector<std::vector<Placement>> set_samples;  // per set, per sample
   std::vector<std::vector<KernelRead>> kernels;     // per kernel, in kernel_samples order
 

@@ -15,11 +15,12 @@ struct OptimizerSettings {
   double initial_step = 1e-3;  // c0 at the start; adapted as the run goes
   double min_step = 1e-13;     // stop once c0 shrinks below this
   int max_iterations = 4000;
-  int window = 100;            // stop when E2 improved by less than
-  double tolerance = 1e-8;     //   tolerance (relative) over `window` iterations
+  int window = 100;         // stop when E2 improved by less than
+  double tolerance = 1e-8;  //   tolerance (relative) over `window` iterations
   // After a multi-start of the heuristic, polish the best start with the
   // minimax descent (which does not stall at kinks of the maximum).
   bool polish = true;
+  int polish_count = 4;  // how many of the best starts are polished
   bool weights_only = false;
   bool nonnegative_weights = false;
   // Wall-clock limit for the whole run (all starts).
