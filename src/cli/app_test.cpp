@@ -141,3 +141,111 @@ TEST(Cli, AnExistingFileIsReplacedWhole) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(CliOptimize, WritesBestPatternWithProvenanceCsvAndSvg) {
+  const std::string json = temp_path("best.json"), csv = temp_path("starts.csv"),
+                    svg = temp_path("best.svg");
+  const CliRun r = run({"optimize", "--family", "P(4,1+,2)", "--placement", "left,right,bottom,top",
+                        "--starts", "8", "--seed", "3", "-o", json, "--csv", csv, "--svg", svg});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(doc["family"], "P(4,1+,2)");
+  const auto& prov = doc["provenance"];
+  EXPECT_EQ(prov["seed"], "3");
+  EXPECT_EQ(prov["filter"], "mitchell:b=1/3,c=1/3");
+  EXPECT_EQ(prov["acuity"], "laine-aila");
+  EXPECT_TRUE(prov.contains("start") && prov.contains("iterations"));
+  EXPECT_LT(std::stod(prov["e2"].get<std::string>()), 0.3595);  // Laine-Aila Table 2
+  const CliRun again = run({"eval", json, "--json"});
+  EXPECT_NEAR(nlohmann::json::parse(again.out)[0]["e2"].get<double>(),
+              std::stod(prov["e2"].get<std::string>()), 1e-6);
+  std::istringstream lines(slurp(csv));
+  std::string header;
+  std::getline(lines, header);
+  EXPECT_EQ(header, "start,initial_e2,final_e2,iterations,seconds");
+  int rows = 0;
+  for (std::string l; std::getline(lines, l);) ++rows;
+  EXPECT_EQ(rows, 8);
+  EXPECT_NE(slurp(svg).find("<svg"), std::string::npos);
+}
+
+TEST(CliOptimize, SameSeedSameFileAnyThreads) {
+  const std::string a = temp_path("t1.json"), b = temp_path("t2.json");
+  ASSERT_EQ(run({"optimize", "--family", "P(1,1,3)", "--starts", "6", "--seed", "9", "--threads",
+                 "1", "-o", a})
+                .code,
+            0);
+  ASSERT_EQ(run({"optimize", "--family", "P(1,1,3)", "--starts", "6", "--seed", "9", "--threads",
+                 "2", "-o", b})
+                .code,
+            0);
+  EXPECT_EQ(slurp(a), slurp(b));
+}
+
+TEST(CliOptimize, PolishesAPatternAndReportsTheCostOfNonNegativeWeights) {
+  const CliRun r = run({"optimize", "quincunx", "--weights-only", "--nonnegative"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("non-negative weights: E2 0.4842"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("unconstrained from the same start"), std::string::npos);
+}
+
+TEST(CliOptimize, BadArgumentsAreExplained) {
+  CliRun r = run({"optimize"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("give either --family (a search) or a PATTERN to polish"),
+            std::string::npos);
+  r = run({"optimize", "--family", "P(4,1+,2)", "--placement", "left,right"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("says n = 2 but the placement costs 1"), std::string::npos) << r.err;
+  r = run({"optimize", "--family", "P(1,1,2)", "--seeds", "blue"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("--seeds: 'blue' is not jittered, poisson, uniform"), std::string::npos);
+  r = run({"optimize", "--family", "P(1,1,2)", "--starts", "0"});
+  EXPECT_NE(r.code, 0);
+  r = run({"optimize", "--family", "P(1,1,2)", "-o", temp_path("x.txt")});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_FALSE(fs::exists(temp_path("x.txt")));
+}
+
+// Laine-Aila Table 3's shape on a small run: the best of many random patterns
+// improves with optimized weights (a convex problem) and again with positions.
+TEST(CliTable3, OptimizedColumnsImproveOnTheBestPattern) {
+  const CliRun r = run({"table3", "--patterns", "24", "--iterations", "150", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto rows = nlohmann::json::parse(r.out);
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) {
+    EXPECT_LE(row["min"].get<double>(), row["avg"].get<double>());
+    EXPECT_LE(row["avg"].get<double>(), row["max"].get<double>());
+    EXPECT_LT(row["opt_w"].get<double>(), row["min"].get<double>());
+    EXPECT_LE(row["opt_wp"].get<double>(), row["opt_w"].get<double>());
+  }
+  // Poisson disk beats jittered on average, as in the paper (0.473 vs 0.622).
+  EXPECT_LT(rows[1]["avg"].get<double>(), rows[0]["avg"].get<double>());
+}
+
+TEST(CliFigure10, WritesTableAndPlot) {
+  const std::string csv = temp_path("f10.csv");
+  const CliRun r = run({"figure10", "--starts", "2", "--csv", csv});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::istringstream lines(slurp(csv));
+  std::string header;
+  std::getline(lines, header);
+  EXPECT_EQ(header, "family,n,e2,placement");
+  int rows = 0;
+  for (std::string l; std::getline(lines, l);) ++rows;
+  EXPECT_EQ(rows, 23);  // 4 families x n = 2..6, and P(4,1+,n) at 1.25, 1.5, 1.75
+}
+
+}  // namespace
+}  // namespace aapat
