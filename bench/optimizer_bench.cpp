@@ -19,8 +19,7 @@ const Metric& metric() {
 }
 
 Problem seeded(const FamilySpec& spec, uint64_t seed, int i) {
-  auto rng = start_rng(seed, i);
-  return problem_from_pattern(seed_pattern(spec, SeedKind::kJittered, rng, metric().filter()));
+  return family_seeds(spec, SeedKind::kJittered, seed, metric().filter())(i);
 }
 
 // One heuristic iteration = a direction (all terms' gradients) and a trial E2.

@@ -73,15 +73,10 @@ Action add_figure10_command(CLI::App& app) {
             f == "P(4,1+,{})" ? mirrored_placements(n) : std::vector<std::string>{""};
         for (const auto& placement : placements) {
           const FamilySpec spec = parse_family(fam, placement);
-          const uint64_t seed = o->seed;
-          const Filter& filter = metric.filter();
-          const MultiStartResult r = multistart(
-              metric, o->starts, seed,
-              [&](int i) {
-                auto rng = start_rng(seed, static_cast<uint64_t>(i));
-                return problem_from_pattern(seed_pattern(spec, SeedKind::kJittered, rng, filter));
-              },
-              OptimizerSettings{}, 0);
+          const MultiStartResult r =
+              multistart(metric, o->starts, o->seed,
+                         family_seeds(spec, SeedKind::kJittered, o->seed, metric.filter()),
+                         OptimizerSettings{}, 0);
           const double e2 = r.starts[r.best].run.final_e2;
           if (e2 < best.e2) best = {fam, placement, n, e2};
         }

@@ -88,12 +88,7 @@ Action add_optimize_command(CLI::App& app) {
     } else {
       spec = parse_family(o->family, o->placement);
       const SeedKind kind = parse_seed_kind(o->seeds);
-      const Filter& filter = metric.filter();
-      const uint64_t seed = o->seed;
-      make_seed = [spec, kind, &filter, seed](int i) {
-        auto rng = start_rng(seed, static_cast<uint64_t>(i));
-        return problem_from_pattern(seed_pattern(spec, kind, rng, filter));
-      };
+      make_seed = family_seeds(spec, kind, o->seed, metric.filter());
       what = fmt::format("{} from {} {} starts", spec.text(), starts, o->seeds);
     }
 

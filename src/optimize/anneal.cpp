@@ -7,11 +7,8 @@ namespace aapat {
 RunResult anneal(const Objective& objective, Problem& problem, const OptimizerSettings& s,
                  std::mt19937_64& rng) {
   Workspace ws;
-  project_to_constraints(problem, s.nonnegative_weights);
-  RunResult r;
-  double e2 = objective.e2(problem, ws);
-  r.initial_e2 = e2;
-  r.evaluations = 1;
+  RunResult r = begin_run(objective, problem, s.nonnegative_weights, ws);
+  double e2 = r.initial_e2;
   Problem trial = problem, best = problem;
   double best_e2 = e2;
   std::uniform_real_distribution<double> u(0, 1);

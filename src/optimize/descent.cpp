@@ -18,11 +18,8 @@ void step(const Problem& from, const Direction& dir, double c0, bool nonnegative
 RunResult descend(const Objective& objective, Problem& problem, const OptimizerSettings& s) {
   Workspace ws;
   Direction dir;
-  project_to_constraints(problem, s.nonnegative_weights);
-  RunResult r;
-  double e2 = objective.e2(problem, ws);
-  r.initial_e2 = e2;
-  r.evaluations = 1;
+  RunResult r = begin_run(objective, problem, s.nonnegative_weights, ws);
+  double e2 = r.initial_e2;
   Problem trial = problem, best = problem;
   double best_e2 = e2, window_start = e2;
   double c0 = s.initial_step;

@@ -15,6 +15,14 @@
 
 namespace aapat {
 
+SeedFunction family_seeds(const FamilySpec& spec, SeedKind kind, uint64_t seed,
+                          const Filter& filter) {
+  return [spec, kind, seed, &filter](int i) {
+    auto rng = start_rng(seed, static_cast<uint64_t>(i));
+    return problem_from_pattern(seed_pattern(spec, kind, rng, filter));
+  };
+}
+
 MultiStartResult multistart(const Metric& metric, int starts, uint64_t seed,
                             const SeedFunction& make_seed, const OptimizerSettings& settings,
                             int threads, const ProgressFunction& progress) {

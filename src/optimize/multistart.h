@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/metric.h"
+#include "optimize/family.h"
 #include "optimize/problem.h"
 #include "optimize/settings.h"
 
@@ -30,6 +31,11 @@ struct MultiStartResult {
 
 // Builds start i's seed problem (called with i; must be deterministic in i).
 using SeedFunction = std::function<Problem(int start)>;
+// Start i of a family search: a random seed pattern of the family drawn
+// from start_rng(seed, i).
+SeedFunction family_seeds(const FamilySpec& spec, SeedKind kind, uint64_t seed,
+                          const Filter& filter);
+
 // Called after each finished start with (finished, total, best E2 so far).
 using ProgressFunction = std::function<void(int, int, double)>;
 

@@ -181,4 +181,13 @@ void Objective::minimax_direction(const Problem& pr, Workspace& ws, double e2, d
   }
 }
 
+RunResult begin_run(const Objective& objective, Problem& problem, bool nonnegative_weights,
+                    Workspace& ws) {
+  project_to_constraints(problem, nonnegative_weights);
+  RunResult r;
+  r.initial_e2 = r.final_e2 = objective.e2(problem, ws);
+  r.evaluations = 1;
+  return r;
+}
+
 }  // namespace aapat

@@ -6,6 +6,7 @@
 
 #include "core/metric.h"
 #include "optimize/problem.h"
+#include "optimize/settings.h"
 
 namespace aapat {
 
@@ -57,5 +58,10 @@ class Objective {
 
   const Metric& metric_;
 };
+
+// The start of every optimizer run: the problem put on its constraints and
+// its E2 evaluated (the workspace then holds its per-term values).
+RunResult begin_run(const Objective& objective, Problem& problem, bool nonnegative_weights,
+                    Workspace& ws);
 
 }  // namespace aapat

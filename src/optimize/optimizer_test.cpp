@@ -24,13 +24,9 @@ MultiStartResult search(const std::string& family, const std::string& placement,
                         uint64_t seed = 1, int threads = 0,
                         const Metric& metric = default_metric()) {
   const FamilySpec spec = parse_family(family, placement);
-  return multistart(
-      metric, starts, seed,
-      [&](int i) {
-        auto rng = start_rng(seed, i);
-        return problem_from_pattern(seed_pattern(spec, SeedKind::kJittered, rng, metric.filter()));
-      },
-      OptimizerSettings{}, threads);
+  return multistart(metric, starts, seed,
+                    family_seeds(spec, SeedKind::kJittered, seed, metric.filter()),
+                    OptimizerSettings{}, threads);
 }
 
 double best_e2(const MultiStartResult& r) {
