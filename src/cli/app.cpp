@@ -34,6 +34,7 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   add(add_optimize_command);
   add(add_table3_command);
   add(add_figure10_command);
+  add(add_enumerate_command);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

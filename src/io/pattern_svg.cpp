@@ -8,6 +8,24 @@
 #include "io/xml.h"
 
 namespace aapat {
+namespace {
+
+// A sample of weight w at SVG point (cx, cy): a disc whose area is
+// proportional to |w| (a red ring when w < 0); `pixel` is the pixel's size.
+std::string weight_disc(double cx, double cy, double w, double pixel) {
+  const double r = 0.22 * std::sqrt(std::abs(w)) * pixel;
+  if (w >= 0)
+    return fmt::format(
+        "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"#1f5fa8\" fill-opacity=\"0.75\">"
+        "<title>w = {:.6g}</title></circle>\n",
+        cx, cy, r, w);
+  return fmt::format(
+      "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"none\" stroke=\"#c0392b\" "
+      "stroke-width=\"2\"><title>w = {:.6g}</title></circle>\n",
+      cx, cy, r, w);
+}
+
+}  // namespace
 
 std::string pattern_svg(const Pattern& p) {
   constexpr double kScale = 160;   // SVG units per pixel
@@ -56,23 +74,49 @@ std::string pattern_svg(const Pattern& p) {
   const auto samples = kernel_samples(p, 0);
   for (size_t i = 0; i < samples.size(); ++i) {
     const double w = p.weights[0][i];
-    const double r = 0.22 * std::sqrt(std::abs(w)) * kScale;
     const Vec2 pos{samples[i].pos.x + o, samples[i].pos.y + o};
-    svg += w >= 0
-               ? fmt::format(
-                     "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"#1f5fa8\" "
-                     "fill-opacity=\"0.75\"><title>w = {:.6g}</title></circle>\n",
-                     sx(pos.x), sy(pos.y), r, w)
-               : fmt::format(
-                     "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"none\" "
-                     "stroke=\"#c0392b\" stroke-width=\"2\"><title>w = {:.6g}</title></circle>\n",
-                     sx(pos.x), sy(pos.y), r, w);
+    svg += weight_disc(sx(pos.x), sy(pos.y), w, kScale);
   }
   svg += fmt::format(
       "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"14\">{} {}: n = {}; disc areas are kernel 0's "
       "weights</text>\n</svg>\n",
       8.0, height - 14, xml_escape(p.name), family(p), format_cost(samples_per_pixel(p)));
   return svg;
+}
+
+std::string gallery_svg(const std::vector<GalleryItem>& items, int columns,
+                        const std::string& title) {
+  constexpr double kPixel = 110, kCell = 190, kCaption = 46, kTop = 36;
+  columns = std::max(1, columns);
+  const int rows = (static_cast<int>(items.size()) + columns - 1) / columns;
+  const double width = columns * kCell, height = kTop + rows * (kCell + kCaption);
+  std::string svg = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0:.0f}\" height=\"{1:.0f}\" "
+      "viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"sans-serif\" font-size=\"12\">\n"
+      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+      "<text x=\"10\" y=\"24\" font-size=\"15\">{2}</text>\n",
+      std::max(width, 420.0), height, xml_escape(title));
+  for (size_t i = 0; i < items.size(); ++i) {
+    const Pattern& p = items[i].pattern;
+    const double cx = (i % columns + 0.5) * kCell;
+    const double cy = kTop + (i / columns) * (kCell + kCaption) + kCell / 2;
+    svg += fmt::format(
+        "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{}\" height=\"{}\" fill=\"#f4f7fb\" "
+        "stroke=\"#333\" stroke-width=\"1.5\"/>\n",
+        cx - kPixel / 2, cy - kPixel / 2, kPixel, kPixel);
+    // Kernel 0 of a one-pixel footprint reads its own set, in set order.
+    const auto samples = kernel_samples(p, 0);
+    const double o = p.footprint.size == 1 ? 0.0 : 0.5;
+    for (size_t k = 0; k < samples.size(); ++k)
+      svg += weight_disc(cx + (samples[k].pos.x + o) * kPixel, cy - (samples[k].pos.y + o) * kPixel,
+                         p.weights[0][k], kPixel);
+    svg += fmt::format(
+        "<text x=\"{0:.1f}\" y=\"{1:.1f}\" text-anchor=\"middle\">{2}</text>\n"
+        "<text x=\"{0:.1f}\" y=\"{3:.1f}\" text-anchor=\"middle\" fill=\"#555\">{4}</text>\n",
+        cx, cy + kCell / 2 + 6, xml_escape(items[i].caption), cy + kCell / 2 + 22,
+        xml_escape(items[i].detail));
+  }
+  return svg + "</svg>\n";
 }
 
 }  // namespace aapat

@@ -5,11 +5,21 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/pattern.h"
 
 namespace aapat {
 
 std::string pattern_svg(const Pattern& p);
+
+// Several patterns side by side, each its kernel 0's pixel with the samples
+// as weight discs and two lines of caption (Hasselgren et al. Fig. 3).
+struct GalleryItem {
+  Pattern pattern;
+  std::string caption, detail;
+};
+std::string gallery_svg(const std::vector<GalleryItem>& items, int columns,
+                        const std::string& title);
 
 }  // namespace aapat

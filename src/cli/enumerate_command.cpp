@@ -1,0 +1,163 @@
+// `aapat enumerate`: every placement configuration of the mirrored P(4,1+,n)
+// family for the given costs (Hasselgren et al. Sec. 5), optionally optimized
+// and ranked by E2 within each cost.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "cli/commands.h"
+#include "cli/metric_options.h"
+#include "cli/progress.h"
+#include "core/filter_catalog.h"
+#include "generate/enumerate.h"
+#include "io/pattern_json.h"
+#include "io/pattern_svg.h"
+#include "optimize/multistart.h"
+
+namespace aapat {
+
+Action add_enumerate_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("enumerate",
+                                 "list, optimize and rank every P(4,1+,n) placement configuration");
+  struct Options {
+    std::string costs = "1.25,1.5,1.75,2";
+    int max_per_edge = 8, starts = 32, top = 3;
+    bool cull_one_edge = false, optimize = false;
+    uint64_t seed = 1;
+    std::string csv, json, gallery, best_dir;
+    MetricOptions metric;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("--cost", o->costs, "comma list of costs n, multiples of 1/4")
+      ->capture_default_str();
+  cmd->add_option("--max-per-edge", o->max_per_edge,
+                  "samples one edge may hold (8: as many as the cost allows)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 8));
+  cmd->add_flag("--cull-one-edge", o->cull_one_edge,
+                "drop configurations with every sample on one border line (the paper's hand cull)");
+  cmd->add_flag("--optimize", o->optimize, "optimize every configuration and rank by E2");
+  cmd->add_option("--starts", o->starts, "random starts per configuration")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--seed", o->seed, "random seed")->capture_default_str();
+  cmd->add_option("--csv", o->csv, "write the table as CSV");
+  cmd->add_option("--json", o->json, "write the table as JSON");
+  cmd->add_option("--gallery", o->gallery, "write an SVG of the best configurations of each n");
+  cmd->add_option("--top", o->top, "configurations per n in the gallery")->capture_default_str();
+  cmd->add_option("--best-dir", o->best_dir, "write the best pattern of each n into this folder");
+  o->metric.add_to(cmd);
+
+  return [o](std::ostream& out) {
+    std::vector<double> costs;
+    std::string_view rest = o->costs;
+    while (!rest.empty()) {
+      const auto comma = rest.find(',');
+      costs.push_back(parse_number(rest.substr(0, comma), "--cost"));
+      rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+    }
+    const EnumerationRules rules{o->max_per_edge, o->cull_one_edge};
+    struct Row {
+      int id;
+      double n;
+      PlacementConfig config;
+      double e2 = NAN;
+      Pattern best;
+    };
+    std::vector<Row> rows;
+    for (double n : costs)
+      for (const auto& c : enumerate_placements(n, rules))
+        rows.push_back({static_cast<int>(rows.size()) + 1, n, c, NAN, {}});
+    if ((o->gallery.size() || o->best_dir.size()) && !o->optimize)
+      throw Error("--gallery and --best-dir show optimized patterns: add --optimize");
+
+    out << fmt::format(
+        "P(4,1+,n) placement configurations (rotations and reflections removed; at "
+        "most {} samples per edge{})\n",
+        o->max_per_edge, o->cull_one_edge ? "; one-border-line configurations culled" : "");
+    for (double n : costs)
+      out << fmt::format(
+          "  n = {:<5} {:>4}\n", format_cost(n),
+          std::count_if(rows.begin(), rows.end(), [&](const Row& r) { return r.n == n; }));
+    out << fmt::format("  total     {:>4}\n", rows.size());
+    if (!o->optimize && o->csv.empty() && o->json.empty()) return;
+
+    if (o->optimize) {
+      const Metric metric = o->metric.make();
+      Progress bar("enumerate");
+      for (size_t i = 0; i < rows.size(); ++i) {
+        Row& row = rows[i];
+        const FamilySpec spec =
+            parse_family(fmt::format("P(4,1+,{})", format_cost(row.n)), row.config.sites());
+        const MultiStartResult r =
+            multistart(metric, o->starts, o->seed,
+                       family_seeds(spec, SeedKind::kJittered, o->seed, metric.filter()),
+                       OptimizerSettings{}, 0);
+        row.e2 = r.starts[r.best].run.final_e2;
+        row.best = pattern_of(r.best_problem);
+        row.best.name = fmt::format("P(4,1+,{})-config-{}", format_cost(row.n), row.id);
+        row.best.description = fmt::format("placement {}", row.config.sites());
+        row.best.provenance = {{"enumerate", fmt::format("configuration {}", row.id)},
+                               {"placement", row.config.sites()},
+                               {"filter", metric.filter().name()},
+                               {"acuity", metric.acuity().name},
+                               {"seed", std::to_string(o->seed)},
+                               {"starts", std::to_string(o->starts)},
+                               {"e2", fmt::format("{:.6f}", row.e2)}};
+        bar.update(static_cast<int>(i + 1), static_cast<int>(rows.size()),
+                   fmt::format("n = {} E2 {:.4f}", format_cost(row.n), row.e2));
+      }
+      // Rank within each cost by E2.
+      std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
+        return a.n != b.n ? a.n < b.n : a.e2 < b.e2;
+      });
+    }
+    out << fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", "id", "n", "reads", "E2", "placement");
+    std::string csv = "id,n,placement,samples_read,e2\n";
+    nlohmann::ordered_json js = nlohmann::ordered_json::array();
+    for (const Row& r : rows) {
+      out << fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", r.id, format_cost(r.n),
+                         r.config.samples(), o->optimize ? fmt::format("{:.4f}", r.e2) : "-",
+                         r.config.sites());
+      csv += fmt::format("{},{},\"{}\",{},{}\n", r.id, format_cost(r.n), r.config.sites(),
+                         r.config.samples(), o->optimize ? fmt::format("{:.6f}", r.e2) : "");
+      js.push_back({{"id", r.id},
+                    {"n", r.n},
+                    {"placement", r.config.sites()},
+                    {"samples_read", r.config.samples()},
+                    {"e2", o->optimize ? nlohmann::ordered_json(r.e2) : nlohmann::ordered_json()}});
+    }
+    if (!o->csv.empty()) write_output(o->csv, csv, out);
+    if (!o->json.empty()) write_output(o->json, js.dump(2) + "\n", out);
+    if (!o->gallery.empty()) {
+      std::vector<GalleryItem> items;
+      for (double n : costs) {
+        int shown = 0;
+        for (const Row& r : rows)
+          if (r.n == n && shown++ < o->top)
+            items.push_back({r.best, fmt::format("n = {}  E2 {:.4f}", format_cost(n), r.e2),
+                             fmt::format("#{}: {} samples read", r.id, r.config.samples())});
+      }
+      write_output(
+          o->gallery,
+          gallery_svg(items, o->top, "Best P(4,1+,n) configurations per cost; disc area = weight"),
+          out);
+    }
+    if (!o->best_dir.empty()) {
+      std::filesystem::create_directories(o->best_dir);
+      for (double n : costs)
+        for (const Row& r : rows)
+          if (r.n == n) {
+            save_pattern_file(r.best,
+                              fmt::format("{}/best-P4-1+-{}.json", o->best_dir, format_cost(n)));
+            break;
+          }
+    }
+  };
+}
+
+}  // namespace aapat
