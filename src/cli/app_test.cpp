@@ -292,3 +292,29 @@ TEST(CliEnumerate, CountsWithoutOptimizing) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+TEST(CliOptimize, LockedSamplesStayAndFileSeedsStartFromTheFile) {
+  const std::string seed = temp_path("seed.json"), out = temp_path("locked.json");
+  ASSERT_EQ(run({"show", "flipquad", "-o", seed}).code, 0);
+  const CliRun r = run({"optimize", "--family", "P(4,1+,2)", "--seeds", seed, "--starts", "4",
+                        "--lock", "0,2", "-o", out});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto before = nlohmann::json::parse(slurp(seed))["sets"][0];
+  const auto after = nlohmann::json::parse(slurp(out))["sets"][0];
+  EXPECT_EQ(after[0], before[0]);
+  EXPECT_EQ(after[2], before[2]);
+  EXPECT_NE(after[1], before[1]);  // free to move, and it does
+  CliRun bad = run({"optimize", "rgss", "--lock", "7"});
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("--lock: sample 7 does not exist: the base pixel has samples 0..3"),
+            std::string::npos);
+  bad = run({"optimize", "--family", "P(1,1,2)", "--seeds", seed});
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("is P(4,1+,2), not the --family P(1,1,2)"), std::string::npos) << bad.err;
+}
+
+}  // namespace
+}  // namespace aapat

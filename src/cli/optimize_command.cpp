@@ -26,7 +26,8 @@ Action add_optimize_command(CLI::App& app) {
     int starts = 16, threads = 0, iterations = 4000;
     uint64_t seed = 1;
     double time_limit = 0;
-    bool weights_only = false, nonnegative = false;
+    std::vector<int> lock;
+    bool weights_only = false, nonnegative = false, starts_given = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("pattern", o->pattern, "catalog name or pattern file to polish");
@@ -39,8 +40,12 @@ Action add_optimize_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
   cmd->add_option("--seed", o->seed, "random seed")->capture_default_str();
-  cmd->add_option("--seeds", o->seeds, "seed patterns: jittered, poisson, uniform")
+  cmd->add_option("--seeds", o->seeds,
+                  "seed patterns: jittered, poisson, uniform, or a pattern file (.json) whose "
+                  "starts after the first are jittered by up to 0.1 pixel")
       ->capture_default_str();
+  cmd->add_option("--lock", o->lock, "samples of the base pixel (set 0) to keep fixed, e.g. 0,2")
+      ->delimiter(',');
   cmd->add_option("--time-limit", o->time_limit, "seconds for the whole run (0: none)")
       ->check(CLI::Range(0.0, 1e7));
   cmd->add_option("--iterations", o->iterations, "iterations per start at most")
@@ -58,7 +63,9 @@ Action add_optimize_command(CLI::App& app) {
                   "write every start: start, initial E2, final E2, iterations, seconds");
   cmd->add_option("--svg", o->svg, "write a drawing of the best pattern");
 
-  return [o](std::ostream& out) {
+  auto* starts_option = cmd->get_option("--starts");
+  return [o, starts_option](std::ostream& out) {
+    o->starts_given = starts_option->count() > 0;
     if (o->pattern.empty() == o->family.empty())
       throw Error("optimize: give either --family (a search) or a PATTERN to polish");
     if (!o->output.empty() && !o->output.ends_with(".json"))
@@ -80,15 +87,37 @@ Action add_optimize_command(CLI::App& app) {
     std::string what;
     int starts = o->starts;
     FamilySpec spec;
+    if (!o->family.empty() && o->seeds.ends_with(".json")) {
+      // Seeds from a file: the same as polishing it, in the family asked for.
+      const Pattern file = load_pattern_file(o->seeds);
+      if (family(file) != parse_family(o->family, o->placement).text())
+        throw Error(fmt::format("--seeds: {} is {}, not the --family {}", o->seeds, family(file),
+                                o->family));
+      o->pattern = o->seeds;
+    }
     if (!o->pattern.empty()) {
-      const Pattern start = resolve_pattern(o->pattern);
-      make_seed = [start](int) { return problem_from_pattern(start); };
-      starts = 1;
-      what = fmt::format("{} {}", start.name, family(start));
+      // Start 0 is the pattern itself; later starts jitter it.
+      Problem start = problem_from_pattern(resolve_pattern(o->pattern));
+      lock_samples(start, o->lock);
+      const uint64_t seed = o->seed;
+      make_seed = [start, seed](int i) {
+        if (i == 0) return start;
+        auto rng = start_rng(seed, static_cast<uint64_t>(i));
+        return perturbed(start, 0.1, rng);
+      };
+      starts = o->starts_given ? o->starts : 1;
+      what = fmt::format("{} {} ({} start{})", start.layout.name, family(start.layout), starts,
+                         starts == 1 ? "" : "s");
     } else {
       spec = parse_family(o->family, o->placement);
       const SeedKind kind = parse_seed_kind(o->seeds);
-      make_seed = family_seeds(spec, kind, o->seed, metric.filter());
+      SeedFunction random = family_seeds(spec, kind, o->seed, metric.filter());
+      const std::vector<int> lock = o->lock;
+      make_seed = [random, lock](int i) {
+        Problem p = random(i);
+        lock_samples(p, lock);
+        return p;
+      };
       what = fmt::format("{} from {} {} starts", spec.text(), starts, o->seeds);
     }
 

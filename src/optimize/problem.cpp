@@ -4,6 +4,8 @@
 #include <cmath>
 #include <map>
 
+#include <fmt/format.h>
+
 namespace aapat {
 namespace {
 
@@ -119,6 +121,26 @@ Pattern pattern_of(const Problem& pr) {
   for (size_t k = 0; k < pr.kernels.size(); ++k)
     for (size_t i = 0; i < pr.kernels[k].size(); ++i)
       p.weights[k][i] = pr.weights[pr.kernels[k][i].weight];
+  return p;
+}
+
+void lock_samples(Problem& pr, const std::vector<int>& set0_samples) {
+  for (int i : set0_samples) {
+    if (i < 0 || i >= static_cast<int>(pr.set_samples[0].size()))
+      throw Error(fmt::format("--lock: sample {} does not exist: the base pixel has samples 0..{}",
+                              i, pr.set_samples[0].size() - 1));
+    pr.generators[pr.set_samples[0][i].generator].freedom = Freedom::kFixed;
+  }
+}
+
+Problem perturbed(const Problem& problem, double amount, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-amount, amount);
+  Problem p = problem;
+  for (Generator& g : p.generators) {
+    if (g.freedom == Freedom::kFree || g.freedom == Freedom::kSlideX) g.pos.x += u(rng);
+    if (g.freedom == Freedom::kFree || g.freedom == Freedom::kSlideY) g.pos.y += u(rng);
+  }
+  project_to_constraints(p, false);
   return p;
 }
 

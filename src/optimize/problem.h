@@ -10,6 +10,7 @@
 // the kernels of a mirrored tile share one group).
 #pragma once
 
+#include <random>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,14 @@ Problem mirrored_problem(const Pattern& mirrored_tile);
 Pattern pattern_of(const Problem& problem);
 // Whether a 2x2 1+ tile is the mirror construction of its first set.
 bool is_mirrored_tile(const Pattern& p);
+
+// Fixes the generators of the given samples of set 0 (the base pixel), so the
+// optimizer leaves them where they are; throws Error for an index out of range.
+void lock_samples(Problem& problem, const std::vector<int>& set0_samples);
+
+// A nearby start: every free coordinate moved uniformly by up to +-amount
+// pixels, then put back on the constraints.
+Problem perturbed(const Problem& problem, double amount, std::mt19937_64& rng);
 
 // Keeps every generator inside its freedom and limits, and (optionally
 // non-negative) weights summing to 1 in each group.
