@@ -35,6 +35,9 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   add(add_table3_command);
   add(add_figure10_command);
   add(add_enumerate_command);
+  add(add_generate_command);
+  add(add_discrepancy_command);
+  add(add_spectrum_command);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -27,8 +29,12 @@ CliRun run(std::vector<std::string> args) {
   return {code, out.str(), err.str()};
 }
 
+// A folder per test: ctest runs tests in parallel, and some look at what else
+// is in their folder.
 std::string temp_path(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "aapat_cli_test";
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(::testing::TempDir()) / "aapat_cli_test" /
+                       (std::string(info->test_suite_name()) + "." + info->name());
   fs::create_directories(dir);
   return (dir / name).string();
 }
@@ -314,6 +320,65 @@ TEST(CliOptimize, LockedSamplesStayAndFileSeedsStartFromTheFile) {
   bad = run({"optimize", "--family", "P(1,1,2)", "--seeds", seed});
   EXPECT_EQ(bad.code, 1);
   EXPECT_NE(bad.err.find("is P(4,1+,2), not the --family P(1,1,2)"), std::string::npos) << bad.err;
+}
+
+}  // namespace
+}  // namespace aapat
+
+namespace aapat {
+namespace {
+
+TEST(CliPoints, GenerateWritesCsvAndPatternFiles) {
+  CliRun r = run({"generate", "n-rooks", "--n", "6", "--seed", "2"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 7);  // header + 6 points
+  const std::string json = temp_path("rooks.json"), csv = temp_path("rooks.csv");
+  ASSERT_EQ(run({"generate", "n-rooks", "--n", "6", "--seed", "2", "-o", json}).code, 0);
+  ASSERT_EQ(run({"generate", "n-rooks", "--n", "6", "--seed", "2", "-o", csv}).code, 0);
+  const CliRun e = run({"eval", json, "--json"});
+  ASSERT_EQ(e.code, 0) << e.err;
+  EXPECT_EQ(nlohmann::json::parse(e.out)[0]["family"], "P(1,1,6)");
+  // The CSV and the pattern file hold the same points.
+  const CliRun a = run({"discrepancy", csv, "--json"}), b = run({"discrepancy", json, "--json"});
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_NEAR(nlohmann::json::parse(a.out)["l2_star"].get<double>(),
+              nlohmann::json::parse(b.out)["l2_star"].get<double>(), 1e-12);
+}
+
+TEST(CliPoints, DiscrepancyReportsAllThree) {
+  const CliRun r = run({"discrepancy", "regular", "--n", "16", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto d = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(d["star_upper"].get<double>(), 1 - std::pow(1 - 1.0 / 8, 2), 1e-12);  // closed form
+  EXPECT_TRUE(d["star_exact"].get<bool>());
+  EXPECT_GT(d["edge"].get<double>(), 0.0);
+  EXPECT_EQ(run({"discrepancy", "no-such"}).code, 1);
+  const std::string bad = temp_path("bad.csv");
+  std::ofstream(bad) << "0.5,0.5\n1.5,0.2\n";
+  const CliRun e = run({"discrepancy", bad});
+  EXPECT_EQ(e.code, 1);
+  EXPECT_NE(e.err.find("line 2: (1.5, 0.2) lies outside the unit square"), std::string::npos)
+      << e.err;
+}
+
+TEST(CliPoints, SpectrumWritesImageRadialProfileAndOneDimensionalPlot) {
+  const std::string png = temp_path("s.png"), csv = temp_path("s.csv"), svg = temp_path("s1d.svg");
+  CliRun r = run({"spectrum", "jittered", "--n", "64", "--size", "32", "--realizations", "2", "-o",
+                  png, "--csv", csv});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string bytes = slurp(png);
+  ASSERT_GT(bytes.size(), 8u);
+  EXPECT_EQ(bytes.substr(1, 3), "PNG");
+  std::istringstream lines(slurp(csv));
+  std::string header;
+  std::getline(lines, header);
+  EXPECT_EQ(header, "radius,power,anisotropy_db");
+  r = run({"spectrum", "--1d", "poisson", "--n", "500", "--frequencies", "1000", "--svg", svg});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(slurp(svg).find("<svg"), std::string::npos);
+  r = run({"spectrum", "jittered", "--n", "16", "-o", temp_path("s.jpg")});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_FALSE(fs::exists(temp_path("s.jpg")));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "core/acuity.h"
 #include "core/filter_catalog.h"
 #include "generate/catalog.h"
+#include "generate/point_generators.h"
 
 namespace aapat {
 
@@ -25,6 +26,9 @@ Action add_list_command(CLI::App& app) {
         params += fmt::format("{}{}={}", params.empty() ? ":" : ",", p.key, p.default_text);
       out << fmt::format("  {:<34} {} [{}]\n", f.name + params, f.summary, f.source);
     }
+    out << "point generators (aapat generate, spectrum, discrepancy):\n";
+    for (const auto& g : generator_catalog())
+      out << fmt::format("  {:<27} {} [{}]\n", g.spec, g.summary, g.source);
     out << "acuity tables:\n";
     for (const auto& a : acuity_catalog()) out << fmt::format("  {:<27} {}\n", a.spec, a.summary);
   };

@@ -1,0 +1,281 @@
+// `aapat generate`, `aapat discrepancy` and `aapat spectrum`: point sets,
+// their discrepancies and their Fourier power spectra.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <random>
+#include <set>
+
+#include "analyze/discrepancy.h"
+#include "analyze/spectrum.h"
+#include "cli/commands.h"
+#include "cli/progress.h"
+#include "generate/point_generators.h"
+#include "io/line_plot.h"
+#include "io/pattern_json.h"
+#include "io/png_image.h"
+#include "io/point_set_file.h"
+
+namespace aapat {
+namespace {
+
+struct PointSource {
+  std::string source;
+  int n = 16;
+  uint64_t seed = 1;
+
+  void add_to(CLI::App* cmd) {
+    cmd->add_option("source", source, "generator spec (see `aapat list`) or a .csv / .json file")
+        ->required();
+    cmd->add_option("--n", n, "points")->capture_default_str()->check(CLI::Range(1, 1000000));
+    cmd->add_option("--seed", seed, "random seed")->capture_default_str();
+  }
+  bool is_file() const { return source.ends_with(".csv") || source.ends_with(".json"); }
+  // Realization r of the source (a file has only one).
+  std::vector<Vec2> points(int realization = 0) const {
+    if (is_file()) return load_point_set(source);
+    return generate_points(source, n, seed + static_cast<uint64_t>(realization));
+  }
+};
+
+// 1D point sets for Goss & Wu's Figure 8: n points with unit mean spacing.
+std::vector<double> points_1d(const std::string& kind, int n, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<double> xs;
+  if (kind == "jittered") {
+    for (int i = 0; i < n; ++i) xs.push_back(i + u(rng));
+  } else if (kind == "poisson") {
+    // Dart throwing on [0, n) with minimum distance 0.6 (on the circle).
+    std::set<double> placed;
+    const double d = 0.6;
+    while (static_cast<int>(placed.size()) < n) {
+      const double x = u(rng) * n;
+      auto hi = placed.lower_bound(x);
+      auto dist = [&](double a) {
+        const double t = std::abs(a - x);
+        return std::min(t, n - t);
+      };
+      bool ok = true;
+      if (hi != placed.end()) ok = ok && dist(*hi) >= d;
+      if (hi != placed.begin()) ok = ok && dist(*std::prev(hi)) >= d;
+      if (!placed.empty()) ok = ok && dist(*placed.begin()) >= d && dist(*placed.rbegin()) >= d;
+      if (ok) placed.insert(x);
+    }
+    xs.assign(placed.begin(), placed.end());
+  } else {
+    throw Error(fmt::format("--1d: '{}' is not poisson or jittered", kind));
+  }
+  return xs;
+}
+
+}  // namespace
+
+Action add_generate_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("generate", "generate a point set or a pixel pattern");
+  auto src = std::make_shared<PointSource>();
+  auto output = std::make_shared<std::string>();
+  src->add_to(cmd);
+  cmd->add_option("-o,--output", *output,
+                  "a .csv point set or a .json pattern (P(1,1,n)); default: CSV on stdout");
+  return [src, output](std::ostream& out) {
+    if (src->is_file()) throw Error("generate: give a generator, not a file");
+    const auto points = src->points();
+    if (output->empty() || *output == "-") {
+      out << point_csv(points);
+    } else if (output->ends_with(".json")) {
+      Pattern p = points_to_pattern(
+          points,
+          fmt::format("{}-{}", src->source.substr(0, src->source.find(':')), points.size()));
+      p.description = fmt::format("{} points from {}", points.size(), src->source);
+      p.provenance = {{"generator", src->source},
+                      {"n", std::to_string(points.size())},
+                      {"seed", std::to_string(src->seed)}};
+      save_pattern_file(p, *output);
+      out << fmt::format("wrote {} ({} points, {})\n", *output, points.size(), family(p));
+    } else if (output->ends_with(".csv")) {
+      write_output(*output, point_csv(points), out);
+      out << fmt::format("wrote {} ({} points)\n", *output, points.size());
+    } else {
+      throw Error(fmt::format("--output: '{}' must end in .csv or .json", *output));
+    }
+  };
+}
+
+Action add_discrepancy_command(CLI::App& app) {
+  auto* cmd =
+      app.add_subcommand("discrepancy", "L2-star, star and edge discrepancy of a point set");
+  auto src = std::make_shared<PointSource>();
+  auto json = std::make_shared<bool>(false);
+  src->add_to(cmd);
+  cmd->add_flag("--json", *json, "print JSON");
+  return [src, json](std::ostream& out) {
+    const auto points = src->points();
+    const double l2 = l2_star_discrepancy(points);
+    const StarDiscrepancy star = star_discrepancy(points);
+    const EdgeDiscrepancy edge = edge_discrepancy(points);
+    if (*json) {
+      out << nlohmann::ordered_json{{"source", src->source},
+                                    {"points", points.size()},
+                                    {"l2_star", l2},
+                                    {"star_lower", star.lower},
+                                    {"star_upper", star.upper},
+                                    {"star_exact", star.exact},
+                                    {"edge", edge.value},
+                                    {"edge_normal_deg", edge.normal_deg}}
+                 .dump(2)
+          << "\n";
+      return;
+    }
+    out << fmt::format("{} ({} points)\n  L2-star discrepancy  {:.6f}\n", src->source,
+                       points.size(), l2);
+    if (star.exact)
+      out << fmt::format("  star discrepancy     {:.6f} (exact)\n", star.upper);
+    else
+      out << fmt::format("  star discrepancy     in [{:.6f}, {:.6f}] (grid bounds)\n", star.lower,
+                         star.upper);
+    out << fmt::format("  edge discrepancy     {:.6f} (worst half-plane normal at {:g} degrees)\n",
+                       edge.value, edge.normal_deg);
+  };
+}
+
+Action add_spectrum_command(CLI::App& app) {
+  auto* cmd =
+      app.add_subcommand("spectrum", "Fourier power spectrum of a point set (2D, or 1D with --1d)");
+  struct Options {
+    PointSource src;
+    int size = 256, realizations = 1, frequencies = 131072;
+    double max_frequency = 4;
+    std::string png, csv, svg, one_d;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("source", o->src.source, "generator spec or a .csv / .json file (2D)");
+  cmd->add_option("--n", o->src.n, "points")->capture_default_str()->check(CLI::Range(1, 1000000));
+  cmd->add_option("--seed", o->src.seed, "random seed")->capture_default_str();
+  cmd->add_option("--size", o->size, "frequencies per axis, -size/2 .. size/2-1")
+      ->capture_default_str()
+      ->check(CLI::Range(8, 2048));
+  cmd->add_option("--realizations", o->realizations,
+                  "point sets averaged (seeds seed, seed+1, ...)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("-o,--output", o->png,
+                  "the 2D spectrum as a PNG (grey = power / 2, DC at the centre)");
+  cmd->add_option("--csv", o->csv, "radial average (2D) or the spectrum (1D) as CSV");
+  cmd->add_option("--svg", o->svg, "radial average (2D) or the spectrum (1D) as an SVG plot");
+  cmd->add_option("--1d", o->one_d,
+                  "Goss-Wu Fig. 8: 1D 'poisson' or 'jittered' with unit mean spacing");
+  cmd->add_option("--frequencies", o->frequencies, "1D: frequencies evaluated")
+      ->capture_default_str()
+      ->check(CLI::Range(16, 10000000));
+  cmd->add_option("--max-frequency", o->max_frequency,
+                  "1D: highest frequency, cycles per mean spacing")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 1000.0));
+  return [o](std::ostream& out) {
+    if (!o->one_d.empty()) {
+      const auto xs = points_1d(o->one_d, o->src.n, o->src.seed);
+      const auto power = power_spectrum_1d(xs, o->frequencies, o->max_frequency);
+      std::string csv = "frequency,power\n";
+      for (int k = 0; k < o->frequencies; ++k)
+        csv += fmt::format("{:.6g},{:.6g}\n", k * o->max_frequency / o->frequencies, power[k]);
+      if (!o->csv.empty()) write_output(o->csv, csv, out);
+      if (!o->svg.empty()) {
+        // Plot the mean of each bin of frequencies (an SVG of 128K points is no
+        // use), from past the DC peak's main lobe (|f| < 2 / length) on.
+        const int bins = std::min(o->frequencies, 2000);
+        const int first =
+            static_cast<int>(std::ceil(2.0 / xs.size() / o->max_frequency * o->frequencies));
+        LineSeries line{fmt::format("{} ({} points)", o->one_d, xs.size()), {}, {}};
+        for (int b = 0; b < bins; ++b) {
+          const int k0 = std::max(first, b * o->frequencies / bins),
+                    k1 = (b + 1) * o->frequencies / bins;
+          if (k1 <= k0) continue;
+          double sum = 0;
+          for (int k = k0; k < k1; ++k) sum += power[k];
+          line.x.push_back((k0 + k1) / 2.0 * o->max_frequency / o->frequencies);
+          line.y.push_back(sum / std::max(1, k1 - k0));
+        }
+        write_output(o->svg,
+                     line_plot_svg({fmt::format("1D power spectrum, {} (Goss-Wu Fig. 8)", o->one_d),
+                                    "frequency (cycles per mean spacing)",
+                                    "power",
+                                    {},
+                                    0,
+                                    o->max_frequency,
+                                    true},
+                                   {line}),
+                     out);
+      }
+      out << fmt::format("1D {}: {} points, {} frequencies up to {}\n", o->one_d, xs.size(),
+                         o->frequencies, o->max_frequency);
+      return;
+    }
+    if (o->src.source.empty()) throw Error("spectrum: give a generator or a point file (or --1d)");
+    Spectrum2D mean;
+    size_t points = 0;
+    {
+      Progress bar("spectrum");
+      const int realizations = o->src.is_file() ? 1 : o->realizations;
+      for (int r = 0; r < realizations; ++r) {
+        const auto pts = o->src.points(r);
+        points = pts.size();
+        accumulate(mean, power_spectrum(pts, o->size), 1.0 / realizations);
+        bar.update(r + 1, realizations, "");
+      }
+    }
+    const RadialProfile radial = radial_average(mean);
+    if (!o->png.empty()) {
+      if (!o->png.ends_with(".png"))
+        throw Error(fmt::format("--output: '{}' must end in .png", o->png));
+      std::vector<uint8_t> pixels(static_cast<size_t>(o->size) * o->size);
+      for (int row = 0; row < o->size; ++row)  // top row = highest v
+        for (int col = 0; col < o->size; ++col) {
+          const double p = mean.power[static_cast<size_t>(o->size - 1 - row) * o->size + col];
+          pixels[static_cast<size_t>(row) * o->size + col] =
+              static_cast<uint8_t>(std::lround(255 * std::min(1.0, p / 2)));
+        }
+      write_png_gray(o->png, o->size, o->size, pixels);
+    }
+    std::string csv = "radius,power,anisotropy_db\n";
+    for (size_t i = 0; i < radial.radius.size(); ++i)
+      csv += fmt::format("{},{:.6g},{:.4g}\n", radial.radius[i], radial.power[i],
+                         radial.anisotropy_db[i]);
+    if (!o->csv.empty()) write_output(o->csv, csv, out);
+    if (!o->svg.empty()) {
+      LineSeries line{o->src.source,
+                      {radial.radius.begin() + 1, radial.radius.end()},
+                      {radial.power.begin() + 1, radial.power.end()}};
+      write_output(
+          o->svg,
+          line_plot_svg({fmt::format("Radially averaged power, {} ({} points, {} realizations)",
+                                     o->src.source, points, o->realizations),
+                         "frequency |f|",
+                         "power",
+                         {},
+                         0,
+                         0,
+                         true},
+                        {line}),
+          out);
+    }
+    out << fmt::format(
+        "{}: {} points, {}x{} frequencies, {} realization(s); mean power {:.4f} "
+        "past |f| = {}\n",
+        o->src.source, points, o->size, o->size, o->realizations,
+        [&] {
+          double s = 0;
+          int c = 0;
+          for (size_t i = radial.radius.size() / 2; i < radial.radius.size(); ++i)
+            s += radial.power[i], ++c;
+          return c ? s / c : 0.0;
+        }(),
+        radial.radius.empty() ? 0.0 : radial.radius[radial.radius.size() / 2]);
+  };
+}
+
+}  // namespace aapat

@@ -1,0 +1,350 @@
+#include "generate/point_generators.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <random>
+
+#include "core/filter_catalog.h"
+#include "core/metric.h"
+
+namespace aapat {
+namespace {
+
+using Params = std::map<std::string, double, std::less<>>;
+
+int square_side(int n, std::string_view name) {
+  const int k = static_cast<int>(std::lround(std::sqrt(static_cast<double>(n))));
+  if (k * k != n)
+    throw Error(fmt::format("{}: n = {} must be a square number (k x k strata)", name, n));
+  return k;
+}
+
+// Distance on the unit torus, so that tiled point sets keep their spacing.
+double torus_distance(Vec2 a, Vec2 b) {
+  double dx = std::abs(a.x - b.x), dy = std::abs(a.y - b.y);
+  dx = std::min(dx, 1 - dx);
+  dy = std::min(dy, 1 - dy);
+  return std::hypot(dx, dy);
+}
+
+// The radius of the densest (hexagonal) packing of n points in the unit square.
+double packing_radius(int n) {
+  return std::sqrt(2 / (std::sqrt(3.0) * n));
+}
+
+std::vector<Vec2> poisson(int n, double radius, bool maximal, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Vec2> pts;
+  // Dart throwing with rejection; give up after many misses in a row.
+  const int patience = 1000 + 100 * n;
+  for (int misses = 0; misses < patience && (maximal || static_cast<int>(pts.size()) < n);) {
+    const Vec2 c{u(rng), u(rng)};
+    if (std::all_of(pts.begin(), pts.end(),
+                    [&](Vec2 q) { return torus_distance(q, c) >= radius; })) {
+      pts.push_back(c);
+      misses = 0;
+    } else {
+      ++misses;
+    }
+  }
+  return pts;
+}
+
+// Mitchell's best candidate, with the points binned in a grid on the torus so
+// that the nearest point to a candidate is found by searching rings of cells
+// outwards until no nearer point can remain.
+std::vector<Vec2> best_candidate(int n, double q, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  const int g = std::max(1, static_cast<int>(std::sqrt(n / 2.0)));
+  std::vector<std::vector<Vec2>> cells(g * g);
+  auto cell = [&](double v) { return std::min(g - 1, static_cast<int>(v * g)); };
+  auto nearest = [&](Vec2 c) {
+    const int cx = cell(c.x), cy = cell(c.y);
+    double best = INFINITY;
+    for (int r = 0; r <= g / 2 + 1; ++r) {
+      // Every point in ring r or beyond is at least (r - 1) / g away.
+      if ((r - 1.0) / g > best) break;
+      for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+          if (std::max(std::abs(dx), std::abs(dy)) != r) continue;
+          const auto& pts = cells[((cy + dy) % g + g) % g * g + ((cx + dx) % g + g) % g];
+          for (const Vec2& e : pts) best = std::min(best, torus_distance(e, c));
+        }
+      if (2 * r + 1 >= g) break;  // the rings have covered every cell
+    }
+    return best;
+  };
+  std::vector<Vec2> p;
+  for (int i = 0; i < n; ++i) {
+    const int tries = std::max(1, static_cast<int>(q * i));
+    Vec2 best{u(rng), u(rng)};
+    double best_d = i > 0 ? nearest(best) : 0;
+    for (int t = 1; t < tries; ++t) {
+      const Vec2 c{u(rng), u(rng)};
+      const double d = nearest(c);
+      if (d > best_d) best_d = d, best = c;
+    }
+    p.push_back(best);
+    cells[cell(best.y) * g + cell(best.x)].push_back(best);
+  }
+  return p;
+}
+
+// N-queens: of all solutions (the first 20,000 in lexicographic order past
+// N = 12), the one with the lowest E2 against Mitchell-Netravali (1/3, 1/3)
+// with the default acuity table; ties go to the first in that order.
+std::vector<Vec2> best_n_queens(int n) {
+  const auto solutions = n_queens_solutions(n, n <= 12 ? 1000000 : 20000);
+  if (solutions.empty()) throw Error(fmt::format("n-queens: there is no solution for N = {}", n));
+  const Metric metric(make_filter(kDefaultFilter), laine_aila_acuity());
+  double best = INFINITY;
+  std::vector<Vec2> best_points;
+  for (const auto& q : solutions) {
+    std::vector<Vec2> pts, local;
+    for (int r = 0; r < n; ++r) {
+      pts.push_back({(q[r] + 0.5) / n, (r + 0.5) / n});
+      local.push_back({pts.back().x - 0.5, pts.back().y - 0.5});
+    }
+    const double e2 = metric.kernel_error(make_kernel(local, std::vector<double>(n, 1.0))).e2;
+    if (e2 < best - 1e-12) {
+      best = e2;
+      best_points = pts;
+    }
+  }
+  return best_points;
+}
+
+struct Entry {
+  GeneratorInfo info;
+  std::vector<std::pair<std::string, double>> params;  // name, default (NAN: derived from n)
+  std::function<std::vector<Vec2>(int, const Params&, std::mt19937_64&)> make;
+};
+
+const std::vector<Entry>& entries() {
+  static const std::vector<Entry> kEntries = {
+      {{"regular", "k x k cell centres (n = k^2)", "regular supersampling"},
+       {},
+       [](int n, const Params&, std::mt19937_64&) {
+         const int k = square_side(n, "regular");
+         std::vector<Vec2> p;
+         for (int j = 0; j < k; ++j)
+           for (int i = 0; i < k; ++i) p.push_back({(i + 0.5) / k, (j + 0.5) / k});
+         return p;
+       }},
+      {{"random", "n independent uniform points", "Pelikan, 'random sampling'"},
+       {},
+       [](int n, const Params&, std::mt19937_64& rng) {
+         std::uniform_real_distribution<double> u(0, 1);
+         std::vector<Vec2> p(n);
+         for (auto& v : p) v = {u(rng), u(rng)};
+         return p;
+       }},
+      {{"jittered", "one uniform point in each of k x k strata (n = k^2)", "Pelikan; Cook 1986"},
+       {},
+       [](int n, const Params&, std::mt19937_64& rng) {
+         const int k = square_side(n, "jittered");
+         std::uniform_real_distribution<double> u(0, 1);
+         std::vector<Vec2> p;
+         for (int j = 0; j < k; ++j)
+           for (int i = 0; i < k; ++i) p.push_back({(i + u(rng)) / k, (j + u(rng)) / k});
+         return p;
+       }},
+      {{"semi-jittered:amount=0.5",
+        "jittered within a centred part of each stratum (amount = its side; 1 is jittered)",
+        "Pelikan, 'partial jittering'"},
+       {{"amount", 0.5}},
+       [](int n, const Params& prm, std::mt19937_64& rng) {
+         const int k = square_side(n, "semi-jittered");
+         const double a = prm.at("amount");
+         if (!(a >= 0 && a <= 1))
+           throw Error(fmt::format("semi-jittered: amount = {} is out of range [0, 1]", a));
+         std::uniform_real_distribution<double> u(-a / 2, a / 2);
+         std::vector<Vec2> p;
+         for (int j = 0; j < k; ++j)
+           for (int i = 0; i < k; ++i)
+             p.push_back({(i + 0.5 + u(rng)) / k, (j + 0.5 + u(rng)) / k});
+         return p;
+       }},
+      {{"n-rooks", "one point per row and column: a random permutation of a jittered diagonal",
+        "Shirley 1991; Pelikan"},
+       {},
+       [](int n, const Params&, std::mt19937_64& rng) {
+         std::vector<int> perm(n);
+         std::iota(perm.begin(), perm.end(), 0);
+         std::shuffle(perm.begin(), perm.end(), rng);
+         std::uniform_real_distribution<double> u(0, 1);
+         std::vector<Vec2> p;
+         for (int i = 0; i < n; ++i) p.push_back({(i + u(rng)) / n, (perm[i] + u(rng)) / n});
+         return p;
+       }},
+      {{"n-queens", "N x N grid cells, none sharing a row, column or diagonal; lowest E2 of all",
+        "Goss & Wu 2000, Sec. 3.2.2.1 (criterion: docs/generators.md)"},
+       {},
+       [](int n, const Params&, std::mt19937_64&) {
+         if (n < 1 || n > 32) throw Error(fmt::format("n-queens: N = {} is out of range 1..32", n));
+         return best_n_queens(n);
+       }},
+      {{"poisson:radius=R",
+        "dart throwing with rejection on the torus (R defaults to 0.75 x densest)",
+        "Cook 1986; Pelikan 'Poisson disk sampling'"},
+       {{"radius", NAN}},
+       [](int n, const Params& prm, std::mt19937_64& rng) {
+         const double r =
+             std::isnan(prm.at("radius")) ? 0.75 * packing_radius(n) : prm.at("radius");
+         auto p = poisson(n, r, false, rng);
+         if (static_cast<int>(p.size()) < n)
+           throw Error(
+               fmt::format("poisson: only {} of {} points fit at radius {}; use a smaller "
+                           "radius",
+                           p.size(), n, r));
+         return p;
+       }},
+      {{"poisson-maximal:radius=R", "dart throwing until no more points fit (n sets R by default)",
+        "maximal Poisson disk"},
+       {{"radius", NAN}},
+       [](int n, const Params& prm, std::mt19937_64& rng) {
+         const double r =
+             std::isnan(prm.at("radius")) ? 0.75 * packing_radius(n) : prm.at("radius");
+         return poisson(n, r, true, rng);
+       }},
+      {{"best-candidate:q=10",
+        "Mitchell's best candidate: of q x (points so far) random candidates, the farthest",
+        "Mitchell 1987; Pelikan"},
+       {{"q", 10}},
+       [](int n, const Params& prm, std::mt19937_64& rng) {
+         const double q = prm.at("q");
+         if (!(q >= 1 && q <= 1000))
+           throw Error(fmt::format("best-candidate: q = {} is out of range 1..1000", q));
+         return best_candidate(n, q, rng);
+       }},
+      {{"hammersley:b=2", "(i / n, g_b(i)), i = 0..n-1", "Pelikan 'Hammersley'"},
+       {{"b", 2}},
+       [](int n, const Params& prm, std::mt19937_64&) {
+         std::vector<Vec2> p;
+         for (int i = 0; i < n; ++i)
+           p.push_back(
+               {static_cast<double>(i) / n, radical_inverse(i, static_cast<int>(prm.at("b")))});
+         return p;
+       }},
+      {{"halton:b1=2,b2=3", "(g_b1(i), g_b2(i)), i = 1..n", "Halton 1970; Pelikan"},
+       {{"b1", 2}, {"b2", 3}},
+       [](int n, const Params& prm, std::mt19937_64&) {
+         std::vector<Vec2> p;
+         for (int i = 1; i <= n; ++i)
+           p.push_back({radical_inverse(i, static_cast<int>(prm.at("b1"))),
+                        radical_inverse(i, static_cast<int>(prm.at("b2")))});
+         return p;
+       }},
+      {{"larcher-pillichshammer", "(i / n, LP(i)): a (0, m, 2)-net for n = 2^m",
+        "Larcher & Pillichshammer 2001; Kollig & Keller 2002; Pelikan"},
+       {},
+       [](int n, const Params&, std::mt19937_64&) {
+         std::vector<Vec2> p;
+         for (int i = 0; i < n; ++i)
+           p.push_back(
+               {static_cast<double>(i) / n, larcher_pillichshammer(static_cast<uint32_t>(i))});
+         return p;
+       }},
+  };
+  return kEntries;
+}
+
+std::string base_name(const std::string& spec) {
+  return spec.substr(0, spec.find(':'));
+}
+
+}  // namespace
+
+const std::vector<GeneratorInfo>& generator_catalog() {
+  static const std::vector<GeneratorInfo> kInfo = [] {
+    std::vector<GeneratorInfo> v;
+    for (const auto& e : entries()) v.push_back(e.info);
+    return v;
+  }();
+  return kInfo;
+}
+
+double radical_inverse(uint64_t i, int base) {
+  double inv = 1.0 / base, f = inv, r = 0;
+  for (; i > 0; i /= base, f *= inv) r += f * static_cast<double>(i % base);
+  return r;
+}
+
+double larcher_pillichshammer(uint32_t i) {
+  uint32_t r = 0;
+  for (uint32_t v = 1u << 31; i; i >>= 1, v |= v >> 1)
+    if (i & 1) r ^= v;
+  return r / 4294967296.0;
+}
+
+std::vector<std::vector<int>> n_queens_solutions(int n, size_t limit) {
+  std::vector<std::vector<int>> out;
+  std::vector<int> q(n);
+  // Rows one by one; bit masks of the columns and both diagonals in use.
+  std::function<void(int, uint64_t, uint64_t, uint64_t)> place = [&](int r, uint64_t cols,
+                                                                     uint64_t d1, uint64_t d2) {
+    if (out.size() >= limit) return;
+    if (r == n) {
+      out.push_back(q);
+      return;
+    }
+    for (int c = 0; c < n; ++c) {
+      const uint64_t a = 1ULL << c, b = 1ULL << (r + c), d = 1ULL << (r - c + n);
+      if ((cols & a) || (d1 & b) || (d2 & d)) continue;
+      q[r] = c;
+      place(r + 1, cols | a, d1 | b, d2 | d);
+    }
+  };
+  place(0, 0, 0, 0);
+  return out;
+}
+
+std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed) {
+  const auto colon = spec.find(':');
+  const std::string_view name = spec.substr(0, colon);
+  const Entry* entry = nullptr;
+  for (const auto& e : entries())
+    if (base_name(e.info.spec) == name) entry = &e;
+  if (!entry) {
+    std::string known;
+    for (const auto& e : entries()) known += (known.empty() ? "" : ", ") + base_name(e.info.spec);
+    throw Error(fmt::format("unknown generator '{}': known generators are {}", name, known));
+  }
+  if (n < 1 || n > 1000000)
+    throw Error(fmt::format("{}: n = {} is out of range 1..1000000", name, n));
+  Params prm;
+  for (const auto& [k, v] : entry->params) prm[k] = v;
+  std::string_view rest =
+      colon == std::string_view::npos ? std::string_view{} : spec.substr(colon + 1);
+  while (!rest.empty()) {
+    const auto comma = rest.find(',');
+    const std::string_view item = rest.substr(0, comma);
+    rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+    const auto eq = item.find('=');
+    const std::string key(item.substr(0, eq));
+    if (eq == std::string_view::npos || !prm.contains(key))
+      throw Error(fmt::format("generator {}: unknown parameter '{}'", name, item));
+    prm[key] = parse_number(item.substr(eq + 1), fmt::format("generator {}: {}", name, key));
+  }
+  for (const char* base : {"b", "b1", "b2"})
+    if (prm.contains(base) &&
+        (prm[base] < 2 || prm[base] > 64 || prm[base] != std::floor(prm[base])))
+      throw Error(
+          fmt::format("generator {}: {} = {} must be a whole base 2..64", name, base, prm[base]));
+  std::mt19937_64 rng(seed);
+  return entry->make(n, prm, rng);
+}
+
+Pattern points_to_pattern(const std::vector<Vec2>& unit_points, std::string name) {
+  std::vector<Vec2> local;
+  for (const Vec2& p : unit_points) local.push_back({p.x - 0.5, p.y - 0.5});
+  return single_pixel_pattern(std::move(name), local,
+                              std::vector<double>(local.size(), 1.0 / local.size()));
+}
+
+}  // namespace aapat

@@ -1,0 +1,43 @@
+// Point-set generators in the unit square [0,1)^2 (Pelikan's slides; Goss &
+// Wu Sec. 3.2): regular, random, jittered, semi-jittered, N-rooks, N-queens,
+// Poisson disk (and its maximal variant), Mitchell's best candidate,
+// Hammersley, Halton and Larcher-Pillichshammer. Each takes a seed (the
+// deterministic ones ignore it); specs read like `halton:b1=2,b2=3`.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/geometry.h"
+#include "core/pattern.h"
+
+namespace aapat {
+
+struct GeneratorInfo {
+  std::string spec;  // with its parameters and defaults
+  std::string summary;
+  std::string source;
+};
+const std::vector<GeneratorInfo>& generator_catalog();
+
+// n points in [0,1)^2 by the generator `spec`; throws Error naming the
+// generator, parameter or n that does not fit.
+std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed);
+
+// The radical inverse g_b(i) of Pelikan's slides: the base-b digits of i
+// mirrored about the radix point.
+double radical_inverse(uint64_t i, int base);
+// Larcher-Pillichshammer's inverse: i's bits through the all-ones upper
+// triangular matrix (XOR instead of the sum), a (0, m, 2)-net with i / 2^m.
+double larcher_pillichshammer(uint32_t i);
+
+// Every N-queens placement on an N x N grid (row r holds column q[r]),
+// in lexicographic order, at most `limit` of them.
+std::vector<std::vector<int>> n_queens_solutions(int n, size_t limit);
+
+// One pixel's pattern (P(1,1,n), equal weights) from points in [0,1)^2.
+Pattern points_to_pattern(const std::vector<Vec2>& unit_points, std::string name);
+
+}  // namespace aapat
