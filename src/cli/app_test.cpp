@@ -383,3 +383,25 @@ TEST(CliPoints, SpectrumWritesImageRadialProfileAndOneDimensionalPlot) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+TEST(CliPoints, TilesAndOneDimensionalComparison) {
+  const std::string json = temp_path("tile.json"), csv = temp_path("f8.csv");
+  CliRun r = run({"generate", "jittered", "--n", "4", "--tile", "2", "-o", json});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("P(4,1,4)"), std::string::npos) << r.out;
+  EXPECT_EQ(run({"eval", json}).code, 0);
+  r = run(
+      {"spectrum", "--1d", "poisson,jittered", "--n", "300", "--frequencies", "64", "--csv", csv});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::istringstream lines(slurp(csv));
+  std::string header;
+  std::getline(lines, header);
+  EXPECT_EQ(header, "frequency,poisson,jittered");
+  EXPECT_EQ(run({"generate", "jittered", "--n", "4", "--tile", "2"}).code, 1);
+}
+
+}  // namespace
+}  // namespace aapat

@@ -79,11 +79,29 @@ Action add_generate_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("generate", "generate a point set or a pixel pattern");
   auto src = std::make_shared<PointSource>();
   auto output = std::make_shared<std::string>();
+  auto tile = std::make_shared<int>(0);
   src->add_to(cmd);
   cmd->add_option("-o,--output", *output,
                   "a .csv point set or a .json pattern (P(1,1,n)); default: CSV on stdout");
-  return [src, output](std::ostream& out) {
+  cmd->add_option(
+      "--tile", *tile,
+      "with a .json output: a K x K tile of pixel sets, each generated anew: P(K^2,1,n)");
+  return [src, output, tile](std::ostream& out) {
     if (src->is_file()) throw Error("generate: give a generator, not a file");
+    if (*tile > 0) {
+      if (!output->ends_with(".json"))
+        throw Error("--tile: write the tile as a pattern file (-o file.json)");
+      Pattern p = tile_pattern(src->source, src->n, src->seed, *tile);
+      p.description = fmt::format("{} x {} tile of {} points per pixel from {}", *tile, *tile,
+                                  src->n, src->source);
+      p.provenance = {{"generator", src->source},
+                      {"n", std::to_string(src->n)},
+                      {"seed", std::to_string(src->seed)},
+                      {"tile", std::to_string(*tile)}};
+      save_pattern_file(p, *output);
+      out << fmt::format("wrote {} ({})\n", *output, family(p));
+      return;
+    }
     const auto points = src->points();
     if (output->empty() || *output == "-") {
       out << point_csv(points);
@@ -178,19 +196,27 @@ Action add_spectrum_command(CLI::App& app) {
       ->check(CLI::Range(0.01, 1000.0));
   return [o](std::ostream& out) {
     if (!o->one_d.empty()) {
-      const auto xs = points_1d(o->one_d, o->src.n, o->src.seed);
-      const auto power = power_spectrum_1d(xs, o->frequencies, o->max_frequency);
-      std::string csv = "frequency,power\n";
-      for (int k = 0; k < o->frequencies; ++k)
-        csv += fmt::format("{:.6g},{:.6g}\n", k * o->max_frequency / o->frequencies, power[k]);
-      if (!o->csv.empty()) write_output(o->csv, csv, out);
-      if (!o->svg.empty()) {
+      // One curve per kind in a comma list, in one table and one plot.
+      std::vector<std::string> kinds;
+      for (std::string_view rest = o->one_d; !rest.empty();) {
+        const auto comma = rest.find(',');
+        kinds.emplace_back(rest.substr(0, comma));
+        rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+      }
+      std::vector<std::vector<double>> powers;
+      std::vector<LineSeries> lines;
+      size_t count = 0;
+      for (const auto& kind : kinds) {
+        const auto xs = points_1d(kind, o->src.n, o->src.seed);
+        count = xs.size();
+        powers.push_back(power_spectrum_1d(xs, o->frequencies, o->max_frequency));
+        const auto& power = powers.back();
         // Plot the mean of each bin of frequencies (an SVG of 128K points is no
         // use), from past the DC peak's main lobe (|f| < 2 / length) on.
         const int bins = std::min(o->frequencies, 2000);
         const int first =
             static_cast<int>(std::ceil(2.0 / xs.size() / o->max_frequency * o->frequencies));
-        LineSeries line{fmt::format("{} ({} points)", o->one_d, xs.size()), {}, {}};
+        LineSeries line{fmt::format("{} ({} points)", kind, xs.size()), {}, {}};
         for (int b = 0; b < bins; ++b) {
           const int k0 = std::max(first, b * o->frequencies / bins),
                     k1 = (b + 1) * o->frequencies / bins;
@@ -200,18 +226,30 @@ Action add_spectrum_command(CLI::App& app) {
           line.x.push_back((k0 + k1) / 2.0 * o->max_frequency / o->frequencies);
           line.y.push_back(sum / std::max(1, k1 - k0));
         }
-        write_output(o->svg,
-                     line_plot_svg({fmt::format("1D power spectrum, {} (Goss-Wu Fig. 8)", o->one_d),
-                                    "frequency (cycles per mean spacing)",
-                                    "power",
-                                    {},
-                                    0,
-                                    o->max_frequency,
-                                    true},
-                                   {line}),
-                     out);
+        lines.push_back(std::move(line));
       }
-      out << fmt::format("1D {}: {} points, {} frequencies up to {}\n", o->one_d, xs.size(),
+      std::string csv = "frequency";
+      for (const auto& kind : kinds) csv += "," + kind;
+      csv += "\n";
+      for (int k = 0; k < o->frequencies; ++k) {
+        csv += fmt::format("{:.6g}", k * o->max_frequency / o->frequencies);
+        for (const auto& power : powers) csv += fmt::format(",{:.6g}", power[k]);
+        csv += "\n";
+      }
+      if (!o->csv.empty()) write_output(o->csv, csv, out);
+      if (!o->svg.empty())
+        write_output(
+            o->svg,
+            line_plot_svg({fmt::format("1D power spectra, {} points (Goss-Wu Fig. 8)", count),
+                           "frequency (cycles per mean spacing)",
+                           "power",
+                           {},
+                           0,
+                           o->max_frequency,
+                           true},
+                          lines),
+            out);
+      out << fmt::format("1D {}: {} points, {} frequencies up to {}\n", o->one_d, count,
                          o->frequencies, o->max_frequency);
       return;
     }

@@ -1,15 +1,13 @@
 #include "core/gradient.h"
 
+#include "core/metric.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <vector>
 
 namespace aapat {
-namespace {
-constexpr size_t kPairwiseLimit = 24;
-}
-
 double e1_squared_gradient(const Filter& filter, std::span<const double> p,
                            std::span<const double> w, std::span<double> dp, std::span<double> dw) {
   const size_t n = p.size();

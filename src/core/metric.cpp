@@ -8,13 +8,6 @@
 #include <numeric>
 
 namespace aapat {
-namespace {
-
-// Kernels up to this size use the pairwise sum; larger ones sort in O(N log N).
-constexpr size_t kPairwiseLimit = 24;
-
-}  // namespace
-
 double e1_squared(const Filter& filter, std::span<const double> p, std::span<const double> w) {
   const size_t n = p.size();
   double moment = 0;

@@ -25,6 +25,9 @@
 
 namespace aapat {
 
+// Kernels up to this size sum over pairs; larger ones sort, O(N log N).
+inline constexpr size_t kPairwiseLimit = 24;
+
 // E1^2 of a 1D pattern whose weights sum to 1, in closed form.
 double e1_squared(const Filter& filter, std::span<const double> p, std::span<const double> w);
 // The same integral, sorted and integrated piece by piece with the filter's

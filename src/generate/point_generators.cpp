@@ -347,4 +347,34 @@ Pattern points_to_pattern(const std::vector<Vec2>& unit_points, std::string name
                               std::vector<double>(local.size(), 1.0 / local.size()));
 }
 
+uint64_t seed_for_pixel(uint64_t seed, int x, int y) {
+  uint64_t h = seed ^ 0x9e3779b97f4a7c15ULL;
+  for (uint64_t v : {static_cast<uint64_t>(static_cast<uint32_t>(x)),
+                     static_cast<uint64_t>(static_cast<uint32_t>(y))}) {
+    h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    h = (h ^ (h >> 31)) * 0xbf58476d1ce4e5b9ULL;  // SplitMix64 finalizer
+    h ^= h >> 29;
+  }
+  return h;
+}
+
+std::vector<Vec2> pixel_points(std::string_view spec, int n, uint64_t seed, int x, int y) {
+  std::vector<Vec2> p = generate_points(spec, n, seed_for_pixel(seed, x, y));
+  for (Vec2& v : p) v = {v.x - 0.5, v.y - 0.5};
+  return p;
+}
+
+Pattern tile_pattern(std::string_view spec, int n, uint64_t seed, int k) {
+  if (k < 1 || k > 32) throw Error(fmt::format("--tile: {} is out of range 1..32", k));
+  Pattern p;
+  p.name = fmt::format("{}-{}x{}-tile", spec.substr(0, spec.find(':')), k, k);
+  p.tile_w = p.tile_h = k;
+  for (int y = 0; y < k; ++y)
+    for (int x = 0; x < k; ++x) {
+      p.sets.push_back(pixel_points(spec, n, seed, x, y));
+      p.weights.push_back(std::vector<double>(p.sets.back().size(), 1.0 / p.sets.back().size()));
+    }
+  return p;
+}
+
 }  // namespace aapat

@@ -40,4 +40,14 @@ std::vector<std::vector<int>> n_queens_solutions(int n, size_t limit);
 // One pixel's pattern (P(1,1,n), equal weights) from points in [0,1)^2.
 Pattern points_to_pattern(const std::vector<Vec2>& unit_points, std::string name);
 
+// A k x k tile of independently generated pixel sets: P(k^2, 1, n), equal
+// weights; pixel (x, y) draws from seed_for_pixel(seed, x, y).
+Pattern tile_pattern(std::string_view spec, int n, uint64_t seed, int k);
+
+// The pattern of any pixel of an image, in its local frame [-0.5, 0.5)^2,
+// for per-pixel jittered (or any generator's) sampling: the same seed and
+// pixel give the same points, in any order of pixels or threads.
+std::vector<Vec2> pixel_points(std::string_view spec, int n, uint64_t seed, int x, int y);
+uint64_t seed_for_pixel(uint64_t seed, int x, int y);
+
 }  // namespace aapat

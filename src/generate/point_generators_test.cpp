@@ -190,3 +190,25 @@ RC_GTEST_PROP(Generators, BestCandidateMatchesBruteForce, ()) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+TEST(Generators, PixelPointsDependOnlyOnSeedAndPixel) {
+  const auto a = pixel_points("jittered", 4, 7, 10, 3);
+  EXPECT_EQ(a, pixel_points("jittered", 4, 7, 10, 3));
+  EXPECT_NE(a, pixel_points("jittered", 4, 7, 3, 10));
+  EXPECT_NE(a, pixel_points("jittered", 4, 8, 10, 3));
+  for (const Vec2& v : a) EXPECT_TRUE(v.x >= -0.5 && v.x < 0.5 && v.y >= -0.5 && v.y < 0.5);
+}
+
+TEST(Generators, TilePatternIsAValidPs1n) {
+  const Pattern p = tile_pattern("n-rooks", 3, 5, 2);
+  EXPECT_NO_THROW(validate(p));
+  EXPECT_EQ(family(p), "P(4,1,3)");
+  EXPECT_EQ(p.sets[1], pixel_points("n-rooks", 3, 5, 1, 0));
+  EXPECT_THROW(tile_pattern("n-rooks", 3, 5, 0), Error);
+}
+
+}  // namespace
+}  // namespace aapat
