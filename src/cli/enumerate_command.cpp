@@ -13,6 +13,7 @@
 #include "cli/metric_options.h"
 #include "cli/progress.h"
 #include "core/filter_catalog.h"
+#include "core/text.h"
 #include "generate/enumerate.h"
 #include "io/pattern_json.h"
 #include "io/pattern_svg.h"
@@ -54,12 +55,7 @@ Action add_enumerate_command(CLI::App& app) {
 
   return [o](std::ostream& out) {
     std::vector<double> costs;
-    std::string_view rest = o->costs;
-    while (!rest.empty()) {
-      const auto comma = rest.find(',');
-      costs.push_back(parse_number(rest.substr(0, comma), "--cost"));
-      rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
-    }
+    for (std::string_view c : split(o->costs)) costs.push_back(parse_number(c, "--cost"));
     const EnumerationRules rules{o->max_per_edge, o->cull_one_edge};
     struct Row {
       int id;

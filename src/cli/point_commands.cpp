@@ -14,6 +14,7 @@
 #include "analyze/spectrum.h"
 #include "cli/commands.h"
 #include "cli/progress.h"
+#include "core/text.h"
 #include "generate/point_generators.h"
 #include "io/line_plot.h"
 #include "io/pattern_json.h"
@@ -198,11 +199,7 @@ Action add_spectrum_command(CLI::App& app) {
     if (!o->one_d.empty()) {
       // One curve per kind in a comma list, in one table and one plot.
       std::vector<std::string> kinds;
-      for (std::string_view rest = o->one_d; !rest.empty();) {
-        const auto comma = rest.find(',');
-        kinds.emplace_back(rest.substr(0, comma));
-        rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
-      }
+      for (std::string_view k : split(o->one_d)) kinds.emplace_back(trim(k));
       std::vector<std::vector<double>> powers;
       std::vector<LineSeries> lines;
       size_t count = 0;

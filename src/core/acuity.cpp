@@ -8,6 +8,7 @@
 
 #include "core/filter_catalog.h"
 #include "core/geometry.h"
+#include "core/text.h"
 
 namespace aapat {
 
@@ -93,11 +94,7 @@ AcuityTable make_acuity(std::string_view spec) {
   if ((kind == "uniform" || kind == "linear") && colon != std::string_view::npos) {
     double step = 0, weight = 1;
     bool has_step = false;
-    std::string_view rest = spec.substr(colon + 1);
-    while (!rest.empty()) {
-      const auto comma = rest.find(',');
-      const std::string_view item = rest.substr(0, comma);
-      rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+    for (const std::string_view item : split(spec.substr(colon + 1))) {
       const auto eq = item.find('=');
       const std::string_view key = item.substr(0, eq);
       if (eq == std::string_view::npos ||

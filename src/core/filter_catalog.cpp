@@ -8,6 +8,7 @@
 #include <map>
 
 #include "core/geometry.h"
+#include "core/text.h"
 
 namespace aapat {
 namespace {
@@ -114,12 +115,6 @@ const std::vector<FilterEntry>& entries() {
   return kEntries;
 }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
 double parse_plain(std::string_view text, std::string_view what, std::string_view whole_text) {
   double v = 0;
   const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
@@ -169,11 +164,8 @@ Filter make_filter(std::string_view spec) {
     values[p.key] = parse_number(p.default_text, p.key);
   }
   if (colon != std::string_view::npos) {
-    std::string_view rest = spec.substr(colon + 1);
-    while (!rest.empty()) {
-      const auto comma = rest.find(',');
-      const std::string_view item = trim(rest.substr(0, comma));
-      rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+    for (std::string_view item : split(spec.substr(colon + 1))) {
+      item = trim(item);
       const auto eq = item.find('=');
       const std::string_view key = trim(item.substr(0, eq));
       if (eq == std::string_view::npos || !texts.contains(key)) {

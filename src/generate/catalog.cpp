@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/filter_catalog.h"
+#include "core/text.h"
 
 namespace aapat {
 
@@ -40,14 +41,10 @@ Pattern msaa_pattern(int count) {
   std::string line;
   std::getline(in, line);  // header
   while (std::getline(in, line)) {
-    int v[4];
-    std::string_view rest(line);
-    for (int i = 0; i < 4; ++i) {
-      const auto comma = rest.find(',');
-      const auto field = rest.substr(0, comma);
-      std::from_chars(field.data(), field.data() + field.size(), v[i]);
-      rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
-    }
+    int v[4] = {};
+    const auto fields = split(line);
+    for (size_t i = 0; i < 4 && i < fields.size(); ++i)
+      std::from_chars(fields[i].data(), fields[i].data() + fields[i].size(), v[i]);
     if (v[0] == count) samples.push_back({v[2] / 16.0, -v[3] / 16.0});
   }
   return one_pixel(fmt::format("msaa-{}", count), samples);

@@ -11,6 +11,7 @@
 
 #include "core/filter_catalog.h"
 #include "core/metric.h"
+#include "core/text.h"
 
 namespace aapat {
 namespace {
@@ -319,12 +320,8 @@ std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed) {
     throw Error(fmt::format("{}: n = {} is out of range 1..1000000", name, n));
   Params prm;
   for (const auto& [k, v] : entry->params) prm[k] = v;
-  std::string_view rest =
-      colon == std::string_view::npos ? std::string_view{} : spec.substr(colon + 1);
-  while (!rest.empty()) {
-    const auto comma = rest.find(',');
-    const std::string_view item = rest.substr(0, comma);
-    rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+  for (const std::string_view item :
+       split(colon == std::string_view::npos ? std::string_view{} : spec.substr(colon + 1))) {
     const auto eq = item.find('=');
     const std::string key(item.substr(0, eq));
     if (eq == std::string_view::npos || !prm.contains(key))

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/filter_catalog.h"
+#include "core/text.h"
 
 namespace aapat {
 namespace {
@@ -42,12 +43,6 @@ Site parse_site(std::string_view text) {
       "--placement: unknown site '{}' (sites are inside, left, right, bottom, top, bottom-left, "
       "bottom-right, top-left, top-right)",
       text));
-}
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
-  while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
-  return s;
 }
 
 uint64_t splitmix(uint64_t x) {
@@ -160,12 +155,7 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
                       family, spec.n));
     spec.sites.assign(static_cast<size_t>(spec.n), Site::kInside);
   } else {
-    std::string_view rest = placement;
-    while (!rest.empty()) {
-      const auto comma = rest.find(',');
-      spec.sites.push_back(parse_site(trim(rest.substr(0, comma))));
-      rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
-    }
+    for (std::string_view site : split(placement)) spec.sites.push_back(parse_site(trim(site)));
   }
   const bool on_border =
       std::any_of(spec.sites.begin(), spec.sites.end(), [](Site x) { return x != Site::kInside; });
