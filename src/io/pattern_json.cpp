@@ -105,6 +105,11 @@ Pattern pattern_from_json(std::string_view text, std::string_view source) {
   if (!tile.is_array() || tile.size() != 2 || !tile[0].is_number_integer() ||
       !tile[1].is_number_integer())
     fail(source, "tile: expected [width, height] in pixels");
+  // Range-check before narrowing: a huge integer must not wrap into a valid size.
+  for (int i = 0; i < 2; ++i)
+    if (tile[i].get<long long>() < 0 || tile[i].get<long long>() > 1'000'000)
+      fail(source, fmt::format("tile: {}x{} is not a tile size: each side must be 1 to 128 pixels",
+                               tile[0].dump(), tile[1].dump()));
   p.tile_w = tile[0].get<int>();
   p.tile_h = tile[1].get<int>();
   if (!doc["footprint"].is_string()) fail(source, "footprint: expected a string such as \"1+\"");

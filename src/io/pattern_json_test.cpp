@@ -89,6 +89,9 @@ TEST(PatternJson, RejectsMalformedFilesNamingTheField) {
   expect_error(with(m, "\"footprint\": \"1\"", "\"footprint\": \"3x3\""),
                "pattern file p.json: footprint: '3x3' is not one of 1, 1+, 2x2, 2x2+, 4x4, 4x4+ "
                "(or r = 4, 16 with optional +)");
+  expect_error(with(m, "[1, 1]", "[4294967297, 1]"),
+               "pattern file p.json: tile: 4294967297x1 is not a tile size: each side must be 1 to "
+               "128 pixels");
   expect_error(with(m, "[[[0, 0]]]", "[[[0, 0, 0]]]"),
                "pattern file p.json: sets[0][0]: expected [x, y]");
   expect_error(with(m, "[[[0, 0]]]", "[[[0, \"a\"]]]"),
