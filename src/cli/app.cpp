@@ -38,6 +38,7 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   add(add_generate_command);
   add(add_discrepancy_command);
   add(add_spectrum_command);
+  add(add_render_command);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -405,3 +405,35 @@ TEST(CliPoints, TilesAndOneDimensionalComparison) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+TEST(CliRender, ImageErrorImageAndHistogram) {
+  const std::string png = temp_path("r.png"), err = temp_path("e.png"), hist = temp_path("h.csv");
+  CliRun r = run({"render", "circles", "--pattern", "hasselgren-f", "--size", "32x32", "-o", png,
+                  "--error", err, "--histogram", hist, "--reference-samples", "64"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("2 samples per pixel"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("RMSE"), std::string::npos);
+  EXPECT_EQ(slurp(png).substr(1, 3), "PNG");
+  EXPECT_EQ(slurp(err).substr(1, 3), "PNG");
+  std::istringstream lines(slurp(hist));
+  std::string header;
+  std::getline(lines, header);
+  EXPECT_EQ(header, "deviation,count,contribution");
+  r = run({"render", "spiral", "--generator", "jittered", "--samples", "4", "--filter",
+           "gaussian-half", "--size", "16x16", "--json", "--reference-samples", "16"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto js = nlohmann::json::parse(r.out);
+  EXPECT_GE(js["rmse"].get<double>(), 0.0);
+  EXPECT_EQ(js["samples_per_pixel"], 4.0);
+  r = run({"render", "teapot", "--pattern", "rgss"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("unknown scene 'teapot'"), std::string::npos) << r.err;
+  EXPECT_EQ(run({"render", "circles", "--generator", "jittered"}).code, 1);  // needs a filter
+  EXPECT_EQ(run({"render", "circles", "--pattern", "rgss", "--size", "0x5"}).code, 1);
+}
+
+}  // namespace
+}  // namespace aapat

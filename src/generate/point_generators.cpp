@@ -305,9 +305,9 @@ std::vector<std::vector<int>> n_queens_solutions(int n, size_t limit) {
   return out;
 }
 
-std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed) {
+PointGenerator make_point_generator(std::string_view spec) {
   const auto colon = spec.find(':');
-  const std::string_view name = spec.substr(0, colon);
+  const std::string name(spec.substr(0, colon));
   const Entry* entry = nullptr;
   for (const auto& e : entries())
     if (base_name(e.info.spec) == name) entry = &e;
@@ -316,8 +316,6 @@ std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed) {
     for (const auto& e : entries()) known += (known.empty() ? "" : ", ") + base_name(e.info.spec);
     throw Error(fmt::format("unknown generator '{}': known generators are {}", name, known));
   }
-  if (n < 1 || n > 1000000)
-    throw Error(fmt::format("{}: n = {} is out of range 1..1000000", name, n));
   Params prm;
   for (const auto& [k, v] : entry->params) prm[k] = v;
   for (const std::string_view item :
@@ -333,8 +331,16 @@ std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed) {
         (prm[base] < 2 || prm[base] > 64 || prm[base] != std::floor(prm[base])))
       throw Error(
           fmt::format("generator {}: {} = {} must be a whole base 2..64", name, base, prm[base]));
-  std::mt19937_64 rng(seed);
-  return entry->make(n, prm, rng);
+  return [entry, prm, name](int n, uint64_t seed) {
+    if (n < 1 || n > 1000000)
+      throw Error(fmt::format("{}: n = {} is out of range 1..1000000", name, n));
+    std::mt19937_64 rng(seed);
+    return entry->make(n, prm, rng);
+  };
+}
+
+std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed) {
+  return make_point_generator(spec)(n, seed);
 }
 
 Pattern points_to_pattern(const std::vector<Vec2>& unit_points, std::string name) {
@@ -356,7 +362,12 @@ uint64_t seed_for_pixel(uint64_t seed, int x, int y) {
 }
 
 std::vector<Vec2> pixel_points(std::string_view spec, int n, uint64_t seed, int x, int y) {
-  std::vector<Vec2> p = generate_points(spec, n, seed_for_pixel(seed, x, y));
+  return pixel_points(make_point_generator(spec), n, seed, x, y);
+}
+
+std::vector<Vec2> pixel_points(const PointGenerator& generator, int n, uint64_t seed, int x,
+                               int y) {
+  std::vector<Vec2> p = generator(n, seed_for_pixel(seed, x, y));
   for (Vec2& v : p) v = {v.x - 0.5, v.y - 0.5};
   return p;
 }

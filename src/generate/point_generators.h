@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +26,11 @@ const std::vector<GeneratorInfo>& generator_catalog();
 // n points in [0,1)^2 by the generator `spec`; throws Error naming the
 // generator, parameter or n that does not fit.
 std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed);
+
+// The generator `spec` with its parameters parsed once, for drawing many
+// point sets (the renderer draws one per pixel).
+using PointGenerator = std::function<std::vector<Vec2>(int n, uint64_t seed)>;
+PointGenerator make_point_generator(std::string_view spec);
 
 // The radical inverse g_b(i) of Pelikan's slides: the base-b digits of i
 // mirrored about the radix point.
@@ -48,6 +54,7 @@ Pattern tile_pattern(std::string_view spec, int n, uint64_t seed, int k);
 // for per-pixel jittered (or any generator's) sampling: the same seed and
 // pixel give the same points, in any order of pixels or threads.
 std::vector<Vec2> pixel_points(std::string_view spec, int n, uint64_t seed, int x, int y);
+std::vector<Vec2> pixel_points(const PointGenerator& generator, int n, uint64_t seed, int x, int y);
 uint64_t seed_for_pixel(uint64_t seed, int x, int y);
 
 }  // namespace aapat

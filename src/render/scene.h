@@ -1,0 +1,59 @@
+// Analytic test scenes: a grey level in [0, 1] at any point of the image
+// plane, exactly, so that any sampling can be compared with any other.
+//
+// Image coordinates: pixel (i, j) is [i - 1/2, i + 1/2] x [j - 1/2, j + 1/2],
+// its centre (i, j); x grows right and y up, row 0 at the bottom.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "core/geometry.h"
+
+namespace aapat {
+
+struct HalfPlaneScene {  // white where p . n <= offset, n = (cos a, sin a)
+  Vec2 origin;
+  double angle_deg = 30, offset = 0;
+};
+struct CheckerboardScene {  // Goss & Wu Sec. 3.1: infinite flat-shaded checkerboard in perspective
+  double width = 256, height = 256;
+  double horizon = 0.8;      // horizon row as a fraction of the height
+  double focal = 1.0;        // focal length in image widths
+  double eye_height = 1;     // camera height over the plane, in squares
+  double rotation_deg = 20;  // the board's rotation about the vertical
+};
+struct CirclesScene {  // Laine-Aila Fig. 7: white discs of growing radius on black
+  double width = 256, height = 256;
+  int count = 12;
+};
+struct SliverScene {  // Hasselgren Fig. 4: a thin triangle, thinner than a pixel at its tip
+  Vec2 a{8, 10}, b{250, 40}, c{250, 52};
+};
+struct SpiralScene {  // Hasselgren Fig. 5: a white spiral arm on black
+  Vec2 centre{128, 128};
+  double turns = 6, max_radius = 120, arm = 0.35;  // arm: white fraction of each turn
+};
+struct ZonePlateScene {  // 0.5 + 0.5 cos(pi k r^2): frequency grows with radius
+  Vec2 centre{128, 128};
+  double k = 0.004;
+};
+
+using Scene = std::variant<HalfPlaneScene, CheckerboardScene, CirclesScene, SliverScene,
+                           SpiralScene, ZonePlateScene>;
+
+// The grey level of the scene at p.
+double shade(const Scene& scene, Vec2 p);
+
+// `checkerboard`, `circles`, `sliver`, `spiral`, `zoneplate` or
+// `halfplane:angle=30,offset=0`, laid out for a width x height image.
+Scene make_scene(std::string_view spec, int width, int height);
+
+struct SceneInfo {
+  std::string spec, summary;
+};
+const std::vector<SceneInfo>& scene_catalog();
+
+}  // namespace aapat
