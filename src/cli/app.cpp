@@ -39,6 +39,8 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   add(add_discrepancy_command);
   add(add_spectrum_command);
   add(add_render_command);
+  add(add_animate_command);
+  add(add_table2_command);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -437,3 +437,31 @@ TEST(CliRender, ImageErrorImageAndHistogram) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// Hasselgren Table 2's ordering on a small translating circle: centroid
+// sampling deviates most, FLIPQUAD (scheme F) least of these three.
+TEST(CliAnimate, TranslatingCircleOrdersThePatternsAsThePaper) {
+  auto rmse = [](const char* pattern) {
+    const CliRun r = run({"animate", "circle", "--pattern", pattern, "--size", "24", "--frames",
+                          "6", "--reference-samples", "64", "--json"});
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(r.out)["rmse"].get<double>();
+  };
+  const double centroid = rmse("centroid"), fliptri = rmse("hasselgren-a"),
+               flipquad = rmse("hasselgren-f");
+  EXPECT_GT(centroid, fliptri);
+  EXPECT_GT(fliptri, flipquad);
+  const std::string dir = temp_path("frames");
+  ASSERT_EQ(run({"animate", "triangle", "--pattern", "rgss", "--size", "16", "--frames", "3",
+                 "--reference-samples", "16", "--frames-dir", dir})
+                .code,
+            0);
+  EXPECT_TRUE(fs::exists(dir + "/frame-0002.png"));
+  EXPECT_EQ(run({"animate", "square", "--pattern", "rgss"}).code, 1);
+}
+
+}  // namespace
+}  // namespace aapat

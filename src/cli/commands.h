@@ -21,6 +21,8 @@ Action add_generate_command(CLI::App& app);
 Action add_discrepancy_command(CLI::App& app);
 Action add_spectrum_command(CLI::App& app);
 Action add_render_command(CLI::App& app);
+Action add_animate_command(CLI::App& app);
+Action add_table2_command(CLI::App& app);
 
 // Writes `content` to `path` whole or not at all; "-" writes to `out`.
 void write_output(const std::string& path, const std::string& content, std::ostream& out);

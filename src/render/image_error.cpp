@@ -29,13 +29,17 @@ ImageError compare(const Image& image, const Image& reference) {
     ++e.count[i];
     e.max_deviation = std::max(e.max_deviation, i);
   }
+  summarize(e, n);
+  return e;
+}
+
+void summarize(ImageError& e, double pixels) {
   double sum = 0;
   for (int i = 0; i < 256; ++i) {
-    e.contribution[i] = e.count[i] * double(i) * i / n;
+    e.contribution[i] = e.count[i] * double(i) * i / pixels;
     sum += e.contribution[i];
   }
   e.rmse = std::sqrt(sum);
-  return e;
 }
 
 std::vector<uint8_t> error_pixels(const Image& image, const Image& reference) {

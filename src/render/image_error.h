@@ -21,6 +21,8 @@ struct ImageError {
 };
 
 ImageError compare(const Image& image, const Image& reference);
+// Fills contribution and rmse from count, over `pixels` deviations in all.
+void summarize(ImageError& e, double pixels);
 std::vector<uint8_t> error_pixels(const Image& image, const Image& reference);  // rows top-down
 std::vector<uint8_t> grey_pixels(const Image& image);                           // rows top-down
 

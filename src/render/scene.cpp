@@ -74,6 +74,10 @@ double shade(const Scene& scene, Vec2 p) {
             const double phase = std::atan2(dy, dx) / (2 * kPi) - r * s.turns / s.max_radius;
             return phase - std::floor(phase) < s.arm ? 1.0 : 0.0;
           },
+          [&](const DiscScene& s) {
+            return std::hypot(p.x - s.centre.x, p.y - s.centre.y) <= s.radius ? 1.0 : 0.0;
+          },
+          [&](const TriangleScene& s) { return in_triangle(p, s.a, s.b, s.c) ? 1.0 : 0.0; },
           [&](const ZonePlateScene& s) {
             const double r2 =
                 (p.x - s.centre.x) * (p.x - s.centre.x) + (p.y - s.centre.y) * (p.y - s.centre.y);
@@ -111,6 +115,24 @@ Scene make_scene(std::string_view spec, int width, int height) {
   std::string known;
   for (const auto& s : scene_catalog()) known += (known.empty() ? "" : ", ") + s.spec;
   throw Error(fmt::format("unknown scene '{}': known scenes are {}", name, known));
+}
+
+Scene animation_frame(std::string_view animation, int width, int height, int frame, int frames) {
+  const double t = frames > 1 ? double(frame) / frames : 0.0;
+  const Vec2 centre{(width - 1) / 2.0, (height - 1) / 2.0};
+  const double size = std::min(width, height);
+  if (animation == "circle")
+    // Sub-pixel steps along a shallow diagonal: every edge angle meets every phase.
+    return DiscScene{{centre.x + 5 * t - 2.5, centre.y + 2 * t - 1}, 0.3 * size};
+  if (animation == "triangle") {
+    const double a = 2 * kPi * t, r = 0.4 * size;
+    auto corner = [&](double phase) {
+      return Vec2{centre.x + r * std::cos(a + phase), centre.y + r * std::sin(a + phase)};
+    };
+    return TriangleScene{corner(0), corner(2.3), corner(4.1)};  // a scalene triangle
+  }
+  throw Error(
+      fmt::format("unknown animation '{}': known animations are circle, triangle", animation));
 }
 
 const std::vector<SceneInfo>& scene_catalog() {

@@ -36,13 +36,20 @@ struct SpiralScene {  // Hasselgren Fig. 5: a white spiral arm on black
   Vec2 centre{128, 128};
   double turns = 6, max_radius = 120, arm = 0.35;  // arm: white fraction of each turn
 };
+struct DiscScene {  // Hasselgren Sec. 6.1: the translating circle
+  Vec2 centre{64, 64};
+  double radius = 20;
+};
+struct TriangleScene {  // Hasselgren Sec. 6.1: the rotating triangle
+  Vec2 a, b, c;
+};
 struct ZonePlateScene {  // 0.5 + 0.5 cos(pi k r^2): frequency grows with radius
   Vec2 centre{128, 128};
   double k = 0.004;
 };
 
 using Scene = std::variant<HalfPlaneScene, CheckerboardScene, CirclesScene, SliverScene,
-                           SpiralScene, ZonePlateScene>;
+                           SpiralScene, ZonePlateScene, DiscScene, TriangleScene>;
 
 // The grey level of the scene at p.
 double shade(const Scene& scene, Vec2 p);
@@ -50,6 +57,11 @@ double shade(const Scene& scene, Vec2 p);
 // `checkerboard`, `circles`, `sliver`, `spiral`, `zoneplate` or
 // `halfplane:angle=30,offset=0`, laid out for a width x height image.
 Scene make_scene(std::string_view spec, int width, int height);
+
+// Frame f of `frames` of an animation: `circle` (a disc of radius 0.3 x the
+// smaller side translating diagonally by 5 pixels over the animation) or
+// `triangle` (a triangle rotating a full turn about the image centre).
+Scene animation_frame(std::string_view animation, int width, int height, int frame, int frames);
 
 struct SceneInfo {
   std::string spec, summary;

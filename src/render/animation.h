@@ -1,0 +1,29 @@
+// Animations (Hasselgren et al. Sec. 6.1): every frame rendered with a
+// pattern and compared with a dense reference; the per-pixel deviations of
+// all frames together give the RMSE, the largest deviation and the
+// squared-error histogram of the whole animation.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "render/image_error.h"
+#include "render/renderer.h"
+
+namespace aapat {
+
+struct AnimationSettings {
+  std::string animation = "circle";
+  int width = 64, height = 64, frames = 32;
+  int reference_samples = 256;  // Hasselgren's animations: 256 jittered samples
+  std::string reference_filter = "mitchell";
+  uint64_t seed = 1;
+};
+
+// Calls on_frame(frame, image) for each frame if given (to write PNGs).
+ImageError animate(const AnimationSettings& settings, const Sampling& sampling,
+                   const std::optional<Filter>& filter,
+                   const std::function<void(int, const Image&)>& on_frame = {});
+
+}  // namespace aapat
