@@ -4,14 +4,10 @@
 #include <cmath>
 
 #include "core/geometry.h"
+#include "core/overloaded.h"
 
 namespace aapat {
 namespace {
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
 
 double sinc(double x) {
   if (std::abs(x) < 1e-8) return 1.0 - (kPi * x) * (kPi * x) / 6.0;

@@ -86,11 +86,6 @@ void Metric::for_each_angle(const Kernel& k, Visit&& visit) const {
   for (int a = 0; a < angle_count(); ++a) visit(a, e1_squared_at(k, a, proj));
 }
 
-double Metric::weighted_e1(const Kernel& k, int angle) const {
-  std::vector<double> proj(k.w.size());
-  return acuity_.weights[angle] * std::sqrt(e1_squared_at(k, angle, proj.data()));
-}
-
 std::vector<double> Metric::profile(const Kernel& k) const {
   std::vector<double> out(angle_count());
   for_each_angle(k, [&](int a, double e1sq) { out[a] = acuity_.weights[a] * std::sqrt(e1sq); });

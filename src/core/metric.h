@@ -63,8 +63,6 @@ class Metric {
   double sin(int angle) const { return sin_[angle]; }
   double weight_sq(int angle) const { return weight_sq_[angle]; }
 
-  // W(theta_i) E1(theta_i) for the i-th angle of the table.
-  double weighted_e1(const Kernel& k, int angle) const;
   // The per-angle profile W(theta) E1(theta).
   std::vector<double> profile(const Kernel& k) const;
   KernelError kernel_error(const Kernel& k) const;

@@ -16,10 +16,6 @@ bool on(double v, double target) {
   return std::abs(v - target) <= kSameSampleEps;
 }
 
-int wrap(int v, int n) {
-  return ((v % n) + n) % n;
-}
-
 // The first and last pixel offset of a footprint relative to the kernel's
 // pixel, and where its output point sits relative to that pixel's centre.
 int first_offset(const Footprint& f) {
@@ -73,7 +69,7 @@ std::vector<KernelSample> kernel_samples(const Pattern& p, int kernel) {
   const double o = output_offset(f);
   for (int j = first; j < first + f.size; ++j) {
     for (int i = first; i < first + f.size; ++i) {
-      const int s = wrap(ky + j, p.tile_h) * p.tile_w + wrap(kx + i, p.tile_w);
+      const int s = set_index(p, kx + i, ky + j);
       const auto& set = p.sets[s];
       for (int n = 0; n < static_cast<int>(set.size()); ++n) {
         const Vec2 pos{i + set[n].x - o, j + set[n].y - o};
@@ -104,21 +100,25 @@ Kernel make_kernel(const Pattern& p, int kernel) {
   return make_kernel(positions, p.weights[kernel]);
 }
 
+int set_index(const Pattern& p, int x, int y) {
+  const int tx = ((x % p.tile_w) + p.tile_w) % p.tile_w,
+            ty = ((y % p.tile_h) + p.tile_h) % p.tile_h;
+  return ty * p.tile_w + tx;
+}
+
+std::pair<long long, long long> sample_key(const Pattern& p, int set, Vec2 s) {
+  auto reduce = [](double v, int period) {
+    const long long m = static_cast<long long>(period) * 10'000'000LL;
+    return ((std::llround(v * 1e7) % m) + m) % m;
+  };
+  return {reduce(set % p.tile_w + s.x, p.tile_w), reduce(set / p.tile_w + s.y, p.tile_h)};
+}
+
 double samples_per_pixel(const Pattern& p) {
   // Count the orbits of the samples under the tile's translations.
   std::set<std::pair<long long, long long>> unique;
-  for (int ty = 0; ty < p.tile_h; ++ty) {
-    for (int tx = 0; tx < p.tile_w; ++tx) {
-      for (const Vec2& s : p.sets[ty * p.tile_w + tx]) {
-        auto reduce = [](double v, int period) {
-          long long q = std::llround(v * 1e7);
-          const long long m = static_cast<long long>(period) * 10'000'000LL;
-          return ((q % m) + m) % m;
-        };
-        unique.insert({reduce(tx + s.x, p.tile_w), reduce(ty + s.y, p.tile_h)});
-      }
-    }
-  }
+  for (int k = 0; k < p.set_count(); ++k)
+    for (const Vec2& s : p.sets[k]) unique.insert(sample_key(p, k, s));
   return static_cast<double>(unique.size()) / p.set_count();
 }
 
@@ -184,7 +184,7 @@ void validate(const Pattern& p) {
         if (sy != 0) neighbours.emplace_back(0, sy);
         if (sx != 0 && sy != 0) neighbours.emplace_back(sx, sy);
         for (const auto& [dx, dy] : neighbours) {
-          const int n = wrap(ty + dy, p.tile_h) * p.tile_w + wrap(tx + dx, p.tile_w);
+          const int n = set_index(p, tx + dx, ty + dy);
           const Vec2 there{s.x - dx, s.y - dy};
           bool found = false;
           for (const Vec2& q : p.sets[n]) found = found || same_point(q, there);

@@ -69,6 +69,14 @@ struct Kernel {
 Kernel make_kernel(const Pattern& p, int kernel);
 Kernel make_kernel(const std::vector<Vec2>& positions, const std::vector<double>& weights);
 
+// The set of any pixel (x, y) of the plane: the tile repeats.
+int set_index(const Pattern& p, int x, int y);
+
+// The identity of a physical sample: sample s of set `set`, as its position
+// in the tile modulo the tile (rounded to 1e-7), so every pixel that lists a
+// shared border sample gives it the same key.
+std::pair<long long, long long> sample_key(const Pattern& p, int set, Vec2 s);
+
 // n: distinct physical samples per tile divided by pixels per tile.
 double samples_per_pixel(const Pattern& p);
 // "P(4,1+,1.25)".

@@ -51,8 +51,7 @@ std::vector<Vec2> pattern_points(const Pattern& p) {
       double x = std::fmod(tx + s.x + 0.5, p.tile_w), y = std::fmod(ty + s.y + 0.5, p.tile_h);
       if (x < 0) x += p.tile_w;
       if (y < 0) y += p.tile_h;
-      if (seen.insert({std::llround(x * 1e7), std::llround(y * 1e7)}).second)
-        out.push_back({x / p.tile_w, y / p.tile_h});
+      if (seen.insert(sample_key(p, k, s)).second) out.push_back({x / p.tile_w, y / p.tile_h});
     }
   }
   return out;

@@ -215,10 +215,6 @@ SeedKind parse_seed_kind(std::string_view text) {
       fmt::format("--seeds: '{}' is not jittered, poisson, uniform or a pattern file", text));
 }
 
-std::string seed_kind_text(SeedKind k) {
-  return k == SeedKind::kJittered ? "jittered" : k == SeedKind::kPoisson ? "poisson" : "uniform";
-}
-
 std::mt19937_64 start_rng(uint64_t seed, uint64_t index) {
   return std::mt19937_64(splitmix(splitmix(seed) ^ (index + 1) * 0xd1b54a32d192ed03ULL));
 }

@@ -43,7 +43,6 @@ FamilySpec parse_family(std::string_view family, std::string_view placement);
 
 enum class SeedKind { kJittered, kPoisson, kUniform };
 SeedKind parse_seed_kind(std::string_view text);
-std::string seed_kind_text(SeedKind k);
 
 // A random pattern of the family: inside samples by `kind`, border samples
 // uniform along their edge, weights equal for one-pixel footprints and the

@@ -55,13 +55,6 @@ void add_kernels(Problem& pr, bool share_weights) {
 
 }  // namespace
 
-int Problem::position_dof() const {
-  int dof = 0;
-  for (const auto& g : generators)
-    dof += g.freedom == Freedom::kFree ? 2 : g.freedom == Freedom::kFixed ? 0 : 1;
-  return dof;
-}
-
 bool is_mirrored_tile(const Pattern& p) {
   if (p.tile_w != 2 || p.tile_h != 2 || p.footprint != Footprint{1, true}) return false;
   for (int k = 1; k < 4; ++k) {
@@ -94,16 +87,10 @@ Problem problem_from_pattern(const Pattern& p) {
   // One generator per physical sample: the orbit of its tile position.
   std::map<std::pair<long long, long long>, int> orbit_generator;
   for (int k = 0; k < p.set_count(); ++k) {
-    const int tx = k % p.tile_w, ty = k / p.tile_w;
     std::vector<Placement> set;
     for (const Vec2& s : p.sets[k]) {
-      auto reduce = [](double v, int period) {
-        const long long m = static_cast<long long>(period) * 10'000'000LL;
-        return ((std::llround(v * 1e7) % m) + m) % m;
-      };
-      const auto key = std::make_pair(reduce(tx + s.x, p.tile_w), reduce(ty + s.y, p.tile_h));
       auto [it, inserted] =
-          orbit_generator.try_emplace(key, static_cast<int>(pr.generators.size()));
+          orbit_generator.try_emplace(sample_key(p, k, s), static_cast<int>(pr.generators.size()));
       if (inserted) pr.generators.push_back(generator_at(s, p.footprint.plus));
       set.push_back({it->second, 1, 1, s - pr.generators[it->second].pos});
     }

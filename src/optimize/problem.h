@@ -48,8 +48,6 @@ struct Problem {
   std::vector<std::vector<int>> weight_groups;      // each group sums to 1
   std::vector<std::vector<Placement>> set_samples;  // per set, per sample
   std::vector<std::vector<KernelRead>> kernels;     // per kernel, in kernel_samples order
-
-  int position_dof() const;  // free coordinates over all generators
 };
 
 // Every physical sample of the pattern becomes a generator; a mirrored 2x2

@@ -14,16 +14,12 @@ struct Sample {
   double x, y, value;
 };
 
-int wrap(int v, int n) {
-  return ((v % n) + n) % n;
-}
-
 // The samples pixel (a, b) owns, in image coordinates, with the scene's value.
 void pixel_samples(const Scene& scene, const Sampling& s, const PointGenerator& generator, int a,
                    int b, std::vector<Sample>& out) {
   if (s.pattern) {
     const Pattern& p = *s.pattern;
-    for (const Vec2& v : p.sets[wrap(b, p.tile_h) * p.tile_w + wrap(a, p.tile_w)]) {
+    for (const Vec2& v : p.sets[set_index(p, a, b)]) {
       // A shared border sample belongs to the pixel that lists it at -1/2.
       if (p.footprint.plus && (v.x > 0.5 - kSameSampleEps || v.y > 0.5 - kSameSampleEps)) continue;
       const Vec2 w{a + v.x, b + v.y};
@@ -56,7 +52,7 @@ Image render(const Scene& scene, int width, int height, const Sampling& s,
     for (int k = 0; k < p.set_count(); ++k) kernels.push_back(make_kernel(p, k));
     tbb::parallel_for(0, height, [&](int j) {
       for (int i = 0; i < width; ++i) {
-        const Kernel& k = kernels[wrap(j, p.tile_h) * p.tile_w + wrap(i, p.tile_w)];
+        const Kernel& k = kernels[set_index(p, i, j)];
         double v = 0;
         for (int r = 0; r < k.size(); ++r)
           v += k.w[r] * shade(scene, {i + img.offset + k.x[r], j + img.offset + k.y[r]});

@@ -5,15 +5,11 @@
 #include <cmath>
 
 #include "core/filter_catalog.h"
+#include "core/overloaded.h"
 #include "core/text.h"
 
 namespace aapat {
 namespace {
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
 
 // Inside the triangle abc (either winding), edges included.
 bool in_triangle(Vec2 p, Vec2 a, Vec2 b, Vec2 c) {
