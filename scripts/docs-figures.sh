@@ -20,4 +20,12 @@ done
 # Goss & Wu Figure 8: 1D Poisson disk against uniform jitter, 7488 samples, 128K frequencies.
 "$aapat" spectrum --1d poisson,jittered --n 7488 --frequencies 131072 --max-frequency 4 \
   --svg "$img/spectrum-1d.svg" >/dev/null
+# Goss & Wu Figs. 9-20: regular / N-queens / jittered at 4 and 16 samples x box / tent / Gaussian 1/2.
+"$aapat" render checkerboard --grid --size 192x128 -o "$img/sheet-gosswu-checkerboard.png" \
+  --table docs/sheet-gosswu-checkerboard.md >/dev/null
+# Hasselgren Fig. 5: the spiral with the sample-sharing schemes, own weights and a tent.
+"$aapat" render spiral --grid --size 96x96 --zoom 2 --rows centroid diagonal-hasselgren \
+  hasselgren-a hasselgren-b hasselgren-c hasselgren-d hasselgren-e quincunx-hasselgren \
+  hasselgren-f --columns weights tent -o "$img/sheet-hasselgren-spiral.png" \
+  --table docs/sheet-hasselgren-spiral.md >/dev/null
 echo "figures written under docs/"

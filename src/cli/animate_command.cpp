@@ -3,6 +3,9 @@
 // Table 2's RMSE and max-deviation columns re-measured on the translating circle.
 #include <fmt/format.h>
 
+#include <unistd.h>
+
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -10,8 +13,10 @@
 
 #include "cli/commands.h"
 #include "cli/progress.h"
+#include "cli/reference_options.h"
 #include "core/filter_catalog.h"
 #include "core/metric.h"
+#include "io/gif_animation.h"
 #include "io/pattern_json.h"
 #include "io/png_image.h"
 #include "render/animation.h"
@@ -19,18 +24,47 @@
 namespace aapat {
 namespace {
 
-void add_animation_options(CLI::App* cmd, AnimationSettings& a) {
+struct AnimationOptions {
+  AnimationSettings a;
+  ReferenceOptions reference;
+  // The settings with the reference's options applied.
+  AnimationSettings settings() const {
+    AnimationSettings s = a;
+    s.height = s.width;
+    s.reference_samples = reference.settings.samples;
+    s.reference_filter = reference.settings.filter;
+    return s;
+  }
+};
+
+void add_animation_options(CLI::App* cmd, AnimationOptions& o) {
+  AnimationSettings& a = o.a;
   cmd->add_option("--size", a.width, "width and height in pixels")
       ->capture_default_str()
       ->check(CLI::Range(8, 4096));
   cmd->add_option("--frames", a.frames, "frames")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
-  cmd->add_option("--reference-samples", a.reference_samples,
-                  "jittered samples per pixel (a square)")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 65536));
   cmd->add_option("--seed", a.seed, "random seed of the reference")->capture_default_str();
+  add_reference_options(cmd, o.reference, a.reference_samples);
+}
+
+// MP4 through ffmpeg, from the frames' PNGs in `dir`; written whole or not at all.
+void write_mp4(const std::string& dir, const std::string& path, int fps) {
+  if (std::system("command -v ffmpeg >/dev/null 2>&1") != 0)
+    throw Error(
+        fmt::format("--mp4 {}: needs ffmpeg on the PATH (apt-get install ffmpeg); --gif "
+                    "needs nothing",
+                    path));
+  const std::string tmp = path + ".tmp.mp4";
+  const std::string command = fmt::format(
+      "ffmpeg -y -loglevel error -framerate {} -i '{}/frame-%04d.png' -vf "
+      "'scale=trunc(iw/2)*2:trunc(ih/2)*2:flags=neighbor' -pix_fmt yuv420p '{}'",
+      fps, dir, tmp);
+  if (std::system(command.c_str()) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw Error(fmt::format("--mp4 {}: ffmpeg failed ({})", path, command));
+  }
 }
 
 }  // namespace
@@ -38,9 +72,9 @@ void add_animation_options(CLI::App* cmd, AnimationSettings& a) {
 Action add_animate_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("animate", "render an animation with a pattern against a reference");
-  struct Options {
-    AnimationSettings a;
-    std::string pattern, filter, frames_dir, histogram;
+  struct Options : AnimationOptions {
+    std::string pattern, filter, frames_dir, histogram, gif, mp4;
+    int fps = 12;
     bool json = false;
   };
   auto o = std::make_shared<Options>();
@@ -49,24 +83,55 @@ Action add_animate_command(CLI::App& app) {
   cmd->add_option("--pattern", o->pattern, "catalog pattern or pattern file")->required();
   cmd->add_option("--filter", o->filter,
                   "reconstruct with this filter (default: the pattern's weights)");
-  add_animation_options(cmd, o->a);
+  add_animation_options(cmd, *o);
   cmd->add_option("--frames-dir", o->frames_dir, "write every frame as frame-NNNN.png here");
+  cmd->add_option("--gif", o->gif, "the frames as a looping animated GIF");
+  cmd->add_option("--mp4", o->mp4, "the frames as an MP4 video (needs ffmpeg)");
+  cmd->add_option("--fps", o->fps, "frames per second of --gif and --mp4")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
   cmd->add_option("--histogram", o->histogram, "squared-error histogram of all frames (.csv)");
   cmd->add_flag("--json", o->json, "print JSON");
   return [o](std::ostream& out) {
-    o->a.height = o->a.width;
+    const AnimationSettings a = o->settings();
+    for (const auto& [path, ext] : {std::pair{o->gif, ".gif"}, std::pair{o->mp4, ".mp4"}})
+      if (!path.empty() && !path.ends_with(ext))
+        throw Error(fmt::format("'{}' must end in {}", path, ext));
+    // ffmpeg reads PNG frames from a folder: --frames-dir, or a temporary one.
+    std::string frames_dir = o->frames_dir;
+    const bool temporary_frames = !o->mp4.empty() && frames_dir.empty();
+    if (temporary_frames)
+      frames_dir = (std::filesystem::temp_directory_path() /
+                    fmt::format("aapat-frames-{}", static_cast<long>(::getpid())))
+                       .string();
     Sampling s;
     s.pattern = resolve_pattern(o->pattern);
     std::optional<Filter> filter;
     if (!o->filter.empty()) filter = make_filter(o->filter);
-    if (!o->frames_dir.empty()) std::filesystem::create_directories(o->frames_dir);
+    if (!frames_dir.empty()) std::filesystem::create_directories(frames_dir);
     Progress bar("animate");
-    const ImageError e = animate(o->a, s, filter, [&](int f, const Image& img) {
-      if (!o->frames_dir.empty())
-        write_png_gray(fmt::format("{}/frame-{:04d}.png", o->frames_dir, f), img.width, img.height,
-                       grey_pixels(img));
-      bar.update(f + 1, o->a.frames, "");
-    });
+    GreyFrames gif{a.width, a.height, std::max(2, 100 / o->fps), {}};
+    const ImageError e = animate(
+        a, s, filter,
+        [&](int f, const Image& img) {
+          if (!frames_dir.empty())
+            write_png_gray(fmt::format("{}/frame-{:04d}.png", frames_dir, f), img.width, img.height,
+                           grey_pixels(img));
+          if (!o->gif.empty()) gif.frames.push_back(grey_pixels(img));
+          bar.update(f + 1, a.frames, "");
+        },
+        o->reference.source());
+    if (!o->gif.empty()) write_gif(o->gif, gif);
+    if (!o->mp4.empty()) {
+      struct Cleanup {
+        std::string dir;
+        ~Cleanup() {
+          std::error_code ec;
+          if (!dir.empty()) std::filesystem::remove_all(dir, ec);
+        }
+      } cleanup{temporary_frames ? frames_dir : ""};
+      write_mp4(frames_dir, o->mp4, o->fps);
+    }
     if (!o->histogram.empty()) {
       std::string csv = "deviation,count,contribution\n";
       for (int i = 0; i < 256; ++i)
@@ -74,18 +139,15 @@ Action add_animate_command(CLI::App& app) {
       write_output(o->histogram, csv, out);
     }
     if (o->json) {
-      out << nlohmann::ordered_json{{"animation", o->a.animation},
-                                    {"pattern", o->pattern},
-                                    {"frames", o->a.frames},
-                                    {"size", o->a.width},
-                                    {"rmse", e.rmse},
-                                    {"max_deviation", e.max_deviation}}
+      out << nlohmann::ordered_json{{"animation", a.animation}, {"pattern", o->pattern},
+                                    {"frames", a.frames},       {"size", a.width},
+                                    {"rmse", e.rmse},           {"max_deviation", e.max_deviation}}
                  .dump(2)
           << "\n";
       return;
     }
     out << fmt::format("{} animation, {} frames of {}x{}, {}: RMSE {:.3f}, max deviation {}\n",
-                       o->a.animation, o->a.frames, o->a.width, o->a.width, o->pattern, e.rmse,
+                       a.animation, a.frames, a.width, a.width, o->pattern, e.rmse,
                        e.max_deviation);
   };
 }
@@ -94,10 +156,11 @@ Action add_table2_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "table2",
       "re-measure Hasselgren Table 2 (E2, RMSE, max deviation) on the translating circle");
-  auto a = std::make_shared<AnimationSettings>();
-  add_animation_options(cmd, *a);
-  return [a](std::ostream& out) {
-    a->height = a->width;
+  auto o = std::make_shared<AnimationOptions>();
+  add_animation_options(cmd, *o);
+  return [o](std::ostream& out) {
+    const auto a = std::make_shared<AnimationSettings>(o->settings());
+    const ReferenceSource references = o->reference.source();
     struct Row {
       const char* pattern;
       const char* label;
@@ -120,7 +183,7 @@ Action add_table2_command(CLI::App& app) {
     for (const Row& r : rows) {
       Sampling s;
       s.pattern = resolve_pattern(r.pattern);
-      const ImageError e = animate(*a, s, std::nullopt);
+      const ImageError e = animate(*a, s, std::nullopt, {}, references);
       table += fmt::format("{:<21} {:>6.3f} ({:.3f})  {:>6.3f} ({:.3f})  {:>4} ({})\n", r.label,
                            metric.evaluate(*s.pattern).e2, r.e2, e.rmse, r.rmse, e.max_deviation,
                            r.max_dev);

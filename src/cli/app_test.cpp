@@ -465,3 +465,107 @@ TEST(CliAnimate, TranslatingCircleOrdersThePatternsAsThePaper) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+TEST(CliRender, SceneFilesViewsSsimAndTheCache) {
+  const std::string scene = temp_path("scene.json"), cache = temp_path("cache");
+  std::ofstream(scene) << R"({"background": 0, "shapes": [
+      {"polygon": [[2, 2], [20, 4], [6, 18]], "grey": 1},
+      {"circle": [14, 14], "radius": 4, "grey": 0.5}]})";
+  const std::vector<std::string> args{"render",
+                                      scene,
+                                      "--pattern",
+                                      "flipquad",
+                                      "--size",
+                                      "24x24",
+                                      "--rotate",
+                                      "15",
+                                      "--scale",
+                                      "1.2",
+                                      "--translate",
+                                      "1,-2",
+                                      "--reference-samples",
+                                      "64",
+                                      "--cache",
+                                      cache,
+                                      "--json"};
+  CliRun r = run(args);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto first = nlohmann::json::parse(r.out);
+  EXPECT_GT(first["ssim"].get<double>(), 0.5);
+  EXPECT_LT(first["ssim"].get<double>(), 1.0);
+  EXPECT_EQ(std::distance(fs::directory_iterator(cache), fs::directory_iterator{}), 1);
+  r = run(args);  // from the cache: the same figures
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out), first);
+  r = run({"render", "spiral", "--pattern", "rgss", "--size", "8x8", "--no-cache", "--json",
+           "--reference-samples", "4"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(nlohmann::json::parse(r.out)["ssim"].is_null());  // smaller than the window
+  r = run({"render", scene, "--pattern", "rgss", "--translate", "1"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("--translate: '1' is not X,Y"), std::string::npos) << r.err;
+  r = run({"render", "checkerboard:horizon=7", "--pattern", "rgss"});
+  EXPECT_NE(r.err.find("horizon = 7 is outside"), std::string::npos) << r.err;
+  r = run({"list"});
+  EXPECT_NE(r.out.find("checkerboard:horizon,focal,eye,rotation"), std::string::npos);
+}
+
+TEST(CliRender, GridSheetWithItsErrorTable) {
+  const std::string png = temp_path("sheet.png"), table = temp_path("sheet.md");
+  CliRun r = run({"render",
+                  "checkerboard",
+                  "--grid",
+                  "--size",
+                  "16x12",
+                  "--rows",
+                  "regular@4",
+                  "jittered@4",
+                  "flipquad",
+                  "--columns",
+                  "box",
+                  "gaussian-half",
+                  "--zoom",
+                  "2",
+                  "-o",
+                  png,
+                  "--table",
+                  table,
+                  "--reference-samples",
+                  "16",
+                  "--no-cache"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(slurp(png).substr(1, 3), "PNG");
+  const std::string md = slurp(table);
+  EXPECT_NE(md.find("| regular@4 | box | 4 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| flipquad | gaussian-half | 2 |"), std::string::npos) << md;
+  EXPECT_EQ(std::count(md.begin(), md.end(), '\n'), 2 + 2 + 6);  // heading, header, 6 cells
+  r = run({"render", "checkerboard", "--grid", "--rows", "jittered@4", "--columns", "weights", "-o",
+           temp_path("w.png"), "--no-cache"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("is a generator, which has no weights"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(temp_path("w.png")));
+  r = run({"render", "checkerboard", "--grid", "--rows", "jittered@0", "-o", temp_path("z.png")});
+  EXPECT_NE(r.err.find("--rows jittered@0"), std::string::npos) << r.err;
+}
+
+TEST(CliAnimate, GifOfTheFrames) {
+  const std::string gif = temp_path("a.gif");
+  const CliRun r = run({"animate", "circle", "--pattern", "rgss", "--size", "12", "--frames", "3",
+                        "--reference-samples", "4", "--gif", gif, "--no-cache"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(slurp(gif).substr(0, 6), "GIF89a");
+  EXPECT_EQ(run({"animate", "circle", "--pattern", "rgss", "--gif", temp_path("a.png")}).code, 1);
+  if (std::system("command -v ffmpeg >/dev/null 2>&1") != 0) {
+    const CliRun m = run({"animate", "circle", "--pattern", "rgss", "--size", "12", "--frames", "2",
+                          "--reference-samples", "4", "--mp4", temp_path("a.mp4")});
+    EXPECT_EQ(m.code, 1);
+    EXPECT_NE(m.err.find("needs ffmpeg on the PATH"), std::string::npos) << m.err;
+    EXPECT_FALSE(fs::exists(temp_path("a.mp4")));
+  }
+}
+
+}  // namespace
+}  // namespace aapat

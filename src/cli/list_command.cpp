@@ -8,11 +8,13 @@
 #include "core/filter_catalog.h"
 #include "generate/catalog.h"
 #include "generate/point_generators.h"
+#include "render/scene.h"
 
 namespace aapat {
 
 Action add_list_command(CLI::App& app) {
-  app.add_subcommand("list", "list the catalog patterns, reference filters and acuity tables");
+  app.add_subcommand("list",
+                     "list the catalog patterns, filters, generators, acuity tables and scenes");
   return [](std::ostream& out) {
     out << "patterns:\n";
     for (const auto& e : pattern_catalog()) {
@@ -31,6 +33,10 @@ Action add_list_command(CLI::App& app) {
       out << fmt::format("  {:<27} {} [{}]\n", g.spec, g.summary, g.source);
     out << "acuity tables:\n";
     for (const auto& a : acuity_catalog()) out << fmt::format("  {:<27} {}\n", a.spec, a.summary);
+    out << "scenes (aapat render; or a .json scene file, docs/renderer.md):\n";
+    for (const auto& s : scene_catalog())
+      out << fmt::format("  {:<27} {}\n",
+                         s.parameters.empty() ? s.name : s.name + ":" + s.parameters, s.summary);
   };
 }
 

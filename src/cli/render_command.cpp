@@ -1,34 +1,237 @@
-// `aapat render SCENE`: an analytic scene sampled with a pattern or a
-// per-pixel generator, reconstructed with the pattern's weights or a filter;
-// optionally against a dense reference, with the error figures.
+// `aapat render SCENE`: an analytic scene (or a scene file) sampled with a
+// pattern or a per-pixel generator, reconstructed with the pattern's weights
+// or a filter; optionally against a dense reference, with the error figures.
+// With --grid, rows of samplings x columns of filters in one contact sheet.
 #include <fmt/format.h>
 
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "cli/commands.h"
+#include "cli/reference_options.h"
 #include "core/filter_catalog.h"
+#include "core/text.h"
+#include "io/contact_sheet.h"
 #include "io/line_plot.h"
 #include "io/pattern_json.h"
 #include "io/png_image.h"
+#include "io/scene_json.h"
 #include "render/image_error.h"
 #include "render/renderer.h"
+#include "render/ssim.h"
 
 namespace aapat {
+namespace {
+
+struct Options {
+  std::string scene, pattern, generator, filter, size = "256x256", output;
+  std::string error_png, histogram, histogram_svg, translate, table;
+  ReferenceOptions reference;
+  double rotate = 0, scale = 1;
+  int samples = 16, zoom = 1;
+  uint64_t seed = 1;
+  bool json = false, grid = false;
+  std::vector<std::string> rows{"regular@4",  "n-queens@4",  "jittered@4",
+                                "regular@16", "n-queens@16", "jittered@16"};
+  std::vector<std::string> columns{"box", "tent", "gaussian-half"};
+};
+
+std::pair<int, int> parse_size(const std::string& size) {
+  const auto x = size.find('x');
+  if (x == std::string::npos) throw Error(fmt::format("--size: '{}' is not WIDTHxHEIGHT", size));
+  const double w = parse_number(size.substr(0, x), "--size"),
+               h = parse_number(size.substr(x + 1), "--size");
+  if (!(w >= 1 && h >= 1 && w <= 16384 && h <= 16384) || w != std::floor(w) || h != std::floor(h))
+    throw Error(fmt::format("--size: '{}' must be whole numbers from 1 to 16384", size));
+  return {static_cast<int>(w), static_cast<int>(h)};
+}
+
+Scene make_view_scene(const Options& o, int w, int h) {
+  Scene scene = resolve_scene(o.scene, w, h);
+  if (!std::isfinite(o.rotate) || !(o.scale > 1e-6 && o.scale < 1e6))
+    throw Error(
+        fmt::format("--rotate {} / --scale {}: need a finite angle and a scale in "
+                    "(1e-6, 1e6)",
+                    o.rotate, o.scale));
+  scene.view.pivot = {(w - 1) / 2.0, (h - 1) / 2.0};
+  scene.view.rotation_deg = o.rotate;
+  scene.view.scale = o.scale;
+  if (!o.translate.empty()) {
+    const auto parts = split(o.translate);
+    if (parts.size() != 2) throw Error(fmt::format("--translate: '{}' is not X,Y", o.translate));
+    scene.view.translation = {parse_number(parts[0], "--translate"),
+                              parse_number(parts[1], "--translate")};
+  }
+  return scene;
+}
+
+// The error figures of one rendering against its reference.
+struct Figures {
+  ImageError error;
+  std::optional<double> ssim_value;
+};
+
+Figures measure(const Image& image, const Image& reference) {
+  Figures f{compare(image, reference), std::nullopt};
+  if (image.width >= kSsimWindow && image.height >= kSsimWindow)
+    f.ssim_value = ssim(image, reference);
+  return f;
+}
+
+std::string ssim_text(const Figures& f) {
+  return f.ssim_value ? fmt::format("{:.4f}", *f.ssim_value) : "-";
+}
+
+// A grid row: `GENERATOR@N` (a per-pixel generator, N samples) or a pattern.
+Sampling row_sampling(const std::string& row, uint64_t seed) {
+  Sampling s;
+  s.seed = seed;
+  if (const auto at = row.rfind('@'); at != std::string::npos) {
+    s.generator = row.substr(0, at);
+    const double n = parse_number(row.substr(at + 1), fmt::format("--rows {}", row));
+    if (!(n >= 1 && n <= 65536) || n != std::floor(n))
+      throw Error(
+          fmt::format("--rows {}: the sample count must be a whole number in [1, 65536]", row));
+    s.samples = static_cast<int>(n);
+  } else {
+    s.pattern = resolve_pattern(row);
+  }
+  return s;
+}
+
+void run_grid(const Options& o, std::ostream& out) {
+  const auto [w, h] = parse_size(o.size);
+  if (o.output.empty() || !o.output.ends_with(".png"))
+    throw Error("render --grid: give the sheet's file with -o SHEET.png");
+  const Scene scene = make_view_scene(o, w, h);
+  const ReferenceSource references = o.reference.source();
+  ReferenceSettings ref = o.reference.settings;
+  ref.seed = o.seed + 1000003;
+  std::map<double, Image> reference_at;  // by offset: even footprints shift the image
+  ContactSheet sheet{fmt::format("{} {}x{}", o.scene, w, h), o.rows, o.columns, {}, o.zoom};
+  std::string table = "| sampling | filter | samples/pixel | RMSE | max dev. | SSIM |\n";
+  table += "| --- | --- | ---: | ---: | ---: | ---: |\n";
+  nlohmann::ordered_json cells = nlohmann::ordered_json::array();
+  for (const std::string& row : o.rows) {
+    const Sampling sampling = row_sampling(row, o.seed);
+    for (const std::string& column : o.columns) {
+      std::optional<Filter> filter;
+      if (column != "weights") filter = make_filter(column);
+      if (!filter && !sampling.pattern)
+        throw Error(
+            fmt::format("--columns weights: row '{}' is a generator, which has no weights", row));
+      RenderStats stats;
+      const Image image = render(scene, w, h, sampling, filter, &stats);
+      auto it = reference_at.find(image.offset);
+      if (it == reference_at.end())
+        it = reference_at.emplace(image.offset, references(scene, w, h, ref, image.offset)).first;
+      const Figures f = measure(image, it->second);
+      sheet.cells.push_back(
+          {w, h, grey_pixels(image),
+           fmt::format("RMSE {:.2f} MAX {}", f.error.rmse, f.error.max_deviation)});
+      table += fmt::format("| {} | {} | {} | {:.3f} | {} | {} |\n", row, column,
+                           format_cost(stats.samples_per_pixel), f.error.rmse,
+                           f.error.max_deviation, ssim_text(f));
+      cells.push_back({{"sampling", row},
+                       {"filter", column},
+                       {"samples_per_pixel", stats.samples_per_pixel},
+                       {"rmse", f.error.rmse},
+                       {"max_deviation", f.error.max_deviation},
+                       {"ssim", f.ssim_value ? nlohmann::ordered_json(*f.ssim_value) : nullptr}});
+    }
+  }
+  const GreyRaster r = compose_sheet(sheet);
+  write_png_gray(o.output, r.width, r.height, r.pixels);
+  const std::string heading =
+      fmt::format("{} {}x{}: against {} jittered samples per pixel with {}\n\n", o.scene, w, h,
+                  ref.samples, make_filter(ref.filter).name());
+  if (!o.table.empty()) write_output(o.table, heading + table, out);
+  out << (o.json
+              ? nlohmann::ordered_json{{"scene", o.scene}, {"size", o.size}, {"cells", cells}}.dump(
+                    2) +
+                    "\n"
+              : heading + table);
+}
+
+void run_single(const Options& o, std::ostream& out) {
+  const auto [w, h] = parse_size(o.size);
+  if (o.pattern.empty() == o.generator.empty())
+    throw Error("render: give either --pattern or --generator");
+  for (const std::string* f : {&o.output, &o.error_png})
+    if (!f->empty() && !f->ends_with(".png")) throw Error(fmt::format("'{}' must end in .png", *f));
+  const Scene scene = make_view_scene(o, w, h);
+  Sampling sampling;
+  if (!o.pattern.empty()) sampling.pattern = resolve_pattern(o.pattern);
+  sampling.generator = o.generator;
+  sampling.samples = o.samples;
+  sampling.seed = o.seed;
+  std::optional<Filter> filter;
+  if (!o.filter.empty()) filter = make_filter(o.filter);
+  RenderStats stats;
+  const Image image = render(scene, w, h, sampling, filter, &stats);
+  if (!o.output.empty()) write_png_gray(o.output, w, h, grey_pixels(image));
+
+  const std::string& what = o.pattern.empty() ? o.generator : o.pattern;
+  nlohmann::ordered_json js{{"scene", o.scene},
+                            {"size", o.size},
+                            {"sampling", what},
+                            {"filter", filter ? filter->name() : "pattern weights"},
+                            {"samples_per_pixel", stats.samples_per_pixel}};
+  std::string text = fmt::format("{} {}x{}, {} with {}: {} samples per pixel\n", o.scene, w, h,
+                                 what, filter ? filter->name() : "the pattern's weights",
+                                 format_cost(stats.samples_per_pixel));
+  const bool want_reference =
+      o.json || !o.error_png.empty() || !o.histogram.empty() || !o.histogram_svg.empty();
+  if (want_reference) {
+    ReferenceSettings ref = o.reference.settings;
+    ref.seed = o.seed + 1000003;
+    const Image reference = o.reference.source()(scene, w, h, ref, image.offset);
+    const Figures f = measure(image, reference);
+    const ImageError& e = f.error;
+    const std::string ref_name = make_filter(ref.filter).name();
+    js["reference"] = fmt::format("{} jittered samples per pixel, {}", ref.samples, ref_name);
+    js["rmse"] = e.rmse;
+    js["max_deviation"] = e.max_deviation;
+    js["ssim"] = f.ssim_value ? nlohmann::ordered_json(*f.ssim_value) : nullptr;
+    text += fmt::format(
+        "against {} jittered samples per pixel with {}: RMSE {:.3f}, max deviation {}, SSIM {}\n",
+        ref.samples, ref_name, e.rmse, e.max_deviation, ssim_text(f));
+    if (!o.error_png.empty()) write_png_gray(o.error_png, w, h, error_pixels(image, reference));
+    std::string csv = "deviation,count,contribution\n";
+    LineSeries line{what, {}, {}};
+    for (int i = 0; i < 256; ++i) {
+      csv += fmt::format("{},{},{:.6g}\n", i, e.count[i], e.contribution[i]);
+      if (i >= 1 && i <= std::max(1, e.max_deviation)) {
+        line.x.push_back(i);
+        line.y.push_back(e.contribution[i]);
+      }
+    }
+    if (!o.histogram.empty()) write_output(o.histogram, csv, out);
+    if (!o.histogram_svg.empty())
+      write_output(o.histogram_svg,
+                   line_plot_svg({"Squared-error histogram C(i) i^2 / n (Hasselgren Eq. 1)",
+                                  "deviation i (0-255)",
+                                  "C(i) i^2 / n",
+                                  {},
+                                  0,
+                                  0,
+                                  true},
+                                 {line}),
+                   out);
+  }
+  out << (o.json ? js.dump(2) + "\n" : text);
+}
+
+}  // namespace
 
 Action add_render_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("render", "render a test scene with a pattern and filter");
-  struct Options {
-    std::string scene, pattern, generator, filter, size = "256x256", output;
-    std::string error_png, histogram, histogram_svg, reference_filter = "mitchell";
-    int samples = 16, reference_samples = 1024;
-    uint64_t seed = 1;
-    bool json = false;
-  };
   auto o = std::make_shared<Options>();
   cmd->add_option("scene", o->scene,
-                  "checkerboard, circles, sliver, spiral, zoneplate, halfplane:...")
+                  "checkerboard, circles, sliver, spiral, zoneplate, disc, halfplane (with "
+                  ":key=value parameters, see aapat list) or a .json scene file")
       ->required();
   cmd->add_option("--pattern", o->pattern, "catalog pattern or pattern file, tiled over the image");
   cmd->add_option("--generator", o->generator, "per-pixel generator instead, e.g. jittered");
@@ -38,93 +241,26 @@ Action add_render_command(CLI::App& app) {
   cmd->add_option("--filter", o->filter,
                   "reconstruct with this filter's normalized weights (default: the pattern's own)");
   cmd->add_option("--size", o->size, "WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--rotate", o->rotate, "rotate the scene about the image centre (degrees)");
+  cmd->add_option("--scale", o->scale, "scale the scene about the image centre");
+  cmd->add_option("--translate", o->translate, "move the scene by X,Y pixels (after rotating)");
   cmd->add_option("--seed", o->seed, "random seed")->capture_default_str();
-  cmd->add_option("-o,--output", o->output, "the rendering (.png)");
+  cmd->add_option("-o,--output", o->output, "the rendering, or with --grid the sheet (.png)");
   cmd->add_option("--error", o->error_png, "error image against the reference (.png; black = 10%)");
   cmd->add_option("--histogram", o->histogram, "squared-error histogram C(i) i^2 / n (.csv)");
   cmd->add_option("--histogram-svg", o->histogram_svg, "the same histogram as a plot (.svg)");
-  cmd->add_option("--reference-samples", o->reference_samples,
-                  "jittered samples per pixel of the reference (a square)")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 65536));
-  cmd->add_option("--reference-filter", o->reference_filter, "the reference's filter")
+  add_reference_options(cmd, o->reference, 1024);
+  cmd->add_flag("--grid", o->grid, "a contact sheet of --rows x --columns with the error figures");
+  cmd->add_option("--rows", o->rows, "--grid rows: GENERATOR@N (per-pixel, N samples) or patterns")
       ->capture_default_str();
+  cmd->add_option("--columns", o->columns, "--grid columns: filters, or 'weights' (the pattern's)")
+      ->capture_default_str();
+  cmd->add_option("--zoom", o->zoom, "--grid: draw each pixel as ZOOM x ZOOM")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 16));
+  cmd->add_option("--table", o->table, "--grid: also write the error table (markdown)");
   cmd->add_flag("--json", o->json, "print the figures as JSON");
-  return [o](std::ostream& out) {
-    int w = 0, h = 0;
-    const auto x = o->size.find('x');
-    if (x == std::string::npos)
-      throw Error(fmt::format("--size: '{}' is not WIDTHxHEIGHT", o->size));
-    w = static_cast<int>(parse_number(o->size.substr(0, x), "--size"));
-    h = static_cast<int>(parse_number(o->size.substr(x + 1), "--size"));
-    if (o->pattern.empty() == o->generator.empty())
-      throw Error("render: give either --pattern or --generator");
-    for (const std::string* f : {&o->output, &o->error_png})
-      if (!f->empty() && !f->ends_with(".png"))
-        throw Error(fmt::format("'{}' must end in .png", *f));
-    const Scene scene = make_scene(o->scene, w, h);
-    Sampling sampling;
-    if (!o->pattern.empty()) sampling.pattern = resolve_pattern(o->pattern);
-    sampling.generator = o->generator;
-    sampling.samples = o->samples;
-    sampling.seed = o->seed;
-    std::optional<Filter> filter;
-    if (!o->filter.empty()) filter = make_filter(o->filter);
-    RenderStats stats;
-    const Image image = render(scene, w, h, sampling, filter, &stats);
-    if (!o->output.empty()) write_png_gray(o->output, w, h, grey_pixels(image));
-
-    nlohmann::ordered_json js{{"scene", o->scene},
-                              {"size", o->size},
-                              {"sampling", o->pattern.empty() ? o->generator : o->pattern},
-                              {"filter", filter ? filter->name() : "pattern weights"},
-                              {"samples_per_pixel", stats.samples_per_pixel}};
-    std::string text = fmt::format("{} {}x{}, {} with {}: {} samples per pixel\n", o->scene, w, h,
-                                   o->pattern.empty() ? o->generator : o->pattern,
-                                   filter ? filter->name() : "the pattern's weights",
-                                   format_cost(stats.samples_per_pixel));
-    const bool want_reference =
-        o->json || !o->error_png.empty() || !o->histogram.empty() || !o->histogram_svg.empty();
-    if (want_reference) {
-      Sampling ref;
-      ref.generator = "jittered";
-      ref.samples = o->reference_samples;
-      ref.seed = o->seed + 1000003;
-      const Image reference =
-          render(scene, w, h, ref, make_filter(o->reference_filter), nullptr, image.offset);
-      const ImageError e = compare(image, reference);
-      js["reference"] = fmt::format("{} jittered samples per pixel, {}", o->reference_samples,
-                                    make_filter(o->reference_filter).name());
-      js["rmse"] = e.rmse;
-      js["max_deviation"] = e.max_deviation;
-      text += fmt::format(
-          "against {} jittered samples per pixel with {}: RMSE {:.3f}, max deviation {}\n",
-          o->reference_samples, make_filter(o->reference_filter).name(), e.rmse, e.max_deviation);
-      if (!o->error_png.empty()) write_png_gray(o->error_png, w, h, error_pixels(image, reference));
-      std::string csv = "deviation,count,contribution\n";
-      LineSeries line{o->pattern.empty() ? o->generator : o->pattern, {}, {}};
-      for (int i = 0; i < 256; ++i) {
-        csv += fmt::format("{},{},{:.6g}\n", i, e.count[i], e.contribution[i]);
-        if (i >= 1 && i <= std::max(1, e.max_deviation)) {
-          line.x.push_back(i);
-          line.y.push_back(e.contribution[i]);
-        }
-      }
-      if (!o->histogram.empty()) write_output(o->histogram, csv, out);
-      if (!o->histogram_svg.empty())
-        write_output(o->histogram_svg,
-                     line_plot_svg({"Squared-error histogram C(i) i^2 / n (Hasselgren Eq. 1)",
-                                    "deviation i (0-255)",
-                                    "C(i) i^2 / n",
-                                    {},
-                                    0,
-                                    0,
-                                    true},
-                                   {line}),
-                     out);
-    }
-    out << (o->json ? js.dump(2) + "\n" : text);
-  };
+  return [o](std::ostream& out) { o->grid ? run_grid(*o, out) : run_single(*o, out); };
 }
 
 }  // namespace aapat

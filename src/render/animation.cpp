@@ -2,25 +2,20 @@
 
 #include <cmath>
 
-#include "core/filter_catalog.h"
-
 namespace aapat {
 
 ImageError animate(const AnimationSettings& a, const Sampling& sampling,
                    const std::optional<Filter>& filter,
-                   const std::function<void(int, const Image&)>& on_frame) {
-  const Filter reference_filter = make_filter(a.reference_filter);
+                   const std::function<void(int, const Image&)>& on_frame,
+                   const ReferenceSource& references) {
+  const ReferenceSource source = references ? references : render_reference;
   ImageError total;
   double pixels = 0;
   for (int f = 0; f < a.frames; ++f) {
     const Scene scene = animation_frame(a.animation, a.width, a.height, f, a.frames);
     const Image image = render(scene, a.width, a.height, sampling, filter);
-    Sampling ref;
-    ref.generator = "jittered";
-    ref.samples = a.reference_samples;
-    ref.seed = a.seed + 7919 * (f + 1);
-    const Image reference =
-        render(scene, a.width, a.height, ref, reference_filter, nullptr, image.offset);
+    const ReferenceSettings ref{a.reference_samples, a.reference_filter, a.seed + 7919 * (f + 1)};
+    const Image reference = source(scene, a.width, a.height, ref, image.offset);
     const ImageError e = compare(image, reference);
     for (int i = 0; i < 256; ++i) total.count[i] += e.count[i];
     total.max_deviation = std::max(total.max_deviation, e.max_deviation);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "render/image_error.h"
+#include "render/reference.h"
 #include "render/renderer.h"
 
 namespace aapat {
@@ -22,8 +23,10 @@ struct AnimationSettings {
 };
 
 // Calls on_frame(frame, image) for each frame if given (to write PNGs).
+// References come from `references` (render_reference when empty).
 ImageError animate(const AnimationSettings& settings, const Sampling& sampling,
                    const std::optional<Filter>& filter,
-                   const std::function<void(int, const Image&)>& on_frame = {});
+                   const std::function<void(int, const Image&)>& on_frame = {},
+                   const ReferenceSource& references = {});
 
 }  // namespace aapat

@@ -59,7 +59,8 @@ TEST(Renderer, RegularGridWithItsOwnWeightsConverges) {
 // grid line is covered by the image of that line, a straight line.
 TEST(Renderer, CheckerboardMatchesAnalyticCoverageFarFromTheHorizon) {
   const int w = 64, h = 64;
-  const CheckerboardScene board = std::get<CheckerboardScene>(make_scene("checkerboard", w, h));
+  const CheckerboardScene board =
+      std::get<CheckerboardScene>(make_scene("checkerboard", w, h).shape);
   Sampling s;
   s.generator = "jittered";
   s.samples = 32 * 32;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <map>
 
 #include "core/filter_catalog.h"
 #include "core/overloaded.h"
@@ -21,9 +22,60 @@ bool in_triangle(Vec2 p, Vec2 a, Vec2 b, Vec2 c) {
   return !(neg && pos);
 }
 
+// Even-odd rule: a ray to +x crosses the boundary an odd number of times.
+bool in_polygon(Vec2 p, const std::vector<Vec2>& poly) {
+  bool inside = false;
+  for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    const Vec2 a = poly[i], b = poly[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y))
+      inside = !inside;
+  }
+  return inside;
+}
+
+// `name:key=value,...` where every key is one of `allowed`; get() falls back to the default.
+class SceneParameters {
+ public:
+  SceneParameters(std::string_view name, std::string_view spec, std::string_view allowed)
+      : name_(name) {
+    if (spec.empty()) return;
+    for (std::string_view item : split(spec)) {
+      const auto eq = item.find('=');
+      const std::string key(trim(item.substr(0, eq)));
+      bool known = false;
+      for (std::string_view a : split(allowed)) known = known || a == key;
+      if (eq == std::string_view::npos || !known)
+        throw Error(
+            fmt::format("scene {}: unknown parameter '{}' ({})", name, item,
+                        allowed.empty() ? "it takes none" : fmt::format("it takes {}", allowed)));
+      values_[key] = parse_number(item.substr(eq + 1), fmt::format("scene {}: {}", name, key));
+    }
+  }
+  // The value of `key`, which must lie in [lo, hi].
+  double get(const std::string& key, double fallback, double lo, double hi) const {
+    const auto it = values_.find(key);
+    const double v = it == values_.end() ? fallback : it->second;
+    if (!(v >= lo && v <= hi))
+      throw Error(fmt::format("scene {}: {} = {} is outside [{}, {}]", name_, key, v, lo, hi));
+    return v;
+  }
+
+ private:
+  std::string name_;
+  std::map<std::string, double> values_;
+};
+
 }  // namespace
 
-double shade(const Scene& scene, Vec2 p) {
+Vec2 View::to_scene(Vec2 q) const {
+  const double r = radians(rotation_deg), c = std::cos(r), s = std::sin(r);
+  const double dx = (q.x - translation.x - pivot.x) / scale,
+               dy = (q.y - translation.y - pivot.y) / scale;
+  return {pivot.x + c * dx + s * dy, pivot.y - s * dx + c * dy};
+}
+
+double shade(const Scene& scene, Vec2 image_point) {
+  const Vec2 p = scene.view.identity() ? image_point : scene.view.to_scene(image_point);
   return std::visit(
       Overloaded{
           [&](const HalfPlaneScene& s) {
@@ -78,39 +130,51 @@ double shade(const Scene& scene, Vec2 p) {
             const double r2 =
                 (p.x - s.centre.x) * (p.x - s.centre.x) + (p.y - s.centre.y) * (p.y - s.centre.y);
             return 0.5 + 0.5 * std::cos(kPi * s.k * r2);
+          },
+          [&](const ShapesScene& s) {
+            for (auto it = s.shapes.rbegin(); it != s.shapes.rend(); ++it) {
+              const bool inside = it->polygon.empty() ? std::hypot(p.x - it->centre.x,
+                                                                   p.y - it->centre.y) <= it->radius
+                                                      : in_polygon(p, it->polygon);
+              if (inside) return it->grey;
+            }
+            return s.background;
           }},
-      scene);
+      scene.shape);
 }
 
 Scene make_scene(std::string_view spec, int width, int height) {
   const auto colon = spec.find(':');
   const std::string_view name = spec.substr(0, colon);
-  const double w = width, h = height;
+  const std::string_view rest = colon == std::string_view::npos ? "" : spec.substr(colon + 1);
+  const double w = width, h = height, side = std::min(w, h);
   const Vec2 centre{(w - 1) / 2, (h - 1) / 2};
-  if (name == "halfplane") {
-    HalfPlaneScene s{centre, 30, 0};
-    if (colon != std::string_view::npos)
-      for (std::string_view item : split(spec.substr(colon + 1))) {
-        const auto eq = item.find('=');
-        const std::string_view key = trim(item.substr(0, eq));
-        if (eq == std::string_view::npos || (key != "angle" && key != "offset"))
-          throw Error(fmt::format(
-              "scene halfplane: unknown parameter '{}' (it takes angle, offset)", item));
-        (key == "angle" ? s.angle_deg : s.offset) = parse_number(item.substr(eq + 1), "halfplane");
-      }
-    return s;
+  for (const SceneInfo& info : scene_catalog()) {
+    if (info.name != name) continue;
+    const SceneParameters q(name, rest, info.parameters);
+    if (name == "halfplane")
+      return HalfPlaneScene{centre, q.get("angle", 30, -360, 360), q.get("offset", 0, -1e6, 1e6)};
+    if (name == "checkerboard")
+      return CheckerboardScene{w,
+                               h,
+                               q.get("horizon", 0.8, 0.05, 2),
+                               q.get("focal", 1, 0.01, 100),
+                               q.get("eye", 1, 0.01, 1000),
+                               q.get("rotation", 20, -360, 360)};
+    if (name == "circles") return CirclesScene{w, h, static_cast<int>(q.get("count", 16, 1, 4096))};
+    if (name == "sliver")
+      return SliverScene{{0.03 * w, 0.04 * h}, {0.97 * w, 0.16 * h}, {0.97 * w, 0.21 * h}};
+    if (name == "spiral")
+      return SpiralScene{centre, q.get("turns", 6, 0.01, 1000), 0.47 * side,
+                         q.get("arm", 0.35, 0.01, 0.99)};
+    if (name == "zoneplate")
+      return ZonePlateScene{centre, q.get("k", 1, 1e-6, 1e6) / std::max(w, h)};
+    if (name == "disc") return DiscScene{centre, q.get("radius", 0.3, 1e-6, 10) * side};
   }
-  if (colon != std::string_view::npos)
-    throw Error(fmt::format("scene {}: takes no parameters", name));
-  if (name == "checkerboard") return CheckerboardScene{w, h, 0.8, 1.0, 1.0, 20};
-  if (name == "circles") return CirclesScene{w, h, 16};
-  if (name == "sliver")
-    return SliverScene{{0.03 * w, 0.04 * h}, {0.97 * w, 0.16 * h}, {0.97 * w, 0.21 * h}};
-  if (name == "spiral") return SpiralScene{centre, 6, 0.47 * std::min(w, h), 0.35};
-  if (name == "zoneplate") return ZonePlateScene{centre, 1.0 / std::max(w, h)};
   std::string known;
-  for (const auto& s : scene_catalog()) known += (known.empty() ? "" : ", ") + s.spec;
-  throw Error(fmt::format("unknown scene '{}': known scenes are {}", name, known));
+  for (const auto& s : scene_catalog()) known += (known.empty() ? "" : ", ") + s.name;
+  throw Error(
+      fmt::format("unknown scene '{}': known scenes are {} (or a .json scene file)", name, known));
 }
 
 Scene animation_frame(std::string_view animation, int width, int height, int frame, int frames) {
@@ -133,14 +197,81 @@ Scene animation_frame(std::string_view animation, int width, int height, int fra
 
 const std::vector<SceneInfo>& scene_catalog() {
   static const std::vector<SceneInfo> kInfo = {
-      {"checkerboard", "infinite flat-shaded checkerboard in perspective (Goss & Wu Sec. 3.1)"},
-      {"circles", "white discs from 0.3 pixel to large (Laine & Aila Fig. 7)"},
-      {"sliver", "a thin triangle, sub-pixel at its tip (Hasselgren Fig. 4)"},
-      {"spiral", "a spiral arm (Hasselgren Fig. 5)"},
-      {"zoneplate", "0.5 + 0.5 cos(pi r^2 / size): frequency grows to Nyquist at the edge"},
-      {"halfplane:angle=30,offset=0", "white where (p - centre) . (cos a, sin a) <= offset"},
+      {"checkerboard", "horizon,focal,eye,rotation",
+       "infinite flat-shaded checkerboard in perspective (Goss & Wu Sec. 3.1); horizon row as a "
+       "fraction of the height (0.8), focal length in widths (1), eye height in squares (1), "
+       "rotation in degrees (20)"},
+      {"circles", "count", "white discs from 0.3 pixel to large (Laine & Aila Fig. 7); count (16)"},
+      {"sliver", "", "a thin triangle, sub-pixel at its tip (Hasselgren Fig. 4)"},
+      {"spiral", "turns,arm", "a spiral arm (Hasselgren Fig. 5); turns (6), white fraction (0.35)"},
+      {"zoneplate", "k",
+       "0.5 + 0.5 cos(pi k r^2 / size): k = 1 reaches Nyquist at the edge (k = 1)"},
+      {"disc", "radius", "a white disc; radius as a fraction of the smaller side (0.3)"},
+      {"halfplane", "angle,offset",
+       "white where (p - centre) . (cos a, sin a) <= offset; angle (30), offset (0)"},
   };
   return kInfo;
+}
+
+std::string canonical_text(const Scene& scene) {
+  std::string t;
+  auto num = [&](double v) { t += fmt::format("{:.17g} ", v); };
+  auto pt = [&](Vec2 v) {
+    num(v.x);
+    num(v.y);
+  };
+  t += fmt::format("kind {} view ", scene.shape.index());
+  pt(scene.view.pivot);
+  num(scene.view.rotation_deg);
+  num(scene.view.scale);
+  pt(scene.view.translation);
+  t += "scene ";
+  std::visit(
+      Overloaded{
+          [&](const HalfPlaneScene& s) {
+            pt(s.origin);
+            num(s.angle_deg);
+            num(s.offset);
+          },
+          [&](const CheckerboardScene& s) {
+            for (double v : {s.width, s.height, s.horizon, s.focal, s.eye_height, s.rotation_deg})
+              num(v);
+          },
+          [&](const CirclesScene& s) {
+            num(s.width);
+            num(s.height);
+            num(s.count);
+          },
+          [&](const SliverScene& s) {
+            for (Vec2 v : {s.a, s.b, s.c}) pt(v);
+          },
+          [&](const SpiralScene& s) {
+            pt(s.centre);
+            for (double v : {s.turns, s.max_radius, s.arm}) num(v);
+          },
+          [&](const ZonePlateScene& s) {
+            pt(s.centre);
+            num(s.k);
+          },
+          [&](const DiscScene& s) {
+            pt(s.centre);
+            num(s.radius);
+          },
+          [&](const TriangleScene& s) {
+            for (Vec2 v : {s.a, s.b, s.c}) pt(v);
+          },
+          [&](const ShapesScene& s) {
+            num(s.background);
+            for (const Shape& sh : s.shapes) {
+              t += sh.polygon.empty() ? "circle " : "polygon ";
+              for (Vec2 v : sh.polygon) pt(v);
+              pt(sh.centre);
+              num(sh.radius);
+              num(sh.grey);
+            }
+          }},
+      scene.shape);
+  return t;
 }
 
 }  // namespace aapat

@@ -7,6 +7,7 @@
 
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -47,15 +48,51 @@ struct ZonePlateScene {  // 0.5 + 0.5 cos(pi k r^2): frequency grows with radius
   Vec2 centre{128, 128};
   double k = 0.004;
 };
+// A scene file's content: polygons (even-odd rule) and circles, each with its
+// grey level, painted in order over a background.
+struct Shape {
+  std::vector<Vec2> polygon;  // empty for a circle
+  Vec2 centre;
+  double radius = 0;
+  double grey = 1;
+};
+struct ShapesScene {
+  double background = 0;
+  std::vector<Shape> shapes;
+};
 
-using Scene = std::variant<HalfPlaneScene, CheckerboardScene, CirclesScene, SliverScene,
-                           SpiralScene, ZonePlateScene, DiscScene, TriangleScene>;
+using SceneShape = std::variant<HalfPlaneScene, CheckerboardScene, CirclesScene, SliverScene,
+                                SpiralScene, ZonePlateScene, DiscScene, TriangleScene, ShapesScene>;
+
+// Where the scene sits in the image: rotated by rotation_deg and scaled by
+// `scale` about `pivot`, then moved by `translation` (pixels).
+struct View {
+  Vec2 pivot;
+  double rotation_deg = 0, scale = 1;
+  Vec2 translation{0, 0};
+  bool identity() const {
+    return rotation_deg == 0 && scale == 1 && translation.x == 0 && translation.y == 0;
+  }
+  Vec2 to_scene(Vec2 image_point) const;  // the inverse map: where an image point reads the scene
+};
+
+struct Scene {
+  SceneShape shape;
+  View view;
+  template <class T>
+  requires std::is_constructible_v<SceneShape, T> Scene(T s)
+      : shape(std::move(s)) {}  // NOLINT: any scene kind is a Scene
+};
 
 // The grey level of the scene at p.
 double shade(const Scene& scene, Vec2 p);
 
-// `checkerboard`, `circles`, `sliver`, `spiral`, `zoneplate` or
-// `halfplane:angle=30,offset=0`, laid out for a width x height image.
+// Every field of the scene, exactly (%.17g): equal texts, equal images. Keys the reference cache.
+std::string canonical_text(const Scene& scene);
+
+// `checkerboard`, `circles`, `sliver`, `spiral`, `zoneplate`, `disc` or
+// `halfplane`, with optional parameters (`checkerboard:horizon=0.7,rotation=35`),
+// laid out for a width x height image. scene_catalog() lists the parameters.
 Scene make_scene(std::string_view spec, int width, int height);
 
 // Frame f of `frames` of an animation: `circle` (a disc of radius 0.3 x the
@@ -64,7 +101,7 @@ Scene make_scene(std::string_view spec, int width, int height);
 Scene animation_frame(std::string_view animation, int width, int height, int frame, int frames);
 
 struct SceneInfo {
-  std::string spec, summary;
+  std::string name, parameters, summary;
 };
 const std::vector<SceneInfo>& scene_catalog();
 
