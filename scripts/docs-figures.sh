@@ -28,4 +28,5 @@ done
   hasselgren-a hasselgren-b hasselgren-c hasselgren-d hasselgren-e quincunx-hasselgren \
   hasselgren-f --columns weights tent -o "$img/sheet-hasselgren-spiral.png" \
   --table docs/sheet-hasselgren-spiral.md >/dev/null
+"$aapat" hardware-table > docs/hardware-table.md
 echo "figures written under docs/"

@@ -41,6 +41,10 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   add(add_render_command);
   add(add_animate_command);
   add(add_table2_command);
+  add(add_snap_command);
+  add(add_export_command);
+  add(add_import_command);
+  add(add_hardware_table_command);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

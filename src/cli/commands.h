@@ -23,6 +23,10 @@ Action add_spectrum_command(CLI::App& app);
 Action add_render_command(CLI::App& app);
 Action add_animate_command(CLI::App& app);
 Action add_table2_command(CLI::App& app);
+Action add_snap_command(CLI::App& app);
+Action add_export_command(CLI::App& app);
+Action add_import_command(CLI::App& app);
+Action add_hardware_table_command(CLI::App& app);
 
 // Writes `content` to `path` whole or not at all; "-" writes to `out`.
 void write_output(const std::string& path, const std::string& content, std::ostream& out);

@@ -10,6 +10,7 @@
 #include "cli/metric_options.h"
 #include "io/pattern_json.h"
 #include "io/profile_plot.h"
+#include "optimize/descent.h"
 
 namespace aapat {
 
@@ -18,13 +19,15 @@ Action add_eval_command(CLI::App& app) {
   struct Options {
     std::vector<std::string> patterns;
     MetricOptions metric;
-    bool json = false;
+    bool json = false, optimized_weights = false;
     std::string profile;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("patterns", o->patterns, "catalog names or pattern files (.json)")->required();
   o->metric.add_to(cmd);
   cmd->add_flag("--json", o->json, "print one JSON array, an object per pattern");
+  cmd->add_flag("--optimized-weights", o->optimized_weights,
+                "also the E2 with weights optimized for the same positions");
   cmd->add_option("--profile", o->profile,
                   "write W(theta) E1(theta) of all patterns to a .svg plot or .csv table");
   return [o](std::ostream& out) {
@@ -38,12 +41,15 @@ Action add_eval_command(CLI::App& app) {
     std::vector<ProfileSeries> series;
     if (!o->json)
       out << fmt::format(
-          "filter {}, acuity {} ({} angles), norm {}\n{:<22} {:<14} {:>6} {:>8} {:>12} {:>7}\n",
+          "filter {}, acuity {} ({} angles), norm {}\n{:<22} {:<14} {:>6} {:>8} {:>12} {:>7}{}\n",
           metric.filter().name(), metric.acuity().name, metric.angle_count(), o->metric.norm,
-          "pattern", "family", "n", "E2", "worst angle", "kernel");
+          "pattern", "family", "n", "E2", "worst angle", "kernel",
+          o->optimized_weights ? "  E2 opt. W" : "");
     for (const Pattern& p : patterns) {
       const PatternError e = metric.evaluate(p);
       const double n = samples_per_pixel(p);
+      const double e2_w =
+          o->optimized_weights ? metric.evaluate(with_optimized_weights(metric, p, false)).e2 : 0;
       if (o->json) {
         rows.push_back({{"pattern", p.name},
                         {"family", family(p)},
@@ -55,9 +61,11 @@ Action add_eval_command(CLI::App& app) {
                         {"filter", metric.filter().name()},
                         {"acuity", metric.acuity().name},
                         {"norm", o->metric.norm}});
+        if (o->optimized_weights) rows.back()["e2_optimized_weights"] = e2_w;
       } else {
-        out << fmt::format("{:<22} {:<14} {:>6} {:>8.4f} {:>12g} {:>7}\n", p.name, family(p),
-                           format_cost(n), e.e2, e.worst_angle_deg, e.worst_kernel);
+        out << fmt::format("{:<22} {:<14} {:>6} {:>8.4f} {:>12g} {:>7}{}\n", p.name, family(p),
+                           format_cost(n), e.e2, e.worst_angle_deg, e.worst_kernel,
+                           o->optimized_weights ? fmt::format("  {:>10.4f}", e2_w) : "");
       }
       if (!o->profile.empty())
         series.push_back({p.name, metric.profile(make_kernel(p, e.worst_kernel))});

@@ -9,9 +9,12 @@
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
+#include "core/hardware_layout.h"
+#include "core/lattice.h"
 #include "io/pattern_json.h"
 #include "io/pattern_svg.h"
 #include "optimize/family.h"
+#include "optimize/lattice_search.h"
 #include "optimize/multistart.h"
 
 namespace aapat {
@@ -21,8 +24,9 @@ Action add_optimize_command(CLI::App& app) {
       "optimize", "optimize positions and weights: a family from random starts, or a pattern");
   struct Options {
     std::string pattern, family, placement, seeds = "jittered", method = "descent";
-    std::string output, csv, svg;
+    std::string output, csv, svg, api;
     MetricOptions metric;
+    int lattice = 0;
     int starts = 16, threads = 0, iterations = 4000;
     uint64_t seed = 1;
     double time_limit = 0;
@@ -56,6 +60,12 @@ Action add_optimize_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"descent", "minimax", "anneal"}));
   cmd->add_option("--threads", o->threads, "threads (0: all cores)")->check(CLI::Range(0, 1024));
+  cmd->add_option("--lattice", o->lattice,
+                  "then search positions on the 1/N-pixel lattice (16: programmable MSAA)")
+      ->check(CLI::Range(2, 256));
+  cmd->add_option("--api", o->api,
+                  "with --lattice: the pattern must fit this API profile (d3d12-tier1, "
+                  "d3d12-tier2, vulkan, metal, gl)");
   cmd->add_flag("--weights-only", o->weights_only, "keep positions, optimize weights (Opt W)");
   cmd->add_flag("--nonnegative", o->nonnegative, "keep weights >= 0 and report the E2 this costs");
   cmd->add_option("-o,--output", o->output, "write the best pattern (.json)");
@@ -71,6 +81,11 @@ Action add_optimize_command(CLI::App& app) {
     if (!o->output.empty() && !o->output.ends_with(".json"))
       throw Error(fmt::format("--output: '{}' must end in .json", o->output));
     const Metric metric = o->metric.make();
+    if (!o->api.empty() && o->lattice == 0) o->lattice = kLatticeSteps;
+    const ApiProfile* profile = o->api.empty() ? nullptr : &api_profile(o->api);
+    if (profile && o->lattice != kLatticeSteps)
+      throw Error(fmt::format("--api {}: the APIs' lattice is 1/16 pixel, not --lattice {}", o->api,
+                              o->lattice));
     OptimizerSettings settings;
     settings.method = o->method == "anneal"    ? Method::kAnneal
                       : o->method == "minimax" ? Method::kMinimax
@@ -135,6 +150,30 @@ Action add_optimize_command(CLI::App& app) {
     if (result.best < 0) throw Error("optimize: the time limit passed before any start ran");
     const StartRecord& best = result.starts[result.best];
 
+    // On the lattice: from the continuous optimum, kicks around it, and fresh seeds, all snapped.
+    std::string lattice_report;
+    if (o->lattice > 0) {
+      if (profile)  // fails early, naming the reason, if the family cannot fit the profile
+        hardware_layout(snap_to_lattice(pattern_of(make_seed(0)), o->lattice), *profile);
+      const LatticeSearch lat = lattice_search_from(metric, result.best_problem, make_seed, starts,
+                                                    o->seed, o->lattice, settings);
+      result.best_problem = lat.best;
+      lattice_report = fmt::format(
+          "lattice 1/{}{}: continuous E2 {:.4f}, snapped {:.4f}, lattice optimum {:.4f} ({:+.4f}; "
+          "best of {} lattice starts, start {}, {} moves)\n",
+          o->lattice, profile ? fmt::format(" for {}", profile->name) : "", best.run.final_e2,
+          lat.run.snapped_e2, lat.run.final_e2, lat.run.final_e2 - best.run.final_e2, lat.starts,
+          lat.best_start, lat.run.moves);
+      if (profile) {
+        const HardwareLayout L = hardware_layout(pattern_of(lat.best), *profile);
+        lattice_report += fmt::format(
+            "{}: {}x{} pixel grid, {}x MSAA, {} samples per pixel, the resolve reads {} per "
+            "output pixel\n",
+            profile->name, L.grid_w, L.grid_h, L.sample_count,
+            format_cost(samples_per_pixel(pattern_of(lat.best))), format_cost(L.reads()));
+      }
+    }
+
     Pattern p = pattern_of(result.best_problem);
     if (!o->pattern.empty()) {
       p.name = p.name + "-optimized";
@@ -158,6 +197,11 @@ Action add_optimize_command(CLI::App& app) {
         {"weights", o->weights_only ? "weights only" : "positions and weights"},
         {"nonnegative", o->nonnegative ? "yes" : "no"},
         {"e2", fmt::format("{:.6f}", best.run.final_e2)}};
+    if (o->lattice > 0) {
+      p.provenance.emplace_back("lattice", fmt::format("1/{} pixel", o->lattice));
+      if (profile) p.provenance.emplace_back("api", profile->name);
+      p.provenance.emplace_back("lattice_e2", fmt::format("{:.6f}", metric.evaluate(p).e2));
+    }
     validate(p);
 
     out << fmt::format("optimized {} ({}, acuity {}, norm {})\n", what, metric.filter().name(),
@@ -184,6 +228,7 @@ Action add_optimize_command(CLI::App& app) {
           "(cost {:+.4f})\n",
           best.run.final_e2, e_free, best.run.final_e2 - e_free);
     }
+    out << lattice_report;
     out << fmt::format("{}  {}  n = {}\n", p.name, family(p), format_cost(samples_per_pixel(p)));
     for (const Vec2& s : p.sets[0])
       out << fmt::format("  {:>9.5f} {:>9.5f}  {}\n", s.x, s.y, site_name(s));

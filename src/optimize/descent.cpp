@@ -82,4 +82,28 @@ RunResult descend(const Objective& objective, Problem& problem, const OptimizerS
   return r;
 }
 
+double optimize_weights(const Objective& objective, Problem& problem,
+                        const OptimizerSettings& settings) {
+  OptimizerSettings s = settings;
+  s.weights_only = true;
+  s.deadline.reset();
+  s.method = Method::kDescent;
+  descend(objective, problem, s);
+  s.method = Method::kMinimax;
+  return descend(objective, problem, s).final_e2;
+}
+
+Pattern with_optimized_weights(const Metric& metric, const Pattern& p, bool nonnegative) {
+  Problem problem = problem_from_pattern(p);
+  OptimizerSettings s;
+  s.nonnegative_weights = nonnegative;
+  optimize_weights(Objective(metric), problem, s);
+  Pattern q = pattern_of(problem);
+  q.name = p.name;
+  q.description = p.description;
+  q.provenance = p.provenance;
+  q.provenance.emplace_back("weights", nonnegative ? "optimized, non-negative" : "optimized");
+  return q;
+}
+
 }  // namespace aapat

@@ -1,0 +1,158 @@
+// `aapat snap`, `aapat export` and `aapat import`: patterns a GPU can be
+// programmed with. Snap to the 1/16-pixel lattice and see what it costs in
+// E2; write the API's position arrays and a resolve shader; read them back.
+#include <fmt/format.h>
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "cli/commands.h"
+#include "cli/metric_options.h"
+#include "core/filter_catalog.h"
+#include "core/hardware_layout.h"
+#include "core/lattice.h"
+#include "io/api_export.h"
+#include "io/atomic_file.h"
+#include "io/pattern_json.h"
+#include "optimize/descent.h"
+#include "optimize/problem.h"
+
+namespace aapat {
+
+Action add_snap_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "snap", "move every sample to the nearest 1/16-pixel lattice point; E2 before and after");
+  struct Options {
+    std::string pattern, output;
+    MetricOptions metric;
+    int lattice = kLatticeSteps;
+    bool weights = false, nonnegative = false, json = false;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("pattern", o->pattern, "catalog name or pattern file")->required();
+  cmd->add_option("--lattice", o->lattice, "steps per pixel")->capture_default_str();
+  o->metric.add_to(cmd);
+  cmd->add_flag("--optimize-weights", o->weights,
+                "then optimize the weights for the snapped positions");
+  cmd->add_flag("--nonnegative", o->nonnegative, "with --optimize-weights: weights >= 0");
+  cmd->add_option("-o,--output", o->output, "write the snapped pattern (.json)");
+  cmd->add_flag("--json", o->json, "print JSON");
+  return [o](std::ostream& out) {
+    if (!o->output.empty() && !o->output.ends_with(".json"))
+      throw Error(fmt::format("--output: '{}' must end in .json", o->output));
+    const Metric metric = o->metric.make();
+    const Pattern before = resolve_pattern(o->pattern);
+    Pattern after = snap_to_lattice(before, o->lattice);
+    after.name = fmt::format("{}-lattice{}", before.name, o->lattice);
+    const double e_before = metric.evaluate(before).e2, e_snapped = metric.evaluate(after).e2;
+    double e_weights = e_snapped;
+    if (o->weights) {
+      after = with_optimized_weights(metric, after, o->nonnegative);
+      e_weights = metric.evaluate(after).e2;
+    }
+    double moved = 0;
+    for (size_t k = 0; k < before.sets.size(); ++k)
+      for (size_t i = 0; i < before.sets[k].size(); ++i)
+        moved = std::max(moved, std::hypot(after.sets[k][i].x - before.sets[k][i].x,
+                                           after.sets[k][i].y - before.sets[k][i].y));
+    if (!o->output.empty()) save_pattern_file(after, o->output);
+    if (o->json) {
+      nlohmann::ordered_json js{{"pattern", before.name},       {"lattice", o->lattice},
+                                {"e2_before", e_before},        {"e2_snapped", e_snapped},
+                                {"largest_move", moved},        {"family", family(after)},
+                                {"n", samples_per_pixel(after)}};
+      if (o->weights) js["e2_optimized_weights"] = e_weights;
+      out << js.dump(2) << "\n";
+      return;
+    }
+    out << fmt::format(
+        "{} on the 1/{} lattice ({}): E2 {:.4f} -> {:.4f} ({:+.4f}); largest move "
+        "{:.4f} pixel\n",
+        before.name, o->lattice, family(after), e_before, e_snapped, e_snapped - e_before, moved);
+    if (o->weights)
+      out << fmt::format("with weights optimized for the snapped positions: E2 {:.4f}\n",
+                         e_weights);
+    for (size_t k = 0; k < after.sets.size(); ++k)
+      for (const Vec2& s : after.sets[k])
+        out << fmt::format("  set {}: ({:>2}/{}, {:>2}/{})  {}\n", k, std::lround(s.x * o->lattice),
+                           o->lattice, std::lround(s.y * o->lattice), o->lattice, site_name(s));
+    if (!o->output.empty()) out << "wrote " << o->output << "\n";
+  };
+}
+
+Action add_export_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "export", "write a lattice pattern as API sample positions and a resolve shader");
+  struct Options {
+    std::string pattern, api = "d3d12-tier1", shader, output, grid;
+    MetricOptions metric;
+    bool snap = false;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("pattern", o->pattern, "catalog name or pattern file (on the 1/16 lattice)")
+      ->required();
+  cmd->add_option("--api", o->api, "d3d12-tier1, d3d12-tier2, vulkan, metal or gl")
+      ->capture_default_str();
+  cmd->add_option("--shader", o->shader, "hlsl, glsl or msl (default: the API's own)");
+  cmd->add_option("--grid", o->grid, "pixel grid WxH (vulkan, gl; default: the pattern's tile)");
+  cmd->add_flag("--snap", o->snap, "snap the pattern to the lattice first");
+  o->metric.add_to(cmd);
+  cmd->add_option("-o,--output", o->output, "write here instead of printing");
+  return [o](std::ostream& out) {
+    const ApiProfile& profile = api_profile(o->api);
+    const Metric metric = o->metric.make();
+    const Pattern original = resolve_pattern(o->pattern);
+    const Pattern p = o->snap ? snap_to_lattice(original, kLatticeSteps) : original;
+    int gw = 0, gh = 0;
+    if (!o->grid.empty()) {
+      const auto x = o->grid.find('x');
+      if (x == std::string::npos) throw Error(fmt::format("--grid: '{}' is not WxH", o->grid));
+      gw = static_cast<int>(parse_number(o->grid.substr(0, x), "--grid"));
+      gh = static_cast<int>(parse_number(o->grid.substr(x + 1), "--grid"));
+      if (!profile.grid_choice)
+        throw Error(fmt::format("--grid: {} has a fixed grid", profile.name));
+    }
+    const HardwareLayout L = hardware_layout(p, profile, gw, gh);
+    std::vector<std::string> notes{
+        fmt::format(
+            "{} {}: E2 {:.4f} ({}, acuity {}){}", p.name, family(p), metric.evaluate(p).e2,
+            metric.filter().name(), metric.acuity().name,
+            o->snap ? fmt::format(", snapped from E2 {:.4f}", metric.evaluate(original).e2) : ""),
+        fmt::format("{} samples per pixel; the resolve reads {} per output pixel",
+                    format_cost(samples_per_pixel(p)), format_cost(L.reads()))};
+    const std::string text = export_layout(
+        L, o->shader.empty() ? default_shader(profile) : parse_shader_language(o->shader), notes);
+    if (o->output.empty()) {
+      out << text;
+    } else {
+      write_file_atomically(o->output, text);
+      out << "wrote " << o->output << "\n";
+    }
+  };
+}
+
+Action add_import_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("import", "read an exported layout back as a pattern file");
+  struct Options {
+    std::string input, output;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("file", o->input, "a file written by aapat export")->required();
+  cmd->add_option("-o,--output", o->output, "the pattern (.json; default: print it)");
+  return [o](std::ostream& out) {
+    const HardwareLayout L = parse_export(read_file(o->input, "export"), o->input);
+    Pattern p = pattern_from_layout(L);
+    p.provenance = {{"imported", o->input}, {"profile", L.profile}};
+    if (o->output.empty()) {
+      out << pattern_to_json(p);
+    } else {
+      if (!o->output.ends_with(".json"))
+        throw Error(fmt::format("--output: '{}' must end in .json", o->output));
+      save_pattern_file(p, o->output);
+      out << "wrote " << o->output << "\n";
+    }
+  };
+}
+
+}  // namespace aapat
