@@ -2,7 +2,7 @@
 # Installs the Debian packages aapat builds, tests and benchmarks with.
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config
-  libcli11-dev nlohmann-json3-dev libfmt-dev libpng-dev libgif-dev libtbb-dev
+  libcli11-dev nlohmann-json3-dev libfmt-dev libpng-dev libgif-dev libtbb-dev libvulkan-dev glslang-tools mesa-vulkan-drivers
   libgtest-dev libgmock-dev libbenchmark-dev librapidcheck-dev clang-format)
 missing=()
 for p in "${packages[@]}"; do
