@@ -411,13 +411,16 @@ namespace {
 
 TEST(CliRender, ImageErrorImageAndHistogram) {
   const std::string png = temp_path("r.png"), err = temp_path("e.png"), hist = temp_path("h.csv");
-  CliRun r = run({"render", "circles", "--pattern", "hasselgren-f", "--size", "32x32", "-o", png,
-                  "--error", err, "--histogram", hist, "--reference-samples", "64"});
+  const std::string ref = temp_path("ref.png");
+  CliRun r =
+      run({"render", "circles", "--pattern", "hasselgren-f", "--size", "32x32", "-o", png,
+           "--error", err, "--histogram", hist, "--reference-samples", "64", "--reference", ref});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("2 samples per pixel"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("RMSE"), std::string::npos);
   EXPECT_EQ(slurp(png).substr(1, 3), "PNG");
   EXPECT_EQ(slurp(err).substr(1, 3), "PNG");
+  EXPECT_EQ(slurp(ref).substr(1, 3), "PNG");
   std::istringstream lines(slurp(hist));
   std::string header;
   std::getline(lines, header);

@@ -27,7 +27,7 @@ namespace {
 
 struct Options {
   std::string scene, pattern, generator, filter, size = "256x256", output;
-  std::string error_png, histogram, histogram_svg, translate, table;
+  std::string error_png, histogram, histogram_svg, translate, table, reference_png;
   ReferenceOptions reference;
   double rotate = 0, scale = 1;
   int samples = 16, zoom = 1;
@@ -159,7 +159,7 @@ void run_single(const Options& o, std::ostream& out) {
   const auto [w, h] = parse_size(o.size);
   if (o.pattern.empty() == o.generator.empty())
     throw Error("render: give either --pattern or --generator");
-  for (const std::string* f : {&o.output, &o.error_png})
+  for (const std::string* f : {&o.output, &o.error_png, &o.reference_png})
     if (!f->empty() && !f->ends_with(".png")) throw Error(fmt::format("'{}' must end in .png", *f));
   const Scene scene = make_view_scene(o, w, h);
   Sampling sampling;
@@ -182,8 +182,8 @@ void run_single(const Options& o, std::ostream& out) {
   std::string text = fmt::format("{} {}x{}, {} with {}: {} samples per pixel\n", o.scene, w, h,
                                  what, filter ? filter->name() : "the pattern's weights",
                                  format_cost(stats.samples_per_pixel));
-  const bool want_reference =
-      o.json || !o.error_png.empty() || !o.histogram.empty() || !o.histogram_svg.empty();
+  const bool want_reference = o.json || !o.error_png.empty() || !o.histogram.empty() ||
+                              !o.histogram_svg.empty() || !o.reference_png.empty();
   if (want_reference) {
     ReferenceSettings ref = o.reference.settings;
     ref.seed = o.seed + 1000003;
@@ -199,6 +199,7 @@ void run_single(const Options& o, std::ostream& out) {
         "against {} jittered samples per pixel with {}: RMSE {:.3f}, max deviation {}, SSIM {}\n",
         ref.samples, ref_name, e.rmse, e.max_deviation, ssim_text(f));
     if (!o.error_png.empty()) write_png_gray(o.error_png, w, h, error_pixels(image, reference));
+    if (!o.reference_png.empty()) write_png_gray(o.reference_png, w, h, grey_pixels(reference));
     std::string csv = "deviation,count,contribution\n";
     LineSeries line{what, {}, {}};
     for (int i = 0; i < 256; ++i) {
@@ -246,6 +247,7 @@ Action add_render_command(CLI::App& app) {
   cmd->add_option("--translate", o->translate, "move the scene by X,Y pixels (after rotating)");
   cmd->add_option("--seed", o->seed, "random seed")->capture_default_str();
   cmd->add_option("-o,--output", o->output, "the rendering, or with --grid the sheet (.png)");
+  cmd->add_option("--reference", o->reference_png, "the dense reference image (.png)");
   cmd->add_option("--error", o->error_png, "error image against the reference (.png; black = 10%)");
   cmd->add_option("--histogram", o->histogram, "squared-error histogram C(i) i^2 / n (.csv)");
   cmd->add_option("--histogram-svg", o->histogram_svg, "the same histogram as a plot (.svg)");
