@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cmath>
-#include <regex>
 #include <sstream>
 
 #include "core/filter_catalog.h"
@@ -198,19 +198,40 @@ std::vector<double> array_numbers(std::string_view text, std::string_view name,
   const auto end = text.find(';', eq);
   if (eq == std::string_view::npos || end == std::string_view::npos)
     fail(source, fmt::format("array '{}' is not terminated", name));
-  // Comments inside the array are dropped before reading numbers.
-  std::string body(text.substr(eq + 1, end - eq - 1));
-  body = std::regex_replace(body, std::regex("//[^\n]*"), "");
-  static const std::regex token(R"([A-Za-z_]\w*|[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?)");
+  return numbers_in(text.substr(eq + 1, end - eq - 1));
+}
+
+}  // namespace
+
+std::vector<double> numbers_in(std::string_view code) {
   std::vector<double> values;
-  for (auto it = std::sregex_iterator(body.begin(), body.end(), token);
-       it != std::sregex_iterator(); ++it) {
-    const std::string t = it->str();
-    if (std::isalpha(static_cast<unsigned char>(t[0])) || t[0] == '_') continue;
-    values.push_back(parse_number(t, name));
+  size_t i = 0;
+  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  while (i < code.size()) {
+    const char c = code[i];
+    if (code.substr(i, 2) == "//") {
+      i = code.find('\n', i);  // a comment, to the end of its line
+      if (i == std::string_view::npos) break;
+    } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+      while (i < code.size() && ident(code[i])) ++i;  // int3, MTLSamplePositionMake, 0.5f's f
+    } else if (std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.') {
+      size_t j = i + 1;
+      while (j < code.size() &&
+             (std::isalnum(static_cast<unsigned char>(code[j])) || code[j] == '.' ||
+              ((code[j] == '-' || code[j] == '+') && (code[j - 1] == 'e' || code[j - 1] == 'E'))))
+        ++j;
+      std::string token(code.substr(i, j - i));
+      if (!token.empty() && (token.back() == 'f' || token.back() == 'u')) token.pop_back();
+      values.push_back(parse_number(token, "number"));
+      i = j;
+    } else {
+      ++i;
+    }
   }
   return values;
 }
+
+namespace {
 
 int whole(double v, std::string_view source, std::string_view what) {
   if (v != std::floor(v) || std::abs(v) > 1e6)

@@ -23,6 +23,10 @@ ShaderLanguage parse_shader_language(std::string_view name);
 std::string export_layout(const HardwareLayout& layout, ShaderLanguage shader,
                           const std::vector<std::string>& notes = {});
 
+// The numbers of a C-like initializer: comments, identifiers (int3, the f of
+// 0.5f) and punctuation skipped.
+std::vector<double> numbers_in(std::string_view code);
+
 // Reads an exported text back; `source` names it in error messages.
 HardwareLayout parse_export(std::string_view text, std::string_view source);
 

@@ -4,8 +4,6 @@
 
 #include <cstdlib>
 #include <fstream>
-#include <regex>
-#include <sstream>
 
 #include "core/lattice.h"
 #include "generate/catalog.h"
@@ -99,12 +97,8 @@ TEST(ApiExport, EveryExportedCoordinateIsLegal) {
       const auto begin = text.find("aapat_sample_positions[");
       const std::string body = text.substr(text.find('{', begin) + 1,
                                            text.find("};", begin) - text.find('{', begin) - 1);
-      const std::string numbers =
-          std::regex_replace(body, std::regex("//[^\n]*|[A-Za-z]\\w*"), " ");
-      std::istringstream in(std::regex_replace(numbers, std::regex("[{}(),f]"), " "));
-      double v;
       int count = 0;
-      while (in >> v) {
+      for (const double v : numbers_in(body)) {
         ++count;
         if (profile.api == Api::kD3D12) {
           EXPECT_EQ(v, std::floor(v)) << e.name;
@@ -120,6 +114,11 @@ TEST(ApiExport, EveryExportedCoordinateIsLegal) {
     }
   }
   EXPECT_GT(files, 40);
+}
+
+TEST(ApiExport, NumbersInSkipsCommentsAndIdentifiers) {
+  EXPECT_EQ(numbers_in("{int3(0, -1, 2), 0.5f, // 7 8\n 1e-05, MTLSamplePositionMake(0.25, 1)}"),
+            (std::vector<double>{0, -1, 2, 0.5, 1e-05, 0.25, 1}));
 }
 
 TEST(ApiExport, ImportRejectsDamagedText) {
