@@ -6,8 +6,10 @@
 #include <chrono>
 
 #include "core/filter_catalog.h"
+#include "generate/catalog.h"
 #include "optimize/descent.h"
 #include "optimize/family.h"
+#include "optimize/lattice_search.h"
 #include "optimize/multistart.h"
 
 namespace aapat {
@@ -92,6 +94,20 @@ BENCHMARK_CAPTURE(MethodComparison, p4_4_4, "P(4,4,4)", "")
     ->DenseRange(0, 2)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
+
+// One lattice descent (1/16 pixel) from a standard MSAA pattern: moves of up
+// to 2 steps ranked by E2, the best 4 with their weights optimized.
+void LatticeDescent(benchmark::State& state) {
+  const Problem start =
+      problem_from_pattern(catalog_pattern(state.range(0) == 8 ? "msaa-8" : "msaa-16"));
+  int moves = 0;
+  for (auto _ : state) {
+    Problem p = start;
+    moves = lattice_descent(metric(), p, 16, OptimizerSettings{}).moves;
+  }
+  state.counters["moves"] = moves;
+}
+BENCHMARK(LatticeDescent)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace aapat

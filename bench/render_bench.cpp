@@ -4,10 +4,12 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
+#include <cmath>
 #include <optional>
 
 #include "core/filter_catalog.h"
 #include "render/renderer.h"
+#include "render/ssim.h"
 
 namespace aapat {
 namespace {
@@ -28,6 +30,17 @@ void CheckerboardSamples(benchmark::State& state) {
   state.SetLabel(state.range(0) > 0 ? "1 thread" : "all threads");
 }
 BENCHMARK(CheckerboardSamples)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// SSIM of two 512 x 512 images (11 x 11 Gaussian window, separable).
+void Ssim512(benchmark::State& state) {
+  Image a{512, 512, 0, std::vector<double>(512 * 512)}, b = a;
+  for (size_t k = 0; k < a.values.size(); ++k) {
+    a.values[k] = 0.5 + 0.4 * std::sin(0.01 * double(k));
+    b.values[k] = 0.5 + 0.4 * std::sin(0.0101 * double(k));
+  }
+  for (auto _ : state) benchmark::DoNotOptimize(ssim(a, b));
+}
+BENCHMARK(Ssim512)->Unit(benchmark::kMillisecond);
 
 void Reference512At1024(benchmark::State& state) {
   const Scene scene = make_scene("checkerboard", 512, 512);
