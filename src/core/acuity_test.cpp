@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/geometry.h"
+#include "testing/error_message.h"
 
 namespace aapat {
 namespace {
@@ -31,15 +32,14 @@ TEST(Acuity, UniformAndLinearTables) {
 }
 
 void expect_error(const std::string& spec_or_text, const std::string& message, bool csv = false) {
-  try {
-    if (csv)
-      parse_acuity_csv(spec_or_text, "t.csv");
-    else
-      make_acuity(spec_or_text);
-    ADD_FAILURE() << spec_or_text << " accepted";
-  } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), message);
-  }
+  EXPECT_EQ(testing::error_message([&] {
+              if (csv)
+                parse_acuity_csv(spec_or_text, "t.csv");
+              else
+                make_acuity(spec_or_text);
+            }),
+            message)
+      << spec_or_text;
 }
 
 TEST(Acuity, CsvRowsAndErrors) {

@@ -4,18 +4,12 @@
 
 #include "core/lattice.h"
 #include "generate/catalog.h"
+#include "testing/error_message.h"
 
 namespace aapat {
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using testing::error_message;
 
 TEST(HardwareLayout, FlipquadOnATier2Grid) {
   const Pattern fq = snap_to_lattice(catalog_pattern("flipquad"), 16);
@@ -84,17 +78,18 @@ TEST(HardwareLayout, EveryPhysicalSampleOnceAndTheRoundTrip) {
 
 TEST(HardwareLayout, PatternsThatDoNotFitAreNamed) {
   const Pattern fq = snap_to_lattice(catalog_pattern("flipquad"), 16);
-  EXPECT_EQ(error_of([&] { hardware_layout(fq, api_profile("d3d12-tier1")); }),
+  EXPECT_EQ(error_message([&] { hardware_layout(fq, api_profile("d3d12-tier1")); }),
             "flipquad: a 2x2 tile does not fit d3d12-tier1's pixel grid (1x1 asked, at most 1x1, "
             "a multiple of the tile)");
-  EXPECT_NE(error_of([&] {
+  EXPECT_NE(error_message([&] {
               hardware_layout(catalog_pattern("flipquad"), api_profile("vulkan"));
             }).find("snap it first"),
             std::string::npos);
-  EXPECT_EQ(error_of([&] { hardware_layout(catalog_pattern("msaa-16"), api_profile("metal")); }),
-            "msaa-16: 16 samples per pixel (as 16x MSAA) is more than metal allows with a 1x1 grid "
-            "(8)");
-  EXPECT_NE(error_of([] { api_profile("d3d9"); }).find("known profiles are d3d12-tier1"),
+  EXPECT_EQ(
+      error_message([&] { hardware_layout(catalog_pattern("msaa-16"), api_profile("metal")); }),
+      "msaa-16: 16 samples per pixel (as 16x MSAA) is more than metal allows with a 1x1 grid "
+      "(8)");
+  EXPECT_NE(error_message([] { api_profile("d3d9"); }).find("known profiles are d3d12-tier1"),
             std::string::npos);
   // Vulkan takes a larger grid than the tile: the tile repeats in it.
   const HardwareLayout L = hardware_layout(catalog_pattern("msaa-4"), api_profile("vulkan"), 2, 2);

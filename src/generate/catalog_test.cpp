@@ -9,6 +9,7 @@
 
 #include "core/filter_catalog.h"
 #include "core/metric.h"
+#include "testing/error_message.h"
 
 namespace aapat {
 namespace {
@@ -71,12 +72,8 @@ TEST(Catalog, CrossPatternsAreShiftedToTheCentre) {
 
 TEST(Catalog, UnknownNamesAndBadGrids) {
   EXPECT_THROW(catalog_pattern("flipquadd"), Error);
-  try {
-    catalog_pattern("grid-3x4");
-    ADD_FAILURE();
-  } catch (const Error& e) {
-    EXPECT_STREQ(e.what(), "pattern 'grid-3x4': a uniform grid is grid-NxN with N = 1..32");
-  }
+  EXPECT_EQ(testing::error_message([] { catalog_pattern("grid-3x4"); }),
+            "pattern 'grid-3x4': a uniform grid is grid-NxN with N = 1..32");
   EXPECT_THROW(catalog_pattern("grid-33x33"), Error);
   EXPECT_EQ(catalog_pattern("grid-1x1").sets[0].size(), 1u);
 }

@@ -1,4 +1,5 @@
 #include "generate/point_generators.h"
+#include "testing/error_message.h"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -133,12 +134,7 @@ TEST(Generators, EveryGeneratorStaysInTheSquareAndIsDeterministic) {
 
 TEST(Generators, BadSpecsAreNamed) {
   auto msg = [](const std::string& spec, int n) {
-    try {
-      generate_points(spec, n, 0);
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
+    return testing::error_message([&] { generate_points(spec, n, 0); });
   };
   EXPECT_EQ(msg("jitter", 4).find("unknown generator 'jitter': known generators are regular, "),
             0u);

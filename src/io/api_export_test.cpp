@@ -8,6 +8,7 @@
 #include "core/lattice.h"
 #include "generate/catalog.h"
 #include "io/atomic_file.h"
+#include "testing/error_message.h"
 
 namespace aapat {
 namespace {
@@ -124,12 +125,7 @@ TEST(ApiExport, NumbersInSkipsCommentsAndIdentifiers) {
 TEST(ApiExport, ImportRejectsDamagedText) {
   const std::string good = export_layout(layout_of(kCases[0]), ShaderLanguage::kHlsl);
   auto error_of = [](const std::string& text) {
-    try {
-      parse_export(text, "x.txt");
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return testing::error_message([&] { parse_export(text, "x.txt"); });
   };
   EXPECT_NE(error_of("hello").find("import x.txt: the first line is not"), std::string::npos);
   std::string bad = good;

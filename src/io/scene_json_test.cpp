@@ -1,4 +1,5 @@
 #include "io/scene_json.h"
+#include "testing/error_message.h"
 
 #include <gtest/gtest.h>
 
@@ -27,12 +28,7 @@ TEST(SceneJson, ReadsPolygonsCirclesAndGreyLevels) {
 
 TEST(SceneJson, RejectsBadFilesByName) {
   auto message = [](const char* text) {
-    try {
-      scene_from_json(text, "s.json");
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return testing::error_message([&] { scene_from_json(text, "s.json"); });
   };
   EXPECT_NE(message("{").find("scene file s.json: not valid JSON"), std::string::npos);
   EXPECT_EQ(message(R"({"shapes": [{"polygon": [[0,0],[1,1]]}]})"),

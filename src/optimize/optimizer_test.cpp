@@ -11,6 +11,7 @@
 #include "optimize/descent.h"
 #include "optimize/family.h"
 #include "optimize/multistart.h"
+#include "testing/error_message.h"
 
 namespace aapat {
 namespace {
@@ -192,12 +193,8 @@ TEST(Optimizer, TermGradientsMatchCentralDifferences) {
 
 void expect_family_error(const std::string& family, const std::string& placement,
                          const std::string& message) {
-  try {
-    parse_family(family, placement);
-    ADD_FAILURE() << family << " " << placement;
-  } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), message);
-  }
+  EXPECT_EQ(testing::error_message([&] { parse_family(family, placement); }), message)
+      << family << " " << placement;
 }
 
 TEST(Family, ParsesAndExplainsWhatDoesNotFit) {

@@ -1,4 +1,5 @@
 #include "render/scene.h"
+#include "testing/error_message.h"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -57,12 +58,7 @@ TEST(Scene, ParametersAreReadCheckedAndNamed) {
   EXPECT_EQ(std::get<CirclesScene>(make_scene("circles:count=5", 64, 64).shape).count, 5);
   EXPECT_EQ(std::get<DiscScene>(make_scene("disc:radius=0.25", 64, 32).shape).radius, 8);
   auto message = [](const char* spec) {
-    try {
-      make_scene(spec, 64, 64);
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return testing::error_message([&] { make_scene(spec, 64, 64); });
   };
   EXPECT_EQ(message("spiral:twist=3"),
             "scene spiral: unknown parameter 'twist=3' (it takes turns,arm)");

@@ -1,0 +1,22 @@
+// For tests of bad input: what an action throws, so that a test can compare
+// the message with the exact text users will read.
+#pragma once
+
+#include <string>
+
+#include "core/geometry.h"
+
+namespace aapat::testing {
+
+// The message of the Error that f throws, or "no error" when it returns.
+template <class F>
+std::string error_message(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace aapat::testing
