@@ -31,8 +31,7 @@ struct AnimationOptions {
   AnimationSettings settings() const {
     AnimationSettings s = a;
     s.height = s.width;
-    s.reference_samples = reference.settings.samples;
-    s.reference_filter = reference.settings.filter;
+    s.reference = reference.settings;
     return s;
   }
 };
@@ -45,8 +44,10 @@ void add_animation_options(CLI::App* cmd, AnimationOptions& o) {
   cmd->add_option("--frames", a.frames, "frames")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
-  cmd->add_option("--seed", a.seed, "random seed of the reference")->capture_default_str();
-  add_reference_options(cmd, o.reference, a.reference_samples);
+  o.reference.settings = a.reference;
+  add_reference_options(cmd, o.reference, a.reference.samples);
+  cmd->add_option("--seed", o.reference.settings.seed, "random seed of the reference")
+      ->capture_default_str();
 }
 
 // MP4 through ffmpeg, from the frames' PNGs in `dir`; written whole or not at all.
@@ -194,8 +195,8 @@ Action add_table2_command(CLI::App& app) {
         "jittered samples per pixel with {}\naapat (paper)         E2               RMSE           "
         " "
         "  max dev.\n{}",
-        a->frames, a->width, a->width, a->reference_samples,
-        make_filter(a->reference_filter).name(), table);
+        a->frames, a->width, a->width, a->reference.samples,
+        make_filter(a->reference.filter).name(), table);
   };
 }
 

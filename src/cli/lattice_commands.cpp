@@ -6,6 +6,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <tuple>
 
 #include "cli/commands.h"
 #include "cli/metric_options.h"
@@ -106,10 +107,7 @@ Action add_export_command(CLI::App& app) {
     const Pattern p = o->snap ? snap_to_lattice(original, kLatticeSteps) : original;
     int gw = 0, gh = 0;
     if (!o->grid.empty()) {
-      const auto x = o->grid.find('x');
-      if (x == std::string::npos) throw Error(fmt::format("--grid: '{}' is not WxH", o->grid));
-      gw = static_cast<int>(parse_number(o->grid.substr(0, x), "--grid"));
-      gh = static_cast<int>(parse_number(o->grid.substr(x + 1), "--grid"));
+      std::tie(gw, gh) = parse_size(o->grid, "--grid", profile.max_grid);
       if (!profile.grid_choice)
         throw Error(fmt::format("--grid: {} has a fixed grid", profile.name));
     }

@@ -38,14 +38,11 @@ struct Options {
   std::vector<std::string> columns{"box", "tent", "gaussian-half"};
 };
 
-std::pair<int, int> parse_size(const std::string& size) {
-  const auto x = size.find('x');
-  if (x == std::string::npos) throw Error(fmt::format("--size: '{}' is not WIDTHxHEIGHT", size));
-  const double w = parse_number(size.substr(0, x), "--size"),
-               h = parse_number(size.substr(x + 1), "--size");
-  if (!(w >= 1 && h >= 1 && w <= 16384 && h <= 16384) || w != std::floor(w) || h != std::floor(h))
-    throw Error(fmt::format("--size: '{}' must be whole numbers from 1 to 16384", size));
-  return {static_cast<int>(w), static_cast<int>(h)};
+// The reference every figure of this run is measured against.
+ReferenceSettings reference_settings(const Options& o) {
+  ReferenceSettings ref = o.reference.settings;
+  ref.seed = o.seed + 1000003;
+  return ref;
 }
 
 Scene make_view_scene(const Options& o, int w, int h) {
@@ -102,13 +99,12 @@ Sampling row_sampling(const std::string& row, uint64_t seed) {
 }
 
 void run_grid(const Options& o, std::ostream& out) {
-  const auto [w, h] = parse_size(o.size);
+  const auto [w, h] = parse_size(o.size, "--size", 16384);
   if (o.output.empty() || !o.output.ends_with(".png"))
     throw Error("render --grid: give the sheet's file with -o SHEET.png");
   const Scene scene = make_view_scene(o, w, h);
   const ReferenceSource references = o.reference.source();
-  ReferenceSettings ref = o.reference.settings;
-  ref.seed = o.seed + 1000003;
+  const ReferenceSettings ref = reference_settings(o);
   std::map<double, Image> reference_at;  // by offset: even footprints shift the image
   ContactSheet sheet{fmt::format("{} {}x{}", o.scene, w, h), o.rows, o.columns, {}, o.zoom};
   std::string table = "| sampling | filter | samples/pixel | RMSE | max dev. | SSIM |\n";
@@ -156,7 +152,7 @@ void run_grid(const Options& o, std::ostream& out) {
 }
 
 void run_single(const Options& o, std::ostream& out) {
-  const auto [w, h] = parse_size(o.size);
+  const auto [w, h] = parse_size(o.size, "--size", 16384);
   if (o.pattern.empty() == o.generator.empty())
     throw Error("render: give either --pattern or --generator");
   for (const std::string* f : {&o.output, &o.error_png, &o.reference_png})
@@ -185,8 +181,7 @@ void run_single(const Options& o, std::ostream& out) {
   const bool want_reference = o.json || !o.error_png.empty() || !o.histogram.empty() ||
                               !o.histogram_svg.empty() || !o.reference_png.empty();
   if (want_reference) {
-    ReferenceSettings ref = o.reference.settings;
-    ref.seed = o.seed + 1000003;
+    const ReferenceSettings ref = reference_settings(o);
     const Image reference = o.reference.source()(scene, w, h, ref, image.offset);
     const Figures f = measure(image, reference);
     const ImageError& e = f.error;

@@ -136,6 +136,17 @@ double parse_number(std::string_view text, std::string_view what) {
   return num / den;
 }
 
+std::pair<int, int> parse_size(std::string_view text, std::string_view what, int max) {
+  const auto x = text.find('x');
+  if (x == std::string_view::npos)
+    throw Error(fmt::format("{}: '{}' is not WIDTHxHEIGHT", what, text));
+  const double w = parse_number(text.substr(0, x), what),
+               h = parse_number(text.substr(x + 1), what);
+  if (!(w >= 1 && h >= 1 && w <= max && h <= max) || w != std::floor(w) || h != std::floor(h))
+    throw Error(fmt::format("{}: '{}' must be whole numbers from 1 to {}", what, text, max));
+  return {static_cast<int>(w), static_cast<int>(h)};
+}
+
 const std::vector<FilterInfo>& filter_catalog() {
   static const std::vector<FilterInfo> kInfos = [] {
     std::vector<FilterInfo> v;

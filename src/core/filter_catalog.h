@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/filter.h"
@@ -35,5 +36,8 @@ inline constexpr std::string_view kDefaultFilter = "mitchell";
 
 // A finite number written as a decimal or a fraction ("1/3", "-1/4", "0.5").
 double parse_number(std::string_view text, std::string_view what);
+
+// "WIDTHxHEIGHT", both whole numbers from 1 to `max`.
+std::pair<int, int> parse_size(std::string_view text, std::string_view what, int max);
 
 }  // namespace aapat

@@ -68,6 +68,12 @@ double HardwareLayout::reads() const {
   return taps.empty() ? 0 : sum / static_cast<double>(taps.size());
 }
 
+LatticePoint HardwareLayout::slot(int g, int i) const {
+  const auto& own = positions[g];
+  if (i < static_cast<int>(own.size())) return own[i];
+  return own.empty() ? LatticePoint{kSide / 2, kSide / 2} : own[0];
+}
+
 HardwareLayout hardware_layout(const Pattern& p, const ApiProfile& profile, int grid_w,
                                int grid_h) {
   validate(p);
@@ -164,7 +170,7 @@ Pattern pattern_from_layout(const HardwareLayout& L) {
   p.weights.resize(p.sets.size());
   for (int g = 0; g < L.grid_w * L.grid_h; ++g) {
     const int gx = g % L.grid_w, gy = g / L.grid_w;
-    const int k = (down ? L.grid_h - 1 - gy : gy) * L.grid_w + gx;
+    const int k = tile_index(p, gx, gy, L.grid_h, down);
     for (const Tap& t : L.taps[g]) {
       const auto& owner =
           L.positions[wrap(gy + t.dy, L.grid_h) * L.grid_w + wrap(gx + t.dx, L.grid_w)];

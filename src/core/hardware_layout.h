@@ -53,6 +53,10 @@ struct HardwareLayout {
   std::string name;
   // Samples the resolve reads per output pixel, on average.
   double reads() const;
+  // What MSAA sample i of grid pixel g is programmed to: its own sample, or
+  // for a pixel that owns fewer than sample_count, a copy of its first (the
+  // centre if it owns none), which the resolve never reads.
+  LatticePoint slot(int g, int i) const;
 };
 
 // The layout of a pattern on the 1/16 lattice (snap it first) for a profile.

@@ -80,12 +80,7 @@ std::string host_code(const HardwareLayout& L, const ApiProfile& profile) {
   for (int g = 0; g < pixels; ++g) {
     std::string row = "    ";
     for (int i = 0; i < L.sample_count; ++i) {
-      // Pixels that own fewer samples repeat their first (the resolve never reads these).
-      const auto& own = L.positions[g];
-      const LatticePoint q = i < static_cast<int>(own.size()) ? own[i]
-                             : own.empty()                    ? LatticePoint{8, 8}
-                                                              : own[0];
-      row += position_text(profile, q);
+      row += position_text(profile, L.slot(g, i));
       if (g + 1 < pixels || i + 1 < L.sample_count) row += ", ";
     }
     out += fmt::format("{}  // pixel ({}, {}){}\n", row, g % L.grid_w, g / L.grid_w,

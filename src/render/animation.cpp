@@ -14,7 +14,8 @@ ImageError animate(const AnimationSettings& a, const Sampling& sampling,
   for (int f = 0; f < a.frames; ++f) {
     const Scene scene = animation_frame(a.animation, a.width, a.height, f, a.frames);
     const Image image = render(scene, a.width, a.height, sampling, filter);
-    const ReferenceSettings ref{a.reference_samples, a.reference_filter, a.seed + 7919 * (f + 1)};
+    ReferenceSettings ref = a.reference;
+    ref.seed += 7919 * (f + 1);
     const Image reference = source(scene, a.width, a.height, ref, image.offset);
     const ImageError e = compare(image, reference);
     for (int i = 0; i < 256; ++i) total.count[i] += e.count[i];

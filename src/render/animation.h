@@ -17,9 +17,8 @@ namespace aapat {
 struct AnimationSettings {
   std::string animation = "circle";
   int width = 64, height = 64, frames = 32;
-  int reference_samples = 256;  // Hasselgren's animations: 256 jittered samples
-  std::string reference_filter = "mitchell";
-  uint64_t seed = 1;
+  // Hasselgren's animations: 256 jittered samples; frame f's seed is seed + 7919 (f + 1).
+  ReferenceSettings reference{256, "mitchell", 1};
 };
 
 // Calls on_frame(frame, image) for each frame if given (to write PNGs).

@@ -8,10 +8,6 @@
 namespace aapat {
 namespace {
 
-int level(double v) {
-  return static_cast<int>(std::lround(255 * std::clamp(v, 0.0, 1.0)));
-}
-
 void check_sizes(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height)
     throw Error(fmt::format("compare: a {}x{} image against a {}x{} reference", a.width, a.height,
@@ -20,12 +16,16 @@ void check_sizes(const Image& a, const Image& b) {
 
 }  // namespace
 
+int grey_level(double v) {
+  return static_cast<int>(std::lround(255 * std::clamp(v, 0.0, 1.0)));
+}
+
 ImageError compare(const Image& image, const Image& reference) {
   check_sizes(image, reference);
   ImageError e;
   const double n = static_cast<double>(image.values.size());
   for (size_t k = 0; k < image.values.size(); ++k) {
-    const int i = std::abs(level(image.values[k]) - level(reference.values[k]));
+    const int i = std::abs(grey_level(image.values[k]) - grey_level(reference.values[k]));
     ++e.count[i];
     e.max_deviation = std::max(e.max_deviation, i);
   }
@@ -59,7 +59,7 @@ std::vector<uint8_t> grey_pixels(const Image& image) {
   for (int j = 0; j < image.height; ++j)
     for (int i = 0; i < image.width; ++i)
       out[static_cast<size_t>(image.height - 1 - j) * image.width + i] =
-          static_cast<uint8_t>(level(image.at(i, j)));
+          static_cast<uint8_t>(grey_level(image.at(i, j)));
   return out;
 }
 

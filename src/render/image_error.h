@@ -20,6 +20,9 @@ struct ImageError {
   std::array<long long, 256> count{};      // C(i)
 };
 
+// A value in [0, 1] as the 8-bit level a PNG holds: round(255 v), clamped.
+int grey_level(double v);
+
 ImageError compare(const Image& image, const Image& reference);
 // Fills contribution and rmse from count, over `pixels` deviations in all.
 void summarize(ImageError& e, double pixels);

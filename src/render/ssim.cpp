@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 
+#include "render/image_error.h"
+
 namespace aapat {
 namespace {
 
@@ -55,9 +57,8 @@ double ssim(const Image& a, const Image& b) {
   if (a.width < kSsimWindow || a.height < kSsimWindow)
     throw Error(fmt::format("ssim: a {}x{} image is smaller than the {}x{} window", a.width,
                             a.height, kSsimWindow, kSsimWindow));
-  auto level = [](double v) { return std::round(kL * std::clamp(v, 0.0, 1.0)); };
-  auto x = [&](int i, int j) { return level(a.at(i, j)); };
-  auto y = [&](int i, int j) { return level(b.at(i, j)); };
+  auto x = [&](int i, int j) { return double(grey_level(a.at(i, j))); };
+  auto y = [&](int i, int j) { return double(grey_level(b.at(i, j))); };
   const int w = a.width, h = a.height;
   const auto mx = window_means(w, h, x), my = window_means(w, h, y);
   const auto mxx = window_means(w, h, [&](int i, int j) { return x(i, j) * x(i, j); });

@@ -238,11 +238,9 @@ std::vector<float> render_on_gpu(Gpu& g, const aapat::HardwareLayout& L, const s
                                  const aapat::ShapesScene& scene, int w, int h) {
   const auto samples = static_cast<VkSampleCountFlagBits>(L.sample_count);
   std::vector<VkSampleLocationEXT> locations;
-  for (const auto& px : L.positions)
+  for (int p = 0; p < L.grid_w * L.grid_h; ++p)
     for (int i = 0; i < L.sample_count; ++i) {
-      const auto q = i < static_cast<int>(px.size()) ? px[i]
-                     : px.empty()                    ? aapat::LatticePoint{8, 8}
-                                                     : px[0];
+      const aapat::LatticePoint q = L.slot(p, i);
       locations.push_back({q.x / 16.0f, q.y / 16.0f});
     }
   if (!g.sample_locations) {
@@ -584,8 +582,7 @@ int run(int argc, char** argv) {
                  "fail (exit 2) if the largest deviation on the 0-255 scale is above this");
   CLI11_PARSE(app, argc, argv);
   try {
-    const auto x = size.find('x');
-    const int w = std::atoi(size.substr(0, x).c_str()), h = std::atoi(size.substr(x + 1).c_str());
+    const auto [w, h] = aapat::parse_size(size, "--size", 4096);
     const std::string text = aapat::read_file(export_path, "export");
     const aapat::HardwareLayout L = aapat::parse_export(text, export_path);
     if (L.profile != "vulkan") throw Error("export with --api vulkan");
