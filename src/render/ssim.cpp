@@ -57,8 +57,14 @@ double ssim(const Image& a, const Image& b) {
   if (a.width < kSsimWindow || a.height < kSsimWindow)
     throw Error(fmt::format("ssim: a {}x{} image is smaller than the {}x{} window", a.width,
                             a.height, kSsimWindow, kSsimWindow));
-  auto x = [&](int i, int j) { return double(grey_level(a.at(i, j))); };
-  auto y = [&](int i, int j) { return double(grey_level(b.at(i, j))); };
+  // Both images as levels once, not once per window tap of each of the five means.
+  std::vector<double> la(a.values.size()), lb(b.values.size());
+  for (size_t k = 0; k < la.size(); ++k) {
+    la[k] = grey_level(a.values[k]);
+    lb[k] = grey_level(b.values[k]);
+  }
+  auto x = [&](int i, int j) { return la[static_cast<size_t>(j) * a.width + i]; };
+  auto y = [&](int i, int j) { return lb[static_cast<size_t>(j) * b.width + i]; };
   const int w = a.width, h = a.height;
   const auto mx = window_means(w, h, x), my = window_means(w, h, y);
   const auto mxx = window_means(w, h, [&](int i, int j) { return x(i, j) * x(i, j); });
