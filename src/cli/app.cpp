@@ -1,5 +1,10 @@
 #include "cli/app.h"
 
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "cli/commands.h"
@@ -7,6 +12,48 @@
 #include "io/atomic_file.h"
 
 namespace aapat {
+namespace {
+
+std::ostream* g_warnings = nullptr;
+
+// The message of the exception in flight, whatever its type: library errors
+// as they are, the rest named for what they mean to a user.
+std::string describe_current_exception() {
+  try {
+    throw;
+  } catch (const Error& e) {
+    return e.what();
+  } catch (const std::bad_alloc&) {
+    return "out of memory: the job is too large for this machine (see docs/limits.md)";
+  } catch (const std::filesystem::filesystem_error& e) {
+    return fmt::format("file system: {}", e.what());
+  } catch (const nlohmann::json::exception& e) {
+    return fmt::format("JSON: {}", e.what());
+  } catch (const std::exception& e) {
+    return fmt::format("internal error ({}); please report it", e.what());
+  } catch (...) {
+    return "internal error (unknown exception); please report it";
+  }
+}
+
+}  // namespace
+
+std::ostream& warnings() {
+  return g_warnings ? *g_warnings : std::cerr;
+}
+
+CLI::Option* add_seed_option(CLI::App* cmd, uint64_t& seed, const std::string& help) {
+  return cmd->add_option("--seed", seed, help)
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            const bool digits =
+                !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+            return digits ? std::string()
+                          : "a seed is a whole number from 0 to 2^64 - 1, not '" + text + "'";
+          },
+          "UINT64"));
+}
 
 void write_output(const std::string& path, const std::string& content, std::ostream& out) {
   if (path == "-") {
@@ -48,16 +95,28 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e, out, err);
+    // --help and --version exit 0; every mistake on the command line exits 2.
+    return app.exit(e, out, err) == 0 ? kExitOk : kExitUsage;
+  } catch (...) {
+    err << "aapat: error: " << describe_current_exception() << "\n";
+    return kExitUsage;
   }
+  g_warnings = &err;
+  struct ResetWarnings {
+    ~ResetWarnings() { g_warnings = nullptr; }
+  } reset;
   try {
+    // A command writes all its files or, when it fails, none.
+    OutputTransaction outputs;
     for (auto& [sub, action] : commands)
       if (sub->parsed()) action(out);
-  } catch (const Error& e) {
-    err << "aapat: error: " << e.what() << "\n";
-    return 1;
+    out.flush();
+    outputs.commit();
+  } catch (...) {
+    err << "aapat: error: " << describe_current_exception() << "\n";
+    return kExitError;
   }
-  return 0;
+  return kExitOk;
 }
 
 }  // namespace aapat

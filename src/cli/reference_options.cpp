@@ -1,12 +1,22 @@
 #include "cli/reference_options.h"
 
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "cli/app.h"
 #include "io/reference_cache.h"
 
 namespace aapat {
 
 ReferenceSource ReferenceOptions::source() const {
-  if (no_cache) return render_reference;
-  return cached_references(cache_dir.empty() ? default_cache_dir() : cache_dir);
+  // In memory for the run either way: the commands that compare several
+  // patterns ask for the same references again.
+  if (no_cache) return remembered_references(render_reference);
+  return remembered_references(cached_references(
+      cache_dir.empty() ? default_cache_dir() : cache_dir,
+      [](const std::string& message) { warnings() << "aapat: warning: " << message << "\n"; }));
 }
 
 void add_reference_options(CLI::App* cmd, ReferenceOptions& o, int samples_default) {
@@ -14,7 +24,18 @@ void add_reference_options(CLI::App* cmd, ReferenceOptions& o, int samples_defau
   cmd->add_option("--reference-samples", o.settings.samples,
                   "jittered samples per pixel of the reference (a square)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 65536));
+      ->check(CLI::Range(1, 65536))
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            const long n = std::strtol(text.c_str(), nullptr, 10);
+            const long k = std::lround(std::sqrt(static_cast<double>(n)));
+            return k * k == n ? std::string()
+                              : fmt::format(
+                                    "{} is not a square number: the reference takes k x k "
+                                    "jittered samples (1, 4, 9, ..., 1024, ...)",
+                                    text);
+          },
+          "SQUARE"));
   cmd->add_option("--reference-filter", o.settings.filter, "the reference's filter")
       ->capture_default_str();
   cmd->add_option("--cache", o.cache_dir,

@@ -1,5 +1,10 @@
 // Output files are written whole or not at all: the content goes to a
 // temporary file in the same folder, which is then renamed over the target.
+//
+// A command writes all its files or none: while an OutputTransaction is open
+// the renames wait for its commit, and a transaction that ends without one
+// (an error, an exception) deletes what it staged. Temporary files are also
+// removed when SIGINT or SIGTERM ends the process mid-write.
 #pragma once
 
 #include <string>
@@ -7,7 +12,42 @@
 
 namespace aapat {
 
+// Writes `content` to `path` whole or not at all. Inside an open transaction
+// the file appears at commit.
 void write_file_atomically(const std::string& path, std::string_view content);
-std::string read_file(const std::string& path, std::string_view what);
+// The same, but the file appears now (an input another program reads, a cache
+// entry); inside a transaction, a file that did not exist before is deleted
+// again if the transaction does not commit, unless `keep_on_rollback`.
+void write_file_now(const std::string& path, std::string_view content,
+                    bool keep_on_rollback = false);
+
+// Reads a whole regular file of at most `max_bytes`; the message names `what`,
+// the path and the reason (missing, a folder, too large, unreadable).
+inline constexpr size_t kMaxInputFileBytes = size_t{256} << 20;
+std::string read_file(const std::string& path, std::string_view what,
+                      size_t max_bytes = kMaxInputFileBytes);
+
+// Creates `path` (and its parents) as a folder, or checks that it is one;
+// throws Error naming `what` when it is a file or cannot be made.
+void ensure_directory(const std::string& path, std::string_view what);
+
+// Checks, before any work, that `path` can become the folder `ensure_directory`
+// makes: it is a writable folder, or nothing is there yet.
+void check_directory_target(const std::string& path, std::string_view what);
+
+// One command's outputs: all of them or none. At most one is open at a time.
+class OutputTransaction {
+ public:
+  OutputTransaction();
+  ~OutputTransaction();  // rolls back unless committed
+  OutputTransaction(const OutputTransaction&) = delete;
+  OutputTransaction& operator=(const OutputTransaction&) = delete;
+  // Renames every staged file onto its target, in the order written.
+  void commit();
+};
+
+// Installs SIGINT and SIGTERM handlers that delete the temporary files of
+// writes in flight, then end the process as the signal would.
+void remove_temporaries_on_signals();
 
 }  // namespace aapat

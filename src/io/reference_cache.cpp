@@ -5,6 +5,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
 
 #include "io/atomic_file.h"
 
@@ -36,15 +39,24 @@ std::string default_cache_dir() {
   return ".aapat-cache";
 }
 
-ReferenceSource cached_references(std::string dir) {
-  return [dir = std::move(dir)](const Scene& scene, int width, int height,
-                                const ReferenceSettings& r, double offset) {
+ReferenceSource cached_references(std::string dir, Warn warn) {
+  auto warned = std::make_shared<bool>(false);
+  auto warn_once = [warn, warned](const std::string& message) {
+    if (warn && !*warned) warn(message + "; continuing without the reference cache");
+    *warned = true;
+  };
+  return [dir = std::move(dir), warn_once](const Scene& scene, int width, int height,
+                                           const ReferenceSettings& r, double offset) {
     const std::string key = key_text(scene, width, height, r, offset);
     const std::string path = fmt::format("{}/reference-{:016x}.bin", dir, fnv1a(key));
     const size_t bytes = sizeof(double) * static_cast<size_t>(width) * height;
     std::error_code ec;
     if (std::filesystem::is_regular_file(path, ec)) {
-      const std::string data = read_file(path, "cached reference");
+      std::string data;
+      try {
+        data = read_file(path, "cached reference", kMagic.size() + key.size() + bytes);
+      } catch (const Error&) {  // unreadable: recomputed below
+      }
       const std::string head = std::string(kMagic) + key;
       // A file that is not exactly this reference (collision, older format) is recomputed.
       if (data.size() == head.size() + bytes && data.compare(0, head.size(), head) == 0) {
@@ -55,11 +67,40 @@ ReferenceSource cached_references(std::string dir) {
       }
     }
     Image image = render_reference(scene, width, height, r, offset);
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw Error(fmt::format("reference cache: cannot create '{}': {}", dir, ec.message()));
-    std::string data = std::string(kMagic) + key;
-    data.append(reinterpret_cast<const char*>(image.values.data()), bytes);
-    write_file_atomically(path, data);
+    try {
+      ensure_directory(dir, "reference cache");
+      std::string data = std::string(kMagic) + key;
+      data.append(reinterpret_cast<const char*>(image.values.data()), bytes);
+      write_file_now(path, data, /*keep_on_rollback=*/true);  // valid whatever the run does next
+    } catch (const Error& e) {
+      warn_once(e.what());
+    }
+    return image;
+  };
+}
+
+ReferenceSource remembered_references(ReferenceSource source) {
+  struct Memory {
+    std::mutex mutex;
+    std::map<std::string, Image> images;
+    size_t bytes = 0;
+  };
+  auto memory = std::make_shared<Memory>();
+  return [source = std::move(source), memory](const Scene& scene, int width, int height,
+                                              const ReferenceSettings& r, double offset) {
+    constexpr size_t kMaxBytes = size_t{1} << 30;
+    const std::string key = key_text(scene, width, height, r, offset);
+    {
+      const std::lock_guard lock(memory->mutex);
+      if (auto it = memory->images.find(key); it != memory->images.end()) return it->second;
+    }
+    Image image = source(scene, width, height, r, offset);
+    const std::lock_guard lock(memory->mutex);
+    const size_t bytes = image.values.size() * sizeof(double);
+    if (memory->bytes + bytes <= kMaxBytes) {
+      memory->images.emplace(key, image);
+      memory->bytes += bytes;
+    }
     return image;
   };
 }

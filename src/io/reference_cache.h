@@ -14,7 +14,14 @@ namespace aapat {
 // The default folder: $AAPAT_CACHE, else $XDG_CACHE_HOME/aapat, else ~/.cache/aapat.
 std::string default_cache_dir();
 
-// A reference source that reads from and writes to `dir` (created when needed).
-ReferenceSource cached_references(std::string dir);
+// A reference source that reads from and writes to `dir` (created when
+// needed). A folder that cannot be made or written is not an error: `warn`
+// hears why once, and the references are rendered without the cache.
+using Warn = std::function<void(const std::string&)>;
+ReferenceSource cached_references(std::string dir, Warn warn = {});
+
+// `source` with the references of this run kept in memory (up to 1 GiB), so
+// that patterns compared on the same scenes share each reference.
+ReferenceSource remembered_references(ReferenceSource source);
 
 }  // namespace aapat
