@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -23,9 +25,12 @@ AcuityTable laine_aila_acuity() {
 }
 
 namespace {
+constexpr double kMinStep = 180.0 / kMaxAcuityAngles;
 double check_step(double step) {
-  if (!(step > 0 && step <= 90 && std::isfinite(step)))
-    throw Error(fmt::format("acuity step {} is out of range (0, 90] degrees", step));
+  if (!(step >= kMinStep && step <= 90))
+    throw Error(fmt::format(
+        "acuity step {} is out of range [{}, 90] degrees (at most {} angles in [0, 180))", step,
+        kMinStep, kMaxAcuityAngles));
   return step;
 }
 std::vector<double> angles_every(double step) {
@@ -33,12 +38,60 @@ std::vector<double> angles_every(double step) {
   for (int i = 0; i * step < 180 - 1e-9; ++i) a.push_back(i * step);
   return a;
 }
+// Angles that repeat modulo 180 (an edge direction is the same edge reversed):
+// sorted, so a long table is checked in N log N.
+template <class Where>
+void check_repeats(const AcuityTable& t, Where where) {
+  std::vector<std::pair<double, size_t>> reduced;
+  for (size_t i = 0; i < t.angles_deg.size(); ++i) {
+    double a = std::fmod(t.angles_deg[i], 180.0);
+    if (a < 0) a += 180;
+    reduced.emplace_back(a, i);
+  }
+  std::sort(reduced.begin(), reduced.end());
+  for (size_t i = 0; i < reduced.size(); ++i) {
+    const auto& [a, first] = reduced[i];
+    const auto& [b, second] = reduced[(i + 1) % reduced.size()];
+    const double gap = i + 1 < reduced.size() ? b - a : b + 180 - a;
+    if (reduced.size() > 1 && gap < 1e-9) {
+      const size_t earlier = std::min(first, second), later = std::max(first, second);
+      throw Error(fmt::format("{}: angle {} repeats angle {} (edge directions repeat every 180)",
+                              where(later), t.angles_deg[later], t.angles_deg[earlier]));
+    }
+  }
+}
+
 }  // namespace
+
+void validate(const AcuityTable& t) {
+  const std::string& name = t.name;
+  if (t.angles_deg.empty()) throw Error(fmt::format("acuity table {}: no angles", name));
+  if (t.angles_deg.size() > static_cast<size_t>(kMaxAcuityAngles))
+    throw Error(fmt::format("acuity table {}: {} angles exceed the limit of {}", name,
+                            t.angles_deg.size(), kMaxAcuityAngles));
+  if (t.weights.size() != t.angles_deg.size())
+    throw Error(fmt::format("acuity table {}: {} angles but {} weights", name, t.angles_deg.size(),
+                            t.weights.size()));
+  bool any_positive = false;
+  for (size_t i = 0; i < t.angles_deg.size(); ++i) {
+    if (!(t.angles_deg[i] >= -360 && t.angles_deg[i] <= 360))
+      throw Error(fmt::format("acuity table {}: angle {} is out of range [-360, 360]", name,
+                              t.angles_deg[i]));
+    if (!(t.weights[i] >= 0 && t.weights[i] <= kMaxAcuityWeight))
+      throw Error(fmt::format("acuity table {}: weight {} at angle {} is out of range [0, {}]",
+                              name, t.weights[i], t.angles_deg[i], kMaxAcuityWeight));
+    any_positive = any_positive || t.weights[i] > 0;
+  }
+  if (!any_positive)
+    throw Error(fmt::format("acuity table {}: every weight is 0, so every pattern scores 0", name));
+  check_repeats(t, [&](size_t i) { return fmt::format("acuity table {}, row {}", name, i + 1); });
+}
 
 AcuityTable uniform_acuity(double step_deg, double weight) {
   check_step(step_deg);
-  if (!(weight > 0 && std::isfinite(weight)))
-    throw Error(fmt::format("uniform acuity: weight {} must be positive", weight));
+  if (!(weight > 0 && weight <= kMaxAcuityWeight))
+    throw Error(
+        fmt::format("uniform acuity: weight {} is out of range (0, {}]", weight, kMaxAcuityWeight));
   AcuityTable t{
       fmt::format("uniform:step={},weight={}", step_deg, weight), angles_every(step_deg), {}};
   t.weights.assign(t.angles_deg.size(), weight);
@@ -60,6 +113,7 @@ AcuityTable linear_acuity(double step_deg) {
 
 AcuityTable parse_acuity_csv(std::string_view text, std::string_view source) {
   AcuityTable t{std::string(source), {}, {}};
+  std::vector<int> lines;  // the line of each row, for messages
   std::istringstream in{std::string(text)};
   std::string line;
   for (int line_no = 1; std::getline(in, line); ++line_no) {
@@ -71,19 +125,23 @@ AcuityTable parse_acuity_csv(std::string_view text, std::string_view source) {
                               line_no, line));
     const std::string where = fmt::format("acuity table {} line {}", source, line_no);
     std::string_view lv(line);
+    if (t.angles_deg.size() >= static_cast<size_t>(kMaxAcuityAngles))
+      throw Error(fmt::format("{}: more than {} rows, the limit", where, kMaxAcuityAngles));
     const double angle = parse_number(lv.substr(0, comma), where + ": angle");
     const double weight = parse_number(lv.substr(comma + 1), where + ": weight");
-    if (weight < 0) throw Error(fmt::format("{}: weight {} is negative", where, weight));
-    for (double a : t.angles_deg) {
-      const double diff = std::fmod(std::abs(a - angle), 180.0);
-      if (diff < 1e-9 || 180.0 - diff < 1e-9)
-        throw Error(fmt::format("{}: angle {} repeats angle {} (edge directions repeat every 180)",
-                                where, angle, a));
-    }
+    if (!(angle >= -360 && angle <= 360))
+      throw Error(fmt::format("{}: angle {} is out of range [-360, 360]", where, angle));
+    if (!(weight >= 0 && weight <= kMaxAcuityWeight))
+      throw Error(
+          fmt::format("{}: weight {} is out of range [0, {}]", where, weight, kMaxAcuityWeight));
     t.angles_deg.push_back(angle);
     t.weights.push_back(weight);
+    lines.push_back(line_no);
   }
   if (t.angles_deg.empty()) throw Error(fmt::format("acuity table {}: no rows", source));
+  check_repeats(t,
+                [&](size_t i) { return fmt::format("acuity table {} line {}", source, lines[i]); });
+  validate(t);
   return t;
 }
 
@@ -108,6 +166,14 @@ AcuityTable make_acuity(std::string_view spec) {
       throw Error(fmt::format("acuity {}: give the angle step, e.g. {}:step=1", kind, kind));
     return kind == "uniform" ? uniform_acuity(step, weight) : linear_acuity(step);
   }
+  std::error_code ec;
+  if (std::filesystem::is_directory(std::string(spec), ec))
+    throw Error(fmt::format("acuity table '{}': it is a folder, not a CSV file", spec));
+  constexpr uintmax_t kMaxBytes = 16u << 20;
+  if (const auto bytes = std::filesystem::file_size(std::string(spec), ec);
+      !ec && bytes > kMaxBytes)
+    throw Error(
+        fmt::format("acuity table '{}': {} bytes exceed the limit of {}", spec, bytes, kMaxBytes));
   std::ifstream file{std::string(spec)};
   if (!file)
     throw Error(fmt::format(

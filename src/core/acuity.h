@@ -15,6 +15,15 @@ struct AcuityTable {
   std::vector<double> weights;     // W(theta) >= 0, one per angle
 };
 
+// Limits every table meets (docs/limits.md): checked before anything is allocated.
+inline constexpr int kMaxAcuityAngles = 36000;  // a step of 0.005 degrees
+inline constexpr double kMaxAcuityWeight = 1e6;
+
+// Throws Error naming the table and the row unless: 1 to kMaxAcuityAngles
+// angles, each finite in [-360, 360] and none repeating another modulo 180;
+// weights finite in [0, kMaxAcuityWeight], at least one positive.
+void validate(const AcuityTable& table);
+
 // The table that reproduces both papers' published E2 values (data/README.md):
 // 0 and 90 degrees weigh 3.93, 45 and 135 weigh 2.50.
 AcuityTable laine_aila_acuity();

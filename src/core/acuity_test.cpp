@@ -48,17 +48,43 @@ TEST(Acuity, CsvRowsAndErrors) {
   EXPECT_EQ(t.weights, (std::vector<double>{2, 1.5}));
   expect_error("0,1\n45\n", "acuity table t.csv line 2: expected 'angle,weight', got '45'", true);
   expect_error("0,1,2\n", "acuity table t.csv line 1: expected 'angle,weight', got '0,1,2'", true);
-  expect_error("0,-1\n", "acuity table t.csv line 1: weight -1 is negative", true);
+  expect_error("0,-1\n", "acuity table t.csv line 1: weight -1 is out of range [0, 1000000]", true);
   expect_error("0,x\n", "acuity table t.csv line 1: weight: 'x' is not a finite number", true);
   expect_error("10,1\n190,1\n",
                "acuity table t.csv line 2: angle 190 repeats angle 10 (edge directions repeat "
                "every 180)",
                true);
   expect_error("# nothing\n", "acuity table t.csv: no rows", true);
+  // Repeats modulo 180 are found in a sorted pass, naming the later line.
+  expect_error("0,1\n45,1\n90,1\n-135,1\n",
+               "acuity table t.csv line 4: angle -135 repeats angle 45 (edge directions repeat "
+               "every 180)",
+               true);
+  expect_error("0,1\n720,1\n", "acuity table t.csv line 2: angle 720 is out of range [-360, 360]",
+               true);
+  expect_error("0,0\n90,0\n", "acuity table t.csv: every weight is 0, so every pattern scores 0",
+               true);
+  expect_error("0,1e7\n", "acuity table t.csv line 1: weight 10000000 is out of range [0, 1000000]",
+               true);
+}
+
+TEST(Acuity, ValidateChecksTablesBuiltInCode) {
+  AcuityTable t{"mine", {0, 90}, {1}};
+  EXPECT_EQ(testing::error_message([&] { validate(t); }),
+            "acuity table mine: 2 angles but 1 weights");
+  t.weights = {1, std::nan("")};
+  EXPECT_EQ(testing::error_message([&] { validate(t); }),
+            "acuity table mine: weight nan at angle 90 is out of range [0, 1000000]");
+  t.angles_deg.assign(kMaxAcuityAngles + 1, 0);
+  EXPECT_EQ(testing::error_message([&] { validate(t); }),
+            "acuity table mine: 36001 angles exceed the limit of 36000");
+  EXPECT_EQ(uniform_acuity(0.005).angles_deg.size(), 36000u);  // the finest step fits
 }
 
 TEST(Acuity, SpecErrors) {
-  expect_error("uniform:step=0", "acuity step 0 is out of range (0, 90] degrees");
+  expect_error(
+      "uniform:step=0",
+      "acuity step 0 is out of range [0.005, 90] degrees (at most 36000 angles in [0, 180))");
   expect_error("uniform:size=2",
                "acuity uniform: unknown parameter 'size=2' (it takes step and weight)");
   expect_error("linear:weight=2", "acuity linear: unknown parameter 'weight=2' (it takes step)");

@@ -1,5 +1,7 @@
 #include "core/filter.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -76,7 +78,39 @@ double shape_value(const FilterShape& shape, double x) {
 
 Filter::Filter(FilterShape shape, std::string name)
     : shape_(shape), name_(std::move(name)), radius_(shape_radius(shape)) {
-  segments_ = segment_count(shape_, radius_);
+  int segments = segment_count(shape_, radius_);
+  tabulate(segments);
+  if (is_piecewise_polynomial(shape_)) return;  // exact
+  // Narrow smooth filters (a Gaussian of small sigma) need finer pieces.
+  double error = tabulation_error();
+  while (error > kTabulationTolerance && segments * 2 <= kMaxSegments) {
+    segments *= 2;
+    tabulate(segments);
+    error = tabulation_error();
+  }
+  if (error > kTabulationTolerance)
+    throw Error(fmt::format(
+        "filter {}: too narrow to tabulate to {} of its peak with {} pieces (error {:.2g}); "
+        "widen it",
+        name_, kTabulationTolerance, kMaxSegments, error));
+}
+
+double Filter::tabulation_error() const {
+  double peak = 0, error = 0;
+  constexpr int kProbes = 9;  // between the interpolation nodes
+  for (int k = 0; k < segments_; ++k)
+    for (int i = 0; i < kProbes; ++i) {
+      const double t = -1 + (2.0 * i + 1) / kProbes;
+      const double x = (k + (t + 1) / 2) * width_;
+      const double exact = scale_ * shape_value(shape_, x);
+      peak = std::max(peak, std::abs(exact));
+      error = std::max(error, std::abs(pieces_[k].h(t) - exact));
+    }
+  return peak > 0 ? error / peak : INFINITY;
+}
+
+void Filter::tabulate(int segments) {
+  segments_ = segments;
   width_ = radius_ / segments_;
   inv_width_ = 1.0 / width_;
   const double half = width_ / 2;  // dx = half * dt on every piece

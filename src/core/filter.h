@@ -68,7 +68,7 @@ class Filter {
   // The metric's hot path; no allocation, O(1).
   double abs_moment(double p) const {
     p = p < 0 ? -p : p;
-    if (p >= radius_) return p;
+    if (!(p < radius_)) return p;  // past the radius, and NaN (never a table index)
     int k = static_cast<int>(p * inv_width_);
     if (k >= segments_) k = segments_ - 1;
     const double t = (p - k * width_) * (2.0 * inv_width_) - 1.0;
@@ -84,6 +84,10 @@ class Filter {
   // 1/16 pixel wide interpolates the smooth filters to about 1e-14.
   static constexpr int kPolynomialDegree = 3;
   static constexpr int kInterpolatedDegree = 7;
+  // The smooth filters must be tabulated to this error relative to their
+  // peak; narrow ones get finer pieces, up to kMaxSegments, or are refused.
+  static constexpr double kTabulationTolerance = 1e-9;
+  static constexpr int kMaxSegments = 4096;
 
  private:
   struct Segment {
@@ -91,6 +95,9 @@ class Filter {
     double q0 = 0, s0 = 0;  // integrals of (1-g)^2 and g^2 from 0 to the segment start
   };
   int locate(double x, double* t) const;
+  void tabulate(int segments);
+  // The largest difference between the pieces and the filter, relative to its peak.
+  double tabulation_error() const;
 
   FilterShape shape_;
   std::string name_;

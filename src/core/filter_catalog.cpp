@@ -43,19 +43,19 @@ const std::vector<FilterEntry>& entries() {
         "rectangle of the given width (Goss-Wu 'box', the A-buffer's filter)",
         "Goss & Wu 2000, Table 3 (rectangle)",
         {{"width", "1", "support width in pixels"}}},
-       [](const Params& p) { return BoxShape{in_range(p, "width", 0, 16, true, "box")}; }},
+       [](const Params& p) { return BoxShape{in_range(p, "width", 1e-3, 16, false, "box")}; }},
       {{"tent",
         "triangle 1 - |x|/radius",
         "Goss & Wu 2000, Table 3 (triangle) and Sec. 3.3.2",
         {{"radius", "1", "half width in pixels"}}},
-       [](const Params& p) { return TentShape{in_range(p, "radius", 0, 16, true, "tent")}; }},
+       [](const Params& p) { return TentShape{in_range(p, "radius", 1e-3, 16, false, "tent")}; }},
       {{"gaussian",
         "exp(-x^2 / (2 sigma^2)), truncated at the radius (not shifted)",
         "defaults as pbrt-v4's Gaussian filter",
         {{"sigma", "0.5", "standard deviation in pixels"}, {"radius", "1.5", "truncation radius"}}},
        [](const Params& p) {
-         return GaussianShape{in_range(p, "sigma", 0, 16, true, "gaussian"),
-                              in_range(p, "radius", 0, 16, true, "gaussian")};
+         return GaussianShape{in_range(p, "sigma", 1e-3, 16, false, "gaussian"),
+                              in_range(p, "radius", 1e-3, 16, false, "gaussian")};
        }},
       {{"gaussian-half",
         "Goss-Wu 'Gaussian 1/2': 2^(-4x^2), height 1/2 at 1/2, cut at 1.5",
@@ -104,7 +104,7 @@ const std::vector<FilterEntry>& entries() {
         {{"lobes", "2", "M, the radius in pixels"}, {"sigma", "0.5", "Gaussian deviation"}}},
        [](const Params& p) {
          return LanczosGaussianShape{whole(p, "lobes", 1, 16, "lanczos-gaussian"),
-                                     in_range(p, "sigma", 0, 16, true, "lanczos-gaussian")};
+                                     in_range(p, "sigma", 1e-3, 16, false, "lanczos-gaussian")};
        }},
       {{"blinn",
         "Blinn's nice filter: sinc(x/2) sinc(x/4) on |x| < 4",

@@ -158,11 +158,27 @@ TEST(FilterSpec, RejectsBadSpecsWithClearMessages) {
                "mitchell, notch, catmull-rom, keys, lanczos, lanczos-gaussian, blinn");
   expect_error("mitchell:d=1", "filter mitchell: unknown parameter 'd=1' (it takes b, c)");
   expect_error("notch:b=1", "filter notch: unknown parameter 'b=1' (it takes no parameters)");
-  expect_error("gaussian:sigma=0", "filter gaussian: sigma = 0 is out of range (0, 16]");
+  expect_error("gaussian:sigma=0", "filter gaussian: sigma = 0 is out of range [0.001, 16]");
   expect_error("gaussian:sigma=nan", "filter gaussian: sigma: 'nan' is not a finite number");
   expect_error("lanczos:lobes=2.5", "filter lanczos: lobes = 2.5 must be a whole number in 1..16");
   expect_error("mitchell:b=1/0", "filter mitchell: b: '1/0' divides by zero");
   expect_error("box:width=abc", "filter box: width: 'abc' is not a finite number");
+  // Narrower than 4096 pieces can tabulate to 1e-9 of the peak: refused, not wrong.
+  expect_error("lanczos-gaussian:lobes=16,sigma=0.001",
+               "filter lanczos-gaussian:lobes=16,sigma=0.001: too narrow to tabulate to 1e-09 of "
+               "its peak with 4096 pieces (error 0.00051); widen it");
+}
+
+// A narrow Gaussian gets finer pieces and keeps its accuracy: its step
+// response is the normal CDF, Phi(1) at one sigma.
+TEST(FilterTabulation, NarrowGaussiansAreRefinedNotTruncated) {
+  for (double sigma : {0.001, 0.003, 0.01, 0.05}) {
+    const Filter f = make_filter("gaussian:sigma=" + std::to_string(sigma));
+    EXPECT_NEAR(f.step_response(sigma), 0.5 * std::erfc(-1 / std::sqrt(2.0)), 1e-9) << sigma;
+    EXPECT_NEAR(f.step_response(-2 * sigma), 0.5 * std::erfc(2 / std::sqrt(2.0)), 1e-9) << sigma;
+    // NaN never reaches the table: it comes back as NaN.
+    EXPECT_TRUE(std::isnan(f.abs_moment(std::nan(""))));
+  }
 }
 
 }  // namespace

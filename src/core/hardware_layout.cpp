@@ -158,8 +158,8 @@ HardwareLayout hardware_layout(const Pattern& p, const ApiProfile& profile, int 
 
 Pattern pattern_from_layout(const HardwareLayout& L) {
   if (L.footprint.size != 1)
-    throw Error(fmt::format("import: a {} footprint cannot be read back (1 and 1+ can)",
-                            L.footprint.text()));
+    throw Error(
+        fmt::format("a {} footprint cannot be read back (1 and 1+ can)", L.footprint.text()));
   const bool down = api_profile(L.profile).y_down;
   Pattern p;
   p.name = L.name;
@@ -171,12 +171,23 @@ Pattern pattern_from_layout(const HardwareLayout& L) {
   for (int g = 0; g < L.grid_w * L.grid_h; ++g) {
     const int gx = g % L.grid_w, gy = g / L.grid_w;
     const int k = tile_index(p, gx, gy, L.grid_h, down);
+    // The file's own terms in messages: its pixel (x, y), not the pattern's kernel index.
+    double sum = 0;
+    for (const Tap& t : L.taps[g]) {
+      if (!std::isfinite(t.weight) || std::abs(t.weight) > kMaxWeightMagnitude)
+        throw Error(fmt::format("pixel ({}, {}): tap weight {} is out of range [-{}, {}]", gx, gy,
+                                t.weight, kMaxWeightMagnitude, kMaxWeightMagnitude));
+      sum += t.weight;
+    }
+    if (L.taps[g].empty() || std::abs(sum - 1) > 1e-6)
+      throw Error(
+          fmt::format("pixel ({}, {}): the resolve weights sum to {:.9g}, not 1", gx, gy, sum));
     for (const Tap& t : L.taps[g]) {
       const auto& owner =
           L.positions[wrap(gy + t.dy, L.grid_h) * L.grid_w + wrap(gx + t.dx, L.grid_w)];
       if (t.sample < 0 || t.sample >= static_cast<int>(owner.size()))
-        throw Error(fmt::format("import: a tap reads sample {} of a pixel with {}", t.sample,
-                                owner.size()));
+        throw Error(fmt::format("pixel ({}, {}): a tap reads sample {} of a pixel with {}", gx, gy,
+                                t.sample, owner.size()));
       const double ax = t.dx + owner[t.sample].x / double(kSide),
                    ay = t.dy + owner[t.sample].y / double(kSide);
       p.sets[k].push_back({ax - 0.5, down ? 0.5 - ay : ay - 0.5});
@@ -192,7 +203,11 @@ Pattern pattern_from_layout(const HardwareLayout& L) {
     p.sets.resize(1);
     p.weights.resize(1);
   }
-  validate(p);
+  try {
+    validate(p);
+  } catch (const Error& e) {
+    throw Error(fmt::format("the layout makes no valid pattern: {}", e.what()));
+  }
   return p;
 }
 

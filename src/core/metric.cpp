@@ -57,10 +57,22 @@ double e1_squared_piecewise(const Filter& filter, std::span<const double> p,
   return total;
 }
 
+double combine_over_angles(std::span<const double> values, double norm) {
+  double largest = 0;
+  for (double v : values) largest = std::max(largest, v);
+  if (norm == Metric::kMaxNorm || largest == 0) return std::sqrt(largest);
+  // ((1/M) sum v^(p/2))^(1/p) = sqrt(largest) ((1/M) sum (v / largest)^(p/2))^(1/p)
+  double sum = 0;
+  for (double v : values) sum += std::pow(v / largest, norm / 2);
+  return std::sqrt(largest) * std::pow(sum / static_cast<double>(values.size()), 1.0 / norm);
+}
+
 Metric::Metric(Filter filter, AcuityTable acuity, double norm)
     : filter_(std::move(filter)), acuity_(std::move(acuity)), norm_(norm) {
-  if (!(norm_ >= 1))
-    throw Error(fmt::format("norm: {} is not a valid p: use a number >= 1 or inf", norm_));
+  if (!(norm_ >= 1) || (norm_ != kMaxNorm && norm_ > kMaxFiniteNorm))
+    throw Error(fmt::format("norm: {} is not a valid p: use a number in [1, {}] or inf", norm_,
+                            kMaxFiniteNorm));
+  validate(acuity_);
   for (double a : acuity_.angles_deg) {
     cos_.push_back(std::cos(radians(a)));
     sin_.push_back(std::sin(radians(a)));
@@ -95,17 +107,17 @@ std::vector<double> Metric::profile(const Kernel& k) const {
 KernelError Metric::kernel_error(const Kernel& k) const {
   // Compare W^2 E1^2: one square root per kernel, not one per angle.
   KernelError r;
-  double worst = -1, sum = 0;
-  const bool max_norm = norm_ == kMaxNorm;
+  thread_local std::vector<double> values;
+  values.resize(angle_count());
+  double worst = -1;
   for_each_angle(k, [&](int a, double e1sq) {
-    const double e = weight_sq_[a] * e1sq;
-    if (e > worst * (1 + 1e-12)) {  // ties (symmetric patterns) go to the first angle
-      worst = e;
+    values[a] = weight_sq_[a] * e1sq;
+    if (values[a] > worst * (1 + 1e-12)) {  // ties (symmetric patterns) go to the first angle
+      worst = values[a];
       r.worst_angle = a;
     }
-    if (!max_norm) sum += std::pow(e, norm_ / 2);
   });
-  r.e2 = max_norm ? std::sqrt(worst) : std::pow(sum / angle_count(), 1.0 / norm_);
+  r.e2 = combine_over_angles(values, norm_);
   return r;
 }
 
@@ -114,6 +126,9 @@ PatternError Metric::evaluate(const Pattern& p) const {
   r.e2 = -1;
   for (int k = 0; k < p.set_count(); ++k) {
     const KernelError e = kernel_error(make_kernel(p, k));
+    if (!std::isfinite(e.e2))
+      throw Error(
+          fmt::format("pattern {}: E2 of kernel {} is {}, not a finite number", p.name, k, e.e2));
     r.kernel_e2.push_back(e.e2);
     if (e.e2 > r.e2) {
       r.e2 = e.e2;

@@ -35,6 +35,12 @@ double e1_squared(const Filter& filter, std::span<const double> p, std::span<con
 double e1_squared_piecewise(const Filter& filter, std::span<const double> p,
                             std::span<const double> w);
 
+// The combination over angles of one kernel's W^2 E1^2 values: the maximum
+// (p = infinity, Laine-Aila Eq. 5) or the L_p mean ((1/M) sum (W E1)^p)^(1/p),
+// computed scaled by the largest term so that no p over- or underflows.
+// The one place the metric and the optimizer combine angles.
+double combine_over_angles(std::span<const double> weighted_e1_squared, double norm);
+
 struct KernelError {
   double e2 = 0;        // the combined weighted error over angles
   int worst_angle = 0;  // index into the acuity table of the largest W E1
@@ -52,7 +58,8 @@ class Metric {
   static constexpr double kMaxNorm = std::numeric_limits<double>::infinity();
 
   // norm: p of the L_p mean over angles, ((1/M) sum (W E1)^p)^(1/p); infinity
-  // (the default, Laine-Aila Eq. 5) is the maximum.
+  // (the default, Laine-Aila Eq. 5) is the maximum. Finite p up to kMaxFiniteNorm.
+  static constexpr double kMaxFiniteNorm = 1e6;
   Metric(Filter filter, AcuityTable acuity, double norm = kMaxNorm);
 
   const Filter& filter() const { return filter_; }

@@ -198,6 +198,19 @@ TEST(E2Norm, OneIsTheMeanAndInfinityTheMaximum) {
   EXPECT_LT(p8.kernel_error(k).e2, max);
 }
 
+// The L_p mean is computed scaled by its largest term: no p and no scale of
+// the terms over- or underflows, and p -> infinity tends to the maximum.
+TEST(E2Norm, LargeNormsAndTinyTermsStayFinite) {
+  const std::vector<double> tiny = {1e-300, 4e-300, 2e-300};  // W^2 E1^2 per angle
+  EXPECT_DOUBLE_EQ(combine_over_angles(tiny, Metric::kMaxNorm), 2e-150);
+  EXPECT_NEAR(combine_over_angles(tiny, 1e6) / 2e-150, 1, 2e-6);  // (1/3)^(1/p)
+  EXPECT_NEAR(combine_over_angles(tiny, 2), std::sqrt(7e-300 / 3), 1e-162);
+  const std::vector<double> equal(180, 0.25);
+  for (double p : {1.0, 4.0, 1000.0, 2000.0, 1e6})
+    EXPECT_DOUBLE_EQ(combine_over_angles(equal, p), 0.5);
+  EXPECT_EQ(combine_over_angles(std::vector<double>(4, 0.0), 8), 0.0);
+}
+
 TEST(E2Norm, RejectsNormsBelowOne) {
   EXPECT_THROW(Metric(make_filter("box"), laine_aila_acuity(), 0.5), Error);
   EXPECT_THROW(Metric(make_filter("box"), laine_aila_acuity(), std::nan("")), Error);

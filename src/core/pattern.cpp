@@ -8,12 +8,14 @@
 namespace aapat {
 namespace {
 
-constexpr int kMaxTileSide = 128;
-constexpr int kMaxSamplesPerSet = 1024;
 constexpr double kWeightSumTolerance = 1e-6;
 
 bool on(double v, double target) {
   return std::abs(v - target) <= kSameSampleEps;
+}
+
+bool on_border(Vec2 v) {
+  return on(std::abs(v.x), 0.5) || on(std::abs(v.y), 0.5);
 }
 
 // The first and last pixel offset of a footprint relative to the kernel's
@@ -67,15 +69,21 @@ std::vector<KernelSample> kernel_samples(const Pattern& p, int kernel) {
   }
   const int first = first_offset(f);
   const double o = output_offset(f);
+  // Only a sample on its pixel's border can be met twice: compare those alone.
+  std::vector<Vec2> border;
   for (int j = first; j < first + f.size; ++j) {
     for (int i = first; i < first + f.size; ++i) {
       const int s = set_index(p, kx + i, ky + j);
       const auto& set = p.sets[s];
       for (int n = 0; n < static_cast<int>(set.size()); ++n) {
         const Vec2 pos{i + set[n].x - o, j + set[n].y - o};
-        bool seen = false;
-        for (const auto& e : out) seen = seen || same_point(e.pos, pos);
-        if (!seen) out.push_back({pos, s, n});
+        if (on_border(set[n])) {
+          bool seen = false;
+          for (const Vec2& b : border) seen = seen || same_point(b, pos);
+          if (seen) continue;
+          border.push_back(pos);
+        }
+        out.push_back({pos, s, n});
       }
     }
   }
@@ -148,6 +156,11 @@ void validate(const Pattern& p) {
   if (static_cast<int>(p.sets.size()) != p.set_count())
     throw Error(fmt::format("sets: a {}x{} tile needs {} sets, got {}", p.tile_w, p.tile_h,
                             p.set_count(), p.sets.size()));
+  size_t total = 0;
+  for (const auto& set : p.sets) total += set.size();
+  if (total > kMaxPatternSamples)
+    throw Error(fmt::format("sets: {} samples in all exceed the limit of {} per pattern", total,
+                            kMaxPatternSamples));
   for (size_t k = 0; k < p.sets.size(); ++k) {
     const auto& set = p.sets[k];
     if (set.empty())
@@ -210,6 +223,9 @@ void validate(const Pattern& p) {
     for (size_t i = 0; i < w.size(); ++i) {
       if (!std::isfinite(w[i]))
         throw Error(fmt::format("kernels[{}][{}]: weight is not a finite number", k, i));
+      if (std::abs(w[i]) > kMaxWeightMagnitude)
+        throw Error(fmt::format("kernels[{}][{}]: weight {} is out of range [-{}, {}]", k, i, w[i],
+                                kMaxWeightMagnitude, kMaxWeightMagnitude));
       sum += w[i];
     }
     if (std::abs(sum - 1.0) > kWeightSumTolerance)

@@ -88,6 +88,14 @@ std::string format_cost(double n);
 // in a sharing (+) footprint.
 std::string site_name(Vec2 p);
 
+// Limits every pattern meets (docs/limits.md).
+inline constexpr int kMaxTileSide = 128;
+inline constexpr size_t kMaxSamplesPerSet = 1024;
+inline constexpr size_t kMaxPatternSamples = 65536;  // over all sets
+// A weight's magnitude: negative lobes are fine, weights that cancel in the
+// thousands only lose precision (and overflow the optimizer's steps).
+inline constexpr double kMaxWeightMagnitude = 1000;
+
 // Throws Error whose message names the field (e.g. "sets[0][2]") and the rule.
 void validate(const Pattern& p);
 

@@ -61,6 +61,7 @@ RunResult descend(const Objective& objective, Problem& problem, const OptimizerS
     step(problem, dir, c0, s.nonnegative_weights, trial);
     const double next = objective.e2(trial, ws);
     ++r.evaluations;
+    if (!std::isfinite(next)) break;  // a step the arithmetic cannot follow: keep the best point
     // Take the step either way (near a kink of the maximum the iteration
     // zig-zags down), but grow c0 after a gain and shrink it after a loss.
     std::swap(problem, trial);

@@ -1,5 +1,7 @@
 #include "optimize/objective.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -34,21 +36,18 @@ double Objective::e2(const Problem& pr, Workspace& ws) const {
   const int angles = metric_.angle_count();
   ws.values.resize(ws.kernels.size() * angles);
   ws.kernel_e2.resize(ws.kernels.size());
-  const bool max_norm = metric_.norm() == Metric::kMaxNorm;
   double e2 = 0;
   for (size_t k = 0; k < ws.kernels.size(); ++k) {
     const Kernel& ker = ws.kernels[k];
-    double worst = 0, sum = 0;
     for (int a = 0; a < angles; ++a) {
       const double c = metric_.cos(a), s = metric_.sin(a);
       for (int j = 0; j < ker.size(); ++j) ws.proj[j] = c * ker.y[j] - s * ker.x[j];
-      const double v = metric_.weight_sq(a) *
-                       e1_squared(metric_.filter(), {ws.proj.data(), ker.w.size()}, ker.w);
-      ws.values[k * angles + a] = v;
-      worst = std::max(worst, v);
-      if (!max_norm) sum += std::pow(v, metric_.norm() / 2);
+      ws.values[k * angles + a] =
+          metric_.weight_sq(a) *
+          e1_squared(metric_.filter(), {ws.proj.data(), ker.w.size()}, ker.w);
     }
-    ws.kernel_e2[k] = max_norm ? std::sqrt(worst) : std::pow(sum / angles, 1.0 / metric_.norm());
+    ws.kernel_e2[k] = combine_over_angles(
+        {ws.values.data() + k * angles, static_cast<size_t>(angles)}, metric_.norm());
     e2 = std::max(e2, ws.kernel_e2[k]);
   }
   return e2;
@@ -187,6 +186,8 @@ RunResult begin_run(const Objective& objective, Problem& problem, bool nonnegati
   RunResult r;
   r.initial_e2 = r.final_e2 = objective.e2(problem, ws);
   r.evaluations = 1;
+  if (!std::isfinite(r.initial_e2))
+    throw Error(fmt::format("optimize: the start's E2 is {}, not a finite number", r.initial_e2));
   return r;
 }
 
