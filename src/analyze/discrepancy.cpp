@@ -1,5 +1,7 @@
 #include "analyze/discrepancy.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -9,6 +11,7 @@ namespace aapat {
 double l2_star_discrepancy(const std::vector<Vec2>& p) {
   // Warnock 1972: T^2 = 1/9 - (2/N) sum_i prod_k (1 - x_ik^2)/2
   //                     + (1/N^2) sum_i sum_j prod_k (1 - max(x_ik, x_jk)).
+  check_discrepancy_size(p.size());
   const double n = static_cast<double>(p.size());
   double single = 0, pairs = 0;
   for (size_t i = 0; i < p.size(); ++i) {
@@ -114,7 +117,16 @@ double half_plane_area(double phi, double t) {
   return std::abs(area) / 2;
 }
 
-EdgeDiscrepancy edge_discrepancy(const std::vector<Vec2>& p, int directions) {
+void check_discrepancy_size(size_t points) {
+  if (points > kMaxDiscrepancyPoints)
+    throw Error(fmt::format(
+        "discrepancy: {} points exceed the limit of {} (the L2-star sum is O(N^2) today)", points,
+        kMaxDiscrepancyPoints));
+}
+
+EdgeDiscrepancy edge_discrepancy(const std::vector<Vec2>& p, int directions,
+                                 const std::function<void(int, int)>& progress) {
+  check_discrepancy_size(p.size());
   EdgeDiscrepancy d;
   const double n = static_cast<double>(p.size());
   std::vector<double> s(p.size());
@@ -135,6 +147,7 @@ EdgeDiscrepancy edge_discrepancy(const std::vector<Vec2>& p, int directions) {
         d.normal_deg = 180.0 * k / directions;
       }
     }
+    if (progress) progress(k + 1, directions);
   }
   return d;
 }

@@ -9,11 +9,18 @@
 //    each direction, over `directions` directions of the edge normal.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "core/geometry.h"
 
 namespace aapat {
+
+// The L2-star sum is O(N^2) and the edge discrepancy O(directions N log N):
+// larger sets are refused (docs/limits.md) rather than run for hours.
+inline constexpr size_t kMaxDiscrepancyPoints = 65536;
+// Throws Error naming the count and the limit.
+void check_discrepancy_size(size_t points);
 
 double l2_star_discrepancy(const std::vector<Vec2>& points);
 
@@ -29,7 +36,9 @@ struct EdgeDiscrepancy {
   double value = 0;
   double normal_deg = 0;  // direction of the worst half-plane's normal
 };
-EdgeDiscrepancy edge_discrepancy(const std::vector<Vec2>& points, int directions = 720);
+// `progress(done, total)` hears each direction finish.
+EdgeDiscrepancy edge_discrepancy(const std::vector<Vec2>& points, int directions = 720,
+                                 const std::function<void(int, int)>& progress = {});
 
 // Area of {p in [0,1]^2 : p . n <= t} for the unit normal n = (cos phi, sin phi).
 double half_plane_area(double phi, double t);

@@ -39,16 +39,64 @@ double packing_radius(int n) {
   return std::sqrt(2 / (std::sqrt(3.0) * n));
 }
 
+// Points binned in a g x g grid on the unit torus, for nearest-neighbour
+// questions that look only at the cells near a point.
+class TorusGrid {
+ public:
+  explicit TorusGrid(int g) : g_(g), cells_(static_cast<size_t>(g) * g) {}
+  int side() const { return g_; }
+  void add(Vec2 p) { cells_[index(cell(p.y), cell(p.x))].push_back(p); }
+  // Whether any point lies closer than r to c; needs r <= 1 / side().
+  bool any_within(Vec2 c, double r) const {
+    const int cx = cell(c.x), cy = cell(c.y);
+    const int reach = std::min(g_ / 2, 1 + static_cast<int>(r * g_));
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int dx = -reach; dx <= reach; ++dx)
+        for (const Vec2& e : cells_[index(cy + dy, cx + dx)])
+          if (torus_distance(e, c) < r) return true;
+    return false;
+  }
+  // The distance from c to the nearest point (infinity when empty): rings of
+  // cells outwards until no nearer point can remain.
+  double nearest(Vec2 c) const {
+    const int cx = cell(c.x), cy = cell(c.y);
+    double best = INFINITY;
+    for (int r = 0; r <= g_ / 2 + 1; ++r) {
+      // Every point in ring r or beyond is at least (r - 1) / g away.
+      if ((r - 1.0) / g_ > best) break;
+      for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+          if (std::max(std::abs(dx), std::abs(dy)) != r) continue;
+          for (const Vec2& e : cells_[index(cy + dy, cx + dx)])
+            best = std::min(best, torus_distance(e, c));
+        }
+      if (2 * r + 1 >= g_) break;  // the rings have covered every cell
+    }
+    return best;
+  }
+
+ private:
+  int cell(double v) const { return std::min(g_ - 1, static_cast<int>(v * g_)); }
+  size_t index(int y, int x) const {
+    return static_cast<size_t>((y % g_ + g_) % g_) * g_ + (x % g_ + g_) % g_;
+  }
+  int g_;
+  std::vector<std::vector<Vec2>> cells_;
+};
+
 std::vector<Vec2> poisson(int n, double radius, bool maximal, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<Vec2> pts;
+  // Cells no smaller than the radius, so a dart checks the 3 x 3 around it.
+  const int side = std::clamp(static_cast<int>(1 / radius), 1, 4096);
+  TorusGrid grid(side);
   // Dart throwing with rejection; give up after many misses in a row.
   const int patience = 1000 + 100 * n;
   for (int misses = 0; misses < patience && (maximal || static_cast<int>(pts.size()) < n);) {
     const Vec2 c{u(rng), u(rng)};
-    if (std::all_of(pts.begin(), pts.end(),
-                    [&](Vec2 q) { return torus_distance(q, c) >= radius; })) {
+    if (!grid.any_within(c, radius)) {
       pts.push_back(c);
+      grid.add(c);
       misses = 0;
     } else {
       ++misses;
@@ -57,42 +105,31 @@ std::vector<Vec2> poisson(int n, double radius, bool maximal, std::mt19937_64& r
   return pts;
 }
 
-// Mitchell's best candidate, with the points binned in a grid on the torus so
-// that the nearest point to a candidate is found by searching rings of cells
-// outwards until no nearer point can remain.
+// Mitchell's best candidate: q x i candidates for point i, so the work grows
+// as q n^2 / 2 nearest-point queries. The grid is rebuilt as the points
+// multiply, so that each query visits a few cells.
 std::vector<Vec2> best_candidate(int n, double q, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0, 1);
-  const int g = std::max(1, static_cast<int>(std::sqrt(n / 2.0)));
-  std::vector<std::vector<Vec2>> cells(g * g);
-  auto cell = [&](double v) { return std::min(g - 1, static_cast<int>(v * g)); };
-  auto nearest = [&](Vec2 c) {
-    const int cx = cell(c.x), cy = cell(c.y);
-    double best = INFINITY;
-    for (int r = 0; r <= g / 2 + 1; ++r) {
-      // Every point in ring r or beyond is at least (r - 1) / g away.
-      if ((r - 1.0) / g > best) break;
-      for (int dy = -r; dy <= r; ++dy)
-        for (int dx = -r; dx <= r; ++dx) {
-          if (std::max(std::abs(dx), std::abs(dy)) != r) continue;
-          const auto& pts = cells[((cy + dy) % g + g) % g * g + ((cx + dx) % g + g) % g];
-          for (const Vec2& e : pts) best = std::min(best, torus_distance(e, c));
-        }
-      if (2 * r + 1 >= g) break;  // the rings have covered every cell
-    }
-    return best;
-  };
   std::vector<Vec2> p;
+  auto grid_for = [](size_t points) {
+    return std::max(1, static_cast<int>(std::sqrt(points / 2.0)));
+  };
+  TorusGrid grid(1);
   for (int i = 0; i < n; ++i) {
+    if (grid_for(p.size()) >= 2 * grid.side()) {
+      grid = TorusGrid(grid_for(p.size()));
+      for (const Vec2& v : p) grid.add(v);
+    }
     const int tries = std::max(1, static_cast<int>(q * i));
     Vec2 best{u(rng), u(rng)};
-    double best_d = i > 0 ? nearest(best) : 0;
+    double best_d = i > 0 ? grid.nearest(best) : 0;
     for (int t = 1; t < tries; ++t) {
       const Vec2 c{u(rng), u(rng)};
-      const double d = nearest(c);
+      const double d = grid.nearest(c);
       if (d > best_d) best_d = d, best = c;
     }
     p.push_back(best);
-    cells[cell(best.y) * g + cell(best.x)].push_back(best);
+    grid.add(best);
   }
   return p;
 }
@@ -207,9 +244,17 @@ const std::vector<Entry>& entries() {
         "Cook 1986; Pelikan 'Poisson disk sampling'"},
        {{"radius", NAN}},
        [](int n, const Params& prm, std::mt19937_64& rng) {
-         const double r =
-             std::isnan(prm.at("radius")) ? 0.75 * packing_radius(n) : prm.at("radius");
+         const bool given = !std::isnan(prm.at("radius"));
+         double r = given ? prm.at("radius") : 0.75 * packing_radius(n);
+         if (given && !(r > 0 && r <= 1))
+           throw Error(fmt::format("poisson: radius = {} is out of range (0, 1]", r));
          auto p = poisson(n, r, false, rng);
+         // The default radius shrinks by 5% until n points fit (dart throwing
+         // jams near 55% coverage, so an unlucky draw can stop short).
+         while (!given && static_cast<int>(p.size()) < n) {
+           r *= 0.95;
+           p = poisson(n, r, false, rng);
+         }
          if (static_cast<int>(p.size()) < n)
            throw Error(
                fmt::format("poisson: only {} of {} points fit at radius {}; use a smaller "
@@ -223,6 +268,11 @@ const std::vector<Entry>& entries() {
        [](int n, const Params& prm, std::mt19937_64& rng) {
          const double r =
              std::isnan(prm.at("radius")) ? 0.75 * packing_radius(n) : prm.at("radius");
+         if (!(r >= 1e-3 && r <= 1))
+           throw Error(fmt::format(
+               "poisson-maximal: radius = {} is out of range [0.001, 1] (a maximal set of "
+               "radius r has about 0.7 / r^2 points)",
+               r));
          return poisson(n, r, true, rng);
        }},
       {{"best-candidate:q=10",
@@ -233,6 +283,13 @@ const std::vector<Entry>& entries() {
          const double q = prm.at("q");
          if (!(q >= 1 && q <= 1000))
            throw Error(fmt::format("best-candidate: q = {} is out of range 1..1000", q));
+         // q n^2 / 2 candidate queries: refuse what would run for minutes.
+         if (q * n * static_cast<double>(n) / 2 > kMaxBestCandidateQueries)
+           throw Error(fmt::format(
+               "best-candidate: n = {} with q = {} asks for {:.3g} candidates, over the limit of "
+               "{:.3g} (n <= {} at q = 10); use poisson for large sets",
+               n, q, q * n * static_cast<double>(n) / 2, kMaxBestCandidateQueries,
+               static_cast<int>(std::sqrt(2 * kMaxBestCandidateQueries / 10))));
          return best_candidate(n, q, rng);
        }},
       {{"hammersley:b=2", "(i / n, g_b(i)), i = 0..n-1", "Pelikan 'Hammersley'"},

@@ -16,6 +16,10 @@
 
 namespace aapat {
 
+// Mitchell's best candidate costs q n^2 / 2 nearest-point queries; past this
+// many it is refused (docs/limits.md).
+inline constexpr double kMaxBestCandidateQueries = 2e8;
+
 struct GeneratorInfo {
   std::string spec;  // with its parameters and defaults
   std::string summary;

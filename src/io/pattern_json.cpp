@@ -22,7 +22,7 @@ std::string number(double v) {
 }
 
 std::string json_string(std::string_view s) {
-  return json(std::string(s)).dump();
+  return json(std::string(s)).dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
 [[noreturn]] void fail(std::string_view source, const std::string& message) {
@@ -120,8 +120,15 @@ Pattern pattern_from_json(std::string_view text, std::string_view source) {
   }
   const json& sets = doc["sets"];
   if (!sets.is_array()) fail(source, "sets: expected an array of sample sets");
+  // Sizes before copying: validate() names the exact rule later.
+  if (sets.size() > static_cast<size_t>(kMaxTileSide) * kMaxTileSide)
+    fail(source, fmt::format("sets: {} sets exceed the largest tile, {}x{}", sets.size(),
+                             kMaxTileSide, kMaxTileSide));
   for (size_t k = 0; k < sets.size(); ++k) {
     if (!sets[k].is_array()) fail(source, fmt::format("sets[{}]: expected an array of [x, y]", k));
+    if (sets[k].size() > kMaxSamplesPerSet)
+      fail(source, fmt::format("sets[{}]: {} samples exceed the limit of {} per pixel", k,
+                               sets[k].size(), kMaxSamplesPerSet));
     std::vector<Vec2> set;
     for (size_t i = 0; i < sets[k].size(); ++i) {
       const json& s = sets[k][i];
@@ -134,9 +141,15 @@ Pattern pattern_from_json(std::string_view text, std::string_view source) {
   }
   const json& kernels = doc["kernels"];
   if (!kernels.is_array()) fail(source, "kernels: expected an array of weight lists");
+  if (kernels.size() > sets.size())
+    fail(source, fmt::format("kernels: {} kernels for {} sets (one per pixel)", kernels.size(),
+                             sets.size()));
   for (size_t k = 0; k < kernels.size(); ++k) {
     if (!kernels[k].is_array())
       fail(source, fmt::format("kernels[{}]: expected an array of weights", k));
+    if (kernels[k].size() > 16 * kMaxSamplesPerSet)
+      fail(source, fmt::format("kernels[{}]: {} weights exceed what any kernel reads", k,
+                               kernels[k].size()));
     std::vector<double> w;
     for (size_t i = 0; i < kernels[k].size(); ++i)
       w.push_back(get_number(kernels[k][i], source, fmt::format("kernels[{}][{}]", k, i)));
@@ -175,7 +188,10 @@ void save_pattern_file(const Pattern& p, const std::string& path) {
 }
 
 Pattern resolve_pattern(const std::string& name_or_path) {
-  if (name_or_path.ends_with(".json") || std::filesystem::is_regular_file(name_or_path))
+  std::error_code ec;
+  if (std::filesystem::is_directory(name_or_path, ec))
+    throw Error(fmt::format("pattern '{}': it is a folder, not a pattern file", name_or_path));
+  if (name_or_path.ends_with(".json") || std::filesystem::is_regular_file(name_or_path, ec))
     return load_pattern_file(name_or_path);
   return catalog_pattern(name_or_path);
 }

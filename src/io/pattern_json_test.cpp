@@ -120,7 +120,7 @@ TEST(PatternJson, FilesRoundTripAndMissingFilesAreNamed) {
   EXPECT_EQ(read_file(path, "file"), pattern_to_json(p));
   std::filesystem::remove(path);
   EXPECT_EQ(testing::error_message([] { load_pattern_file("/no/such/file.json"); }),
-            "cannot read pattern file '/no/such/file.json': No such file or directory");
+            "cannot read pattern file '/no/such/file.json': no such file");
 }
 
 TEST(PatternJson, ResolvesCatalogNamesAndFiles) {

@@ -29,6 +29,8 @@ std::vector<Vec2> parse_point_csv(std::string_view text, std::string_view source
     if (p.x < 0 || p.x > 1 || p.y < 0 || p.y > 1)
       throw Error(fmt::format("{}: ({}, {}) lies outside the unit square [0, 1] x [0, 1]", where,
                               p.x, p.y));
+    if (points.size() >= kMaxPointSetSize)
+      throw Error(fmt::format("{}: more than {} points, the limit", where, kMaxPointSetSize));
     points.push_back(p);
   }
   if (points.empty()) throw Error(fmt::format("point file {}: no points", source));

@@ -11,6 +11,8 @@
 
 namespace aapat {
 
+inline constexpr size_t kMaxPointSetSize = 1'000'000;
+
 std::vector<Vec2> parse_point_csv(std::string_view text, std::string_view source);
 std::string point_csv(const std::vector<Vec2>& points);
 // Every physical sample of the tile, in [0,1)^2.

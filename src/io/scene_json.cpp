@@ -39,7 +39,7 @@ ShapesScene scene_from_json(std::string_view text, std::string_view source) {
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse errors, invalid UTF-8 and number overflow
     fail(source, fmt::format("not valid JSON ({})", e.what()));
   }
   if (!doc.is_object()) fail(source, "expected an object with \"shapes\"");
@@ -54,7 +54,10 @@ ShapesScene scene_from_json(std::string_view text, std::string_view source) {
   if (!doc.contains("shapes") || !doc["shapes"].is_array())
     fail(source, "shapes: expected a list of polygons and circles");
   const json& shapes = doc["shapes"];
-  if (shapes.size() > 100000) fail(source, "shapes: more than 100000 shapes");
+  if (shapes.size() > kMaxSceneShapes)
+    fail(source,
+         fmt::format("shapes: {} shapes exceed the limit of {}", shapes.size(), kMaxSceneShapes));
+  size_t vertices = 0;
   for (size_t i = 0; i < shapes.size(); ++i) {
     const json& s = shapes[i];
     const std::string field = fmt::format("shapes[{}]", i);
@@ -69,8 +72,16 @@ ShapesScene scene_from_json(std::string_view text, std::string_view source) {
       fail(source, field + ": give either \"polygon\" or \"circle\"");
     if (s.contains("polygon")) {
       const json& poly = s["polygon"];
-      if (!poly.is_array() || poly.size() < 3 || poly.size() > 100000)
+      if (!poly.is_array() || poly.size() < 3)
         fail(source, field + ".polygon: expected a list of 3 or more [x, y] vertices");
+      if (poly.size() > kMaxPolygonVertices)
+        fail(source, fmt::format("{}.polygon: {} vertices exceed the limit of {} per polygon",
+                                 field, poly.size(), kMaxPolygonVertices));
+      vertices += poly.size();
+      if (vertices > kMaxSceneVertices)
+        fail(source, fmt::format("{}.polygon: the scene's polygons have more than {} vertices in "
+                                 "all, the limit",
+                                 field, kMaxSceneVertices));
       if (s.contains("radius")) fail(source, field + ": a polygon has no radius");
       for (size_t k = 0; k < poly.size(); ++k)
         shape.polygon.push_back(point(poly[k], source, fmt::format("{}.polygon[{}]", field, k)));
@@ -82,6 +93,7 @@ ShapesScene scene_from_json(std::string_view text, std::string_view source) {
     if (s.contains("grey")) shape.grey = number(s["grey"], source, field + ".grey", 0, 1);
     scene.shapes.push_back(std::move(shape));
   }
+  index_shapes(scene);
   return scene;
 }
 

@@ -9,6 +9,11 @@
 
 namespace aapat {
 
+// Limits of a scene file (docs/limits.md).
+inline constexpr size_t kMaxSceneShapes = 1'000'000;
+inline constexpr size_t kMaxPolygonVertices = 100'000;
+inline constexpr size_t kMaxSceneVertices = 1'000'000;
+
 // `source` names the text in error messages (a file name). Validates.
 ShapesScene scene_from_json(std::string_view text, std::string_view source);
 

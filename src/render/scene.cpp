@@ -8,6 +8,7 @@
 #include "core/filter_catalog.h"
 #include "core/overloaded.h"
 #include "core/text.h"
+#include "render/shape_index.h"
 
 namespace aapat {
 namespace {
@@ -20,17 +21,6 @@ bool in_triangle(Vec2 p, Vec2 a, Vec2 b, Vec2 c) {
   const double d1 = side(a, b, p), d2 = side(b, c, p), d3 = side(c, a, p);
   const bool neg = d1 < 0 || d2 < 0 || d3<0, pos = d1> 0 || d2 > 0 || d3 > 0;
   return !(neg && pos);
-}
-
-// Even-odd rule: a ray to +x crosses the boundary an odd number of times.
-bool in_polygon(Vec2 p, const std::vector<Vec2>& poly) {
-  bool inside = false;
-  for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const Vec2 a = poly[i], b = poly[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y))
-      inside = !inside;
-  }
-  return inside;
 }
 
 // `name:key=value,...` where every key is one of `allowed`; get() falls back to the default.
@@ -132,6 +122,10 @@ double shade(const Scene& scene, Vec2 image_point) {
             return 0.5 + 0.5 * std::cos(kPi * s.k * r2);
           },
           [&](const ShapesScene& s) {
+            if (s.index) {
+              const int top = s.index->top_shape_at(s.shapes, p);
+              return top < 0 ? s.background : s.shapes[top].grey;
+            }
             for (auto it = s.shapes.rbegin(); it != s.shapes.rend(); ++it) {
               const bool inside = it->polygon.empty() ? std::hypot(p.x - it->centre.x,
                                                                    p.y - it->centre.y) <= it->radius
@@ -141,6 +135,10 @@ double shade(const Scene& scene, Vec2 image_point) {
             return s.background;
           }},
       scene.shape);
+}
+
+void index_shapes(ShapesScene& scene) {
+  scene.index = std::make_shared<const ShapeIndex>(scene.shapes);
 }
 
 Scene make_scene(std::string_view spec, int width, int height) {

@@ -5,6 +5,7 @@
 // its centre (i, j); x grows right and y up, row 0 at the bottom.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -56,10 +57,15 @@ struct Shape {
   double radius = 0;
   double grey = 1;
 };
+class ShapeIndex;
 struct ShapesScene {
   double background = 0;
   std::vector<Shape> shapes;
+  // Built by index_shapes(); without it shade() scans every shape.
+  std::shared_ptr<const ShapeIndex> index;
 };
+// Builds the scene's spatial index (render/shape_index.h) once its shapes are final.
+void index_shapes(ShapesScene& scene);
 
 using SceneShape = std::variant<HalfPlaneScene, CheckerboardScene, CirclesScene, SliverScene,
                                 SpiralScene, ZonePlateScene, DiscScene, TriangleScene, ShapesScene>;

@@ -79,3 +79,40 @@ TEST(Scene, CanonicalTextTellsEveryFieldApart) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// The spatial index answers exactly what the scan over every shape answers,
+// on random scenes of circles and long and short polygons.
+RC_GTEST_PROP(Scene, ShapeIndexAgreesWithTheScan, ()) {
+  ShapesScene scene;
+  scene.background = 0.125;
+  const int count = *rc::gen::inRange(1, 60);
+  for (int i = 0; i < count; ++i) {
+    Shape s;
+    s.grey = *rc::gen::inRange(0, 9) / 8.0;
+    const double cx = *rc::gen::inRange(-20, 60), cy = *rc::gen::inRange(-20, 60);
+    if (*rc::gen::arbitrary<bool>()) {
+      s.centre = {cx, cy};
+      s.radius = *rc::gen::inRange(0, 30);
+    } else {
+      const int n = *rc::gen::inRange(3, 120);  // past 32 the edges are banded
+      for (int k = 0; k < n; ++k) {
+        const double r = *rc::gen::inRange(1, 40), a = 2 * kPi * k / n;
+        s.polygon.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});
+      }
+    }
+    scene.shapes.push_back(std::move(s));
+  }
+  ShapesScene indexed = scene;
+  index_shapes(indexed);
+  const Scene a(indexed), b(scene);
+  for (int i = 0; i < 200; ++i) {
+    const Vec2 p{*rc::gen::inRange(-400, 1000) / 10.0, *rc::gen::inRange(-400, 1000) / 10.0};
+    RC_ASSERT(shade(a, p) == shade(b, p));
+  }
+}
+
+}  // namespace
+}  // namespace aapat
