@@ -8,7 +8,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "cli/commands.h"
@@ -16,7 +15,9 @@
 #include "cli/reference_options.h"
 #include "core/filter_catalog.h"
 #include "core/metric.h"
+#include "io/atomic_file.h"
 #include "io/gif_animation.h"
+#include "io/json_report.h"
 #include "io/pattern_json.h"
 #include "io/png_image.h"
 #include "render/animation.h"
@@ -46,17 +47,20 @@ void add_animation_options(CLI::App* cmd, AnimationOptions& o) {
       ->check(CLI::Range(1, 100000));
   o.reference.settings = a.reference;
   add_reference_options(cmd, o.reference, a.reference.samples);
-  cmd->add_option("--seed", o.reference.settings.seed, "random seed of the reference")
-      ->capture_default_str();
+  add_seed_option(cmd, o.reference.settings.seed, "random seed of the reference");
 }
 
-// MP4 through ffmpeg, from the frames' PNGs in `dir`; written whole or not at all.
-void write_mp4(const std::string& dir, const std::string& path, int fps) {
+// --mp4 needs ffmpeg: asked before any frame is rendered.
+void check_ffmpeg(const std::string& path) {
   if (std::system("command -v ffmpeg >/dev/null 2>&1") != 0)
     throw Error(
         fmt::format("--mp4 {}: needs ffmpeg on the PATH (apt-get install ffmpeg); --gif "
                     "needs nothing",
                     path));
+}
+
+// MP4 through ffmpeg, from the frames' PNGs in `dir`; written whole or not at all.
+void write_mp4(const std::string& dir, const std::string& path, int fps) {
   const std::string tmp = path + ".tmp.mp4";
   const std::string command = fmt::format(
       "ffmpeg -y -loglevel error -framerate {} -i '{}/frame-%04d.png' -vf "
@@ -98,6 +102,8 @@ Action add_animate_command(CLI::App& app) {
     for (const auto& [path, ext] : {std::pair{o->gif, ".gif"}, std::pair{o->mp4, ".mp4"}})
       if (!path.empty() && !path.ends_with(ext))
         throw Error(fmt::format("'{}' must end in {}", path, ext));
+    if (!o->mp4.empty()) check_ffmpeg(o->mp4);
+    if (!o->frames_dir.empty()) check_directory_target(o->frames_dir, "--frames-dir");
     // ffmpeg reads PNG frames from a folder: --frames-dir, or a temporary one.
     std::string frames_dir = o->frames_dir;
     const bool temporary_frames = !o->mp4.empty() && frames_dir.empty();
@@ -105,34 +111,33 @@ Action add_animate_command(CLI::App& app) {
       frames_dir = (std::filesystem::temp_directory_path() /
                     fmt::format("aapat-frames-{}", static_cast<long>(::getpid())))
                        .string();
+    struct Cleanup {  // the temporary frames, whatever happens
+      std::string dir;
+      ~Cleanup() {
+        std::error_code ec;
+        if (!dir.empty()) std::filesystem::remove_all(dir, ec);
+      }
+    } cleanup{temporary_frames ? frames_dir : ""};
     Sampling s;
     s.pattern = resolve_pattern(o->pattern);
     std::optional<Filter> filter;
     if (!o->filter.empty()) filter = make_filter(o->filter);
-    if (!frames_dir.empty()) std::filesystem::create_directories(frames_dir);
+    if (!frames_dir.empty()) ensure_directory(frames_dir, "--frames-dir");
     Progress bar("animate");
     GreyFrames gif{a.width, a.height, std::max(2, 100 / o->fps), {}};
     const ImageError e = animate(
         a, s, filter,
         [&](int f, const Image& img) {
+          // Written now: ffmpeg reads them; on an error the run's new frames are deleted.
           if (!frames_dir.empty())
-            write_png_gray(fmt::format("{}/frame-{:04d}.png", frames_dir, f), img.width, img.height,
-                           grey_pixels(img));
+            write_file_now(fmt::format("{}/frame-{:04d}.png", frames_dir, f),
+                           png_gray_bytes(img.width, img.height, grey_pixels(img)));
           if (!o->gif.empty()) gif.frames.push_back(grey_pixels(img));
           bar.update(f + 1, a.frames, "");
         },
         o->reference.source());
     if (!o->gif.empty()) write_gif(o->gif, gif);
-    if (!o->mp4.empty()) {
-      struct Cleanup {
-        std::string dir;
-        ~Cleanup() {
-          std::error_code ec;
-          if (!dir.empty()) std::filesystem::remove_all(dir, ec);
-        }
-      } cleanup{temporary_frames ? frames_dir : ""};
-      write_mp4(frames_dir, o->mp4, o->fps);
-    }
+    if (!o->mp4.empty()) write_mp4(frames_dir, o->mp4, o->fps);
     if (!o->histogram.empty()) {
       std::string csv = "deviation,count,contribution\n";
       for (int i = 0; i < 256; ++i)
@@ -140,11 +145,16 @@ Action add_animate_command(CLI::App& app) {
       write_output(o->histogram, csv, out);
     }
     if (o->json) {
-      out << nlohmann::ordered_json{{"animation", a.animation}, {"pattern", o->pattern},
-                                    {"frames", a.frames},       {"size", a.width},
-                                    {"rmse", e.rmse},           {"max_deviation", e.max_deviation}}
-                 .dump(2)
-          << "\n";
+      JsonObject doc = json_report("animate");
+      doc.update(JsonObject{{"animation", a.animation},
+                            {"pattern", o->pattern},
+                            {"filter", filter ? filter->name() : "pattern weights"},
+                            {"frames", a.frames},
+                            {"width", a.width},
+                            {"height", a.height},
+                            {"rmse", e.rmse},
+                            {"max_deviation", e.max_deviation}});
+      out << json_text(doc);
       return;
     }
     out << fmt::format("{} animation, {} frames of {}x{}, {}: RMSE {:.3f}, max deviation {}\n",
@@ -157,10 +167,15 @@ Action add_table2_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "table2",
       "re-measure Hasselgren Table 2 (E2, RMSE, max deviation) on the translating circle");
-  auto o = std::make_shared<AnimationOptions>();
+  struct Options : AnimationOptions {
+    bool json = false;
+  };
+  auto o = std::make_shared<Options>();
   add_animation_options(cmd, *o);
+  cmd->add_flag("--json", o->json, "print the table as JSON (docs/json.md)");
   return [o](std::ostream& out) {
     const auto a = std::make_shared<AnimationSettings>(o->settings());
+    JsonObject rows_json = JsonObject::array();
     const ReferenceSource references = o->reference.source();
     struct Row {
       const char* pattern;
@@ -185,10 +200,30 @@ Action add_table2_command(CLI::App& app) {
       Sampling s;
       s.pattern = resolve_pattern(r.pattern);
       const ImageError e = animate(*a, s, std::nullopt, {}, references);
-      table += fmt::format("{:<21} {:>6.3f} ({:.3f})  {:>6.3f} ({:.3f})  {:>4} ({})\n", r.label,
-                           metric.evaluate(*s.pattern).e2, r.e2, e.rmse, r.rmse, e.max_deviation,
-                           r.max_dev);
+      const double e2 = metric.evaluate(*s.pattern).e2;
+      table += fmt::format("{:<21} {:>6.3f} ({:.3f})  {:>6.3f} ({:.3f})  {:>4} ({})\n", r.label, e2,
+                           r.e2, e.rmse, r.rmse, e.max_deviation, r.max_dev);
+      rows_json.push_back(
+          {{"pattern", r.pattern},
+           {"label", r.label},
+           {"e2", e2},
+           {"rmse", e.rmse},
+           {"max_deviation", e.max_deviation},
+           {"paper", {{"e2", r.e2}, {"rmse", r.rmse}, {"max_deviation", r.max_dev}}}});
       bar.update(++done, static_cast<int>(std::size(rows)), r.pattern);
+    }
+    if (o->json) {
+      JsonObject doc = json_report("table2");
+      doc.update(JsonObject{
+          {"animation", "circle"},
+          {"frames", a->frames},
+          {"width", a->width},
+          {"height", a->height},
+          {"reference", fmt::format("{} jittered samples per pixel, {}", a->reference.samples,
+                                    make_filter(a->reference.filter).name())},
+          {"rows", rows_json}});
+      out << json_text(doc);
+      return;
     }
     out << fmt::format(
         "Hasselgren Table 2 re-measured: translating circle, {} frames of {}x{}, reference {} "

@@ -28,6 +28,9 @@ Action add_export_command(CLI::App& app);
 Action add_import_command(CLI::App& app);
 Action add_hardware_table_command(CLI::App& app);
 
+// --seed: a whole number from 0 to 2^64 - 1; "-1" is refused, not wrapped.
+CLI::Option* add_seed_option(CLI::App* cmd, uint64_t& seed, const std::string& help);
+
 // Writes `content` to `path` whole or not at all; "-" writes to `out`.
 void write_output(const std::string& path, const std::string& content, std::ostream& out);
 

@@ -4,9 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "cli/commands.h"
@@ -15,6 +13,8 @@
 #include "core/filter_catalog.h"
 #include "core/text.h"
 #include "generate/enumerate.h"
+#include "io/atomic_file.h"
+#include "io/json_report.h"
 #include "io/pattern_json.h"
 #include "io/pattern_svg.h"
 #include "optimize/multistart.h"
@@ -29,7 +29,8 @@ Action add_enumerate_command(CLI::App& app) {
     int max_per_edge = 8, starts = 32, top = 3;
     bool cull_one_edge = false, optimize = false;
     uint64_t seed = 1;
-    std::string csv, json, gallery, best_dir;
+    std::string csv, gallery, best_dir;
+    bool json = false;
     MetricOptions metric;
   };
   auto o = std::make_shared<Options>();
@@ -45,15 +46,19 @@ Action add_enumerate_command(CLI::App& app) {
   cmd->add_option("--starts", o->starts, "random starts per configuration")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
-  cmd->add_option("--seed", o->seed, "random seed")->capture_default_str();
+  add_seed_option(cmd, o->seed, "random seed");
   cmd->add_option("--csv", o->csv, "write the table as CSV");
-  cmd->add_option("--json", o->json, "write the table as JSON");
+  cmd->add_flag("--json", o->json, "print the table as JSON (docs/json.md)");
   cmd->add_option("--gallery", o->gallery, "write an SVG of the best configurations of each n");
   cmd->add_option("--top", o->top, "configurations per n in the gallery")->capture_default_str();
   cmd->add_option("--best-dir", o->best_dir, "write the best pattern of each n into this folder");
   o->metric.add_to(cmd);
 
   return [o](std::ostream& out) {
+    // With --json the document alone goes to stdout; the text goes nowhere.
+    std::ostream discard(nullptr);
+    std::ostream& text = o->json ? discard : out;
+    const Metric metric = o->metric.make();  // a bad --filter or --acuity fails first
     std::vector<double> costs;
     for (std::string_view c : split(o->costs)) costs.push_back(parse_number(c, "--cost"));
     const EnumerationRules rules{o->max_per_edge, o->cull_one_edge};
@@ -70,20 +75,20 @@ Action add_enumerate_command(CLI::App& app) {
         rows.push_back({static_cast<int>(rows.size()) + 1, n, c, NAN, {}});
     if ((o->gallery.size() || o->best_dir.size()) && !o->optimize)
       throw Error("--gallery and --best-dir show optimized patterns: add --optimize");
+    if (!o->best_dir.empty()) check_directory_target(o->best_dir, "--best-dir");
 
-    out << fmt::format(
+    text << fmt::format(
         "P(4,1+,n) placement configurations (rotations and reflections removed; at "
         "most {} samples per edge{})\n",
         o->max_per_edge, o->cull_one_edge ? "; one-border-line configurations culled" : "");
     for (double n : costs)
-      out << fmt::format(
+      text << fmt::format(
           "  n = {:<5} {:>4}\n", format_cost(n),
           std::count_if(rows.begin(), rows.end(), [&](const Row& r) { return r.n == n; }));
-    out << fmt::format("  total     {:>4}\n", rows.size());
-    if (!o->optimize && o->csv.empty() && o->json.empty()) return;
+    text << fmt::format("  total     {:>4}\n", rows.size());
+    if (!o->optimize && o->csv.empty() && !o->json) return;
 
     if (o->optimize) {
-      const Metric metric = o->metric.make();
       Progress bar("enumerate");
       for (size_t i = 0; i < rows.size(); ++i) {
         Row& row = rows[i];
@@ -112,23 +117,33 @@ Action add_enumerate_command(CLI::App& app) {
         return a.n != b.n ? a.n < b.n : a.e2 < b.e2;
       });
     }
-    out << fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", "id", "n", "reads", "E2", "placement");
+    text << fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", "id", "n", "reads", "E2", "placement");
     std::string csv = "id,n,placement,samples_read,e2\n";
-    nlohmann::ordered_json js = nlohmann::ordered_json::array();
+    JsonObject js = JsonObject::array();
     for (const Row& r : rows) {
-      out << fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", r.id, format_cost(r.n),
-                         r.config.samples(), o->optimize ? fmt::format("{:.4f}", r.e2) : "-",
-                         r.config.sites());
+      text << fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", r.id, format_cost(r.n),
+                          r.config.samples(), o->optimize ? fmt::format("{:.4f}", r.e2) : "-",
+                          r.config.sites());
       csv += fmt::format("{},{},\"{}\",{},{}\n", r.id, format_cost(r.n), r.config.sites(),
                          r.config.samples(), o->optimize ? fmt::format("{:.6f}", r.e2) : "");
       js.push_back({{"id", r.id},
                     {"n", r.n},
                     {"placement", r.config.sites()},
                     {"samples_read", r.config.samples()},
-                    {"e2", o->optimize ? nlohmann::ordered_json(r.e2) : nlohmann::ordered_json()}});
+                    {"e2", o->optimize ? JsonObject(r.e2) : JsonObject()}});
     }
     if (!o->csv.empty()) write_output(o->csv, csv, out);
-    if (!o->json.empty()) write_output(o->json, js.dump(2) + "\n", out);
+    if (o->json) {
+      JsonObject doc = json_report("enumerate");
+      doc.update(JsonObject{{"family", "P(4,1+,n)"},
+                            {"max_per_edge", o->max_per_edge},
+                            {"cull_one_edge", o->cull_one_edge},
+                            {"optimized", o->optimize},
+                            {"starts", o->optimize ? JsonObject(o->starts) : JsonObject()},
+                            {"seed", o->seed},
+                            {"rows", js}});
+      out << json_text(doc);
+    }
     if (!o->gallery.empty()) {
       std::vector<GalleryItem> items;
       for (double n : costs) {
@@ -144,7 +159,7 @@ Action add_enumerate_command(CLI::App& app) {
           out);
     }
     if (!o->best_dir.empty()) {
-      std::filesystem::create_directories(o->best_dir);
+      ensure_directory(o->best_dir, "--best-dir");
       for (double n : costs)
         for (const Row& r : rows)
           if (r.n == n) {

@@ -8,6 +8,7 @@
 
 #include "cli/commands.h"
 #include "cli/metric_options.h"
+#include "io/json_report.h"
 #include "io/pattern_json.h"
 #include "io/profile_plot.h"
 #include "optimize/descent.h"
@@ -25,7 +26,7 @@ Action add_eval_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   cmd->add_option("patterns", o->patterns, "catalog names or pattern files (.json)")->required();
   o->metric.add_to(cmd);
-  cmd->add_flag("--json", o->json, "print one JSON array, an object per pattern");
+  cmd->add_flag("--json", o->json, "print JSON (docs/json.md): a row per pattern");
   cmd->add_flag("--optimized-weights", o->optimized_weights,
                 "also the E2 with weights optimized for the same positions");
   cmd->add_option("--profile", o->profile,
@@ -37,7 +38,7 @@ Action add_eval_command(CLI::App& app) {
     std::vector<Pattern> patterns;
     for (const auto& name : o->patterns) patterns.push_back(resolve_pattern(name));
 
-    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    JsonObject rows = JsonObject::array();
     std::vector<ProfileSeries> series;
     if (!o->json)
       out << fmt::format(
@@ -55,12 +56,9 @@ Action add_eval_command(CLI::App& app) {
                         {"family", family(p)},
                         {"n", n},
                         {"e2", e.e2},
-                        {"worst_angle", e.worst_angle_deg},
+                        {"worst_angle_deg", e.worst_angle_deg},
                         {"worst_kernel", e.worst_kernel},
-                        {"kernel_e2", e.kernel_e2},
-                        {"filter", metric.filter().name()},
-                        {"acuity", metric.acuity().name},
-                        {"norm", o->metric.norm}});
+                        {"kernel_e2", e.kernel_e2}});
         if (o->optimized_weights) rows.back()["e2_optimized_weights"] = e2_w;
       } else {
         out << fmt::format("{:<22} {:<14} {:>6} {:>8.4f} {:>12g} {:>7}{}\n", p.name, family(p),
@@ -70,7 +68,15 @@ Action add_eval_command(CLI::App& app) {
       if (!o->profile.empty())
         series.push_back({p.name, metric.profile(make_kernel(p, e.worst_kernel))});
     }
-    if (o->json) out << rows.dump(2) << "\n";
+    if (o->json) {
+      JsonObject doc = json_report("eval");
+      doc["filter"] = metric.filter().name();
+      doc["acuity"] = metric.acuity().name;
+      doc["angles"] = metric.angle_count();
+      doc["norm"] = o->metric.norm;
+      doc["rows"] = rows;
+      out << json_text(doc);
+    }
     if (!o->profile.empty()) {
       const std::string title = fmt::format("W(theta) E1(theta), filter {}, acuity {}",
                                             metric.filter().name(), metric.acuity().name);

@@ -10,6 +10,7 @@
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
+#include "io/json_report.h"
 #include "io/line_plot.h"
 #include "optimize/family.h"
 #include "optimize/multistart.h"
@@ -40,15 +41,17 @@ Action add_figure10_command(CLI::App& app) {
     int starts = 32;
     uint64_t seed = 1;
     std::string csv, svg;
+    bool json = false;
     MetricOptions metric;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("--starts", o->starts, "random starts per family, n and placement")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
-  cmd->add_option("--seed", o->seed, "random seed")->capture_default_str();
+  add_seed_option(cmd, o->seed, "random seed");
   cmd->add_option("--csv", o->csv, "write family, n, placement, E2 as CSV");
   cmd->add_option("--svg", o->svg, "write the plot");
+  cmd->add_flag("--json", o->json, "print the points as JSON (docs/json.md)");
   o->metric.add_to(cmd);
   return [o](std::ostream& out) {
     const Metric metric = o->metric.make();
@@ -87,17 +90,30 @@ Action add_figure10_command(CLI::App& app) {
       }
       lines.push_back(line);
     }
-    out << fmt::format(
+    std::ostream discard(nullptr);
+    std::ostream& text = o->json ? discard : out;
+    text << fmt::format(
         "Laine-Aila Figure 10 re-run: best E2 of {} jittered starts, seed {}, filter {}\n",
         o->starts, o->seed, metric.filter().name());
-    out << fmt::format("{:<14} {:>5} {:>8}  {}\n", "family", "n", "E2", "placement");
+    text << fmt::format("{:<14} {:>5} {:>8}  {}\n", "family", "n", "E2", "placement");
     std::string csv = "family,n,e2,placement\n";
+    JsonObject rows = JsonObject::array();
     for (const auto& p : points) {
-      out << fmt::format("{:<14} {:>5} {:>8.4f}  {}\n", p.family, format_cost(p.n), p.e2,
-                         p.placement.empty() ? "all inside" : p.placement);
+      rows.push_back({{"family", p.family}, {"n", p.n}, {"e2", p.e2}, {"placement", p.placement}});
+      text << fmt::format("{:<14} {:>5} {:>8.4f}  {}\n", p.family, format_cost(p.n), p.e2,
+                          p.placement.empty() ? "all inside" : p.placement);
       csv += fmt::format("{},{},{:.6f},\"{}\"\n", p.family, format_cost(p.n), p.e2, p.placement);
     }
     if (!o->csv.empty()) write_output(o->csv, csv, out);
+    if (o->json) {
+      JsonObject doc = json_report("figure10");
+      doc.update(JsonObject{{"starts", o->starts},
+                            {"seed", o->seed},
+                            {"filter", metric.filter().name()},
+                            {"acuity", metric.acuity().name},
+                            {"rows", rows}});
+      out << json_text(doc);
+    }
     if (!o->svg.empty())
       write_output(o->svg,
                    line_plot_svg({"Best E2 against samples per pixel (Laine-Aila Fig. 10 re-run)",

@@ -15,6 +15,7 @@
 #include "core/hardware_layout.h"
 #include "core/lattice.h"
 #include "generate/catalog.h"
+#include "io/json_report.h"
 #include "optimize/descent.h"
 #include "optimize/family.h"
 #include "optimize/lattice_search.h"
@@ -63,14 +64,17 @@ Action add_hardware_table_command(CLI::App& app) {
     MetricOptions metric;
     int starts = 32;
     uint64_t seed = 1;
+    bool json = false;
   };
   auto o = std::make_shared<Options>();
   o->metric.add_to(cmd);
   cmd->add_option("--starts", o->starts, "random starts per family")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
-  cmd->add_option("--seed", o->seed, "random seed")->capture_default_str();
+  add_seed_option(cmd, o->seed, "random seed");
+  cmd->add_flag("--json", o->json, "print the table as JSON (docs/json.md)");
   return [o](std::ostream& out) {
+    JsonObject rows = JsonObject::array();
     const Metric metric = o->metric.make();
     const ApiProfile &tier1 = api_profile("d3d12-tier1"), &tier2 = api_profile("d3d12-tier2");
     std::string table =
@@ -81,6 +85,12 @@ Action add_hardware_table_command(CLI::App& app) {
       table +=
           fmt::format("| {} | {} | {} | {} | {:.4f} | {:.4f} | {:+.4f} |\n", n, what, profile.name,
                       f.layout, f.continuous, f.lattice, f.lattice - f.continuous);
+      rows.push_back({{"n", n},
+                      {"pattern", what},
+                      {"profile", profile.name},
+                      {"layout", f.layout},
+                      {"e2_continuous", f.continuous},
+                      {"e2_lattice", f.lattice}});
     };
     Progress bar("hardware-table");
     int done = 0;
@@ -118,6 +128,16 @@ Action add_hardware_table_command(CLI::App& app) {
       row(format_cost(samples_per_pixel(p)), fmt::format("{} snapped, then searched", name),
           profile, snapped(metric, p, profile));
       bar.update(++done, total, name);
+    }
+    if (o->json) {
+      JsonObject doc = json_report("hardware-table");
+      doc.update(JsonObject{{"filter", metric.filter().name()},
+                            {"acuity", metric.acuity().name},
+                            {"starts", o->starts},
+                            {"seed", o->seed},
+                            {"rows", rows}});
+      out << json_text(doc);
+      return;
     }
     out << fmt::format(
         "E2 ({}, acuity {}); continuous: the family's optimum from {} starts (catalog rows: the "

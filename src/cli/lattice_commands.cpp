@@ -15,6 +15,7 @@
 #include "core/lattice.h"
 #include "io/api_export.h"
 #include "io/atomic_file.h"
+#include "io/json_report.h"
 #include "io/pattern_json.h"
 #include "optimize/descent.h"
 #include "optimize/problem.h"
@@ -32,7 +33,9 @@ Action add_snap_command(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("pattern", o->pattern, "catalog name or pattern file")->required();
-  cmd->add_option("--lattice", o->lattice, "steps per pixel")->capture_default_str();
+  cmd->add_option("--lattice", o->lattice, "steps per pixel")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 256));
   o->metric.add_to(cmd);
   cmd->add_flag("--optimize-weights", o->weights,
                 "then optimize the weights for the snapped positions");
@@ -42,6 +45,8 @@ Action add_snap_command(CLI::App& app) {
   return [o](std::ostream& out) {
     if (!o->output.empty() && !o->output.ends_with(".json"))
       throw Error(fmt::format("--output: '{}' must end in .json", o->output));
+    if (o->nonnegative && !o->weights)
+      throw Error("--nonnegative constrains the weights --optimize-weights finds: add it");
     const Metric metric = o->metric.make();
     const Pattern before = resolve_pattern(o->pattern);
     Pattern after = snap_to_lattice(before, o->lattice);
@@ -59,12 +64,18 @@ Action add_snap_command(CLI::App& app) {
                                            after.sets[k][i].y - before.sets[k][i].y));
     if (!o->output.empty()) save_pattern_file(after, o->output);
     if (o->json) {
-      nlohmann::ordered_json js{{"pattern", before.name},       {"lattice", o->lattice},
-                                {"e2_before", e_before},        {"e2_snapped", e_snapped},
-                                {"largest_move", moved},        {"family", family(after)},
-                                {"n", samples_per_pixel(after)}};
+      JsonObject js = json_report("snap");
+      js.update(JsonObject{{"pattern", before.name},
+                           {"lattice", o->lattice},
+                           {"filter", metric.filter().name()},
+                           {"acuity", metric.acuity().name},
+                           {"e2_before", e_before},
+                           {"e2_snapped", e_snapped},
+                           {"largest_move", moved},
+                           {"family", family(after)},
+                           {"n", samples_per_pixel(after)}});
       if (o->weights) js["e2_optimized_weights"] = e_weights;
-      out << js.dump(2) << "\n";
+      out << json_text(js);
       return;
     }
     out << fmt::format(
@@ -140,7 +151,12 @@ Action add_import_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "the pattern (.json; default: print it)");
   return [o](std::ostream& out) {
     const HardwareLayout L = parse_export(read_file(o->input, "export"), o->input);
-    Pattern p = pattern_from_layout(L);
+    Pattern p;
+    try {
+      p = pattern_from_layout(L);
+    } catch (const Error& e) {
+      throw Error(fmt::format("import {}: {}", o->input, e.what()));
+    }
     p.provenance = {{"imported", o->input}, {"profile", L.profile}};
     if (o->output.empty()) {
       out << pattern_to_json(p);

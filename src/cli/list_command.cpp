@@ -1,6 +1,7 @@
 // `aapat list`: the catalog, the filters and the acuity tables, one line each.
 #include <fmt/format.h>
 
+#include <memory>
 #include <ostream>
 
 #include "cli/commands.h"
@@ -8,14 +9,47 @@
 #include "core/filter_catalog.h"
 #include "generate/catalog.h"
 #include "generate/point_generators.h"
+#include "io/json_report.h"
 #include "render/scene.h"
 
 namespace aapat {
 
 Action add_list_command(CLI::App& app) {
-  app.add_subcommand("list",
-                     "list the catalog patterns, filters, generators, acuity tables and scenes");
-  return [](std::ostream& out) {
+  auto* cmd = app.add_subcommand(
+      "list", "list the catalog patterns, filters, generators, acuity tables and scenes");
+  auto json = std::make_shared<bool>(false);
+  cmd->add_flag("--json", *json, "print the catalogs as JSON (docs/json.md)");
+  return [json](std::ostream& out) {
+    if (*json) {
+      JsonObject doc = json_report("list");
+      JsonObject patterns = JsonObject::array(), filters = JsonObject::array(),
+                 generators = JsonObject::array(), acuity = JsonObject::array(),
+                 scenes = JsonObject::array();
+      for (const auto& e : pattern_catalog())
+        patterns.push_back({{"name", e.name}, {"summary", e.summary}, {"source", e.source}});
+      for (const auto& f : filter_catalog()) {
+        JsonObject params = JsonObject::array();
+        for (const auto& p : f.params)
+          params.push_back({{"key", p.key}, {"default", p.default_text}, {"meaning", p.meaning}});
+        filters.push_back({{"name", f.name},
+                           {"summary", f.summary},
+                           {"source", f.source},
+                           {"parameters", params}});
+      }
+      for (const auto& g : generator_catalog())
+        generators.push_back({{"spec", g.spec}, {"summary", g.summary}, {"source", g.source}});
+      for (const auto& a : acuity_catalog())
+        acuity.push_back({{"spec", a.spec}, {"summary", a.summary}});
+      for (const auto& s : scene_catalog())
+        scenes.push_back({{"name", s.name}, {"parameters", s.parameters}, {"summary", s.summary}});
+      doc.update(JsonObject{{"patterns", patterns},
+                            {"filters", filters},
+                            {"generators", generators},
+                            {"acuity_tables", acuity},
+                            {"scenes", scenes}});
+      out << json_text(doc);
+      return;
+    }
     out << "patterns:\n";
     for (const auto& e : pattern_catalog()) {
       const std::string fam = e.name == "grid-NxN" ? "P(1,1,N*N)" : family(catalog_pattern(e.name));

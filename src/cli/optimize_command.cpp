@@ -11,6 +11,8 @@
 #include "cli/progress.h"
 #include "core/hardware_layout.h"
 #include "core/lattice.h"
+#include "generate/enumerate.h"
+#include "io/json_report.h"
 #include "io/pattern_json.h"
 #include "io/pattern_svg.h"
 #include "optimize/family.h"
@@ -31,7 +33,7 @@ Action add_optimize_command(CLI::App& app) {
     uint64_t seed = 1;
     double time_limit = 0;
     std::vector<int> lock;
-    bool weights_only = false, nonnegative = false, starts_given = false;
+    bool weights_only = false, nonnegative = false, starts_given = false, json = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("pattern", o->pattern, "catalog name or pattern file to polish");
@@ -43,7 +45,7 @@ Action add_optimize_command(CLI::App& app) {
   cmd->add_option("--starts", o->starts, "random starts (run in parallel)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
-  cmd->add_option("--seed", o->seed, "random seed")->capture_default_str();
+  add_seed_option(cmd, o->seed, "random seed");
   cmd->add_option("--seeds", o->seeds,
                   "seed patterns: jittered, poisson, uniform, or a pattern file (.json) whose "
                   "starts after the first are jittered by up to 0.1 pixel")
@@ -72,6 +74,7 @@ Action add_optimize_command(CLI::App& app) {
   cmd->add_option("--csv", o->csv,
                   "write every start: start, initial E2, final E2, iterations, seconds");
   cmd->add_option("--svg", o->svg, "write a drawing of the best pattern");
+  cmd->add_flag("--json", o->json, "print the result as JSON (docs/json.md)");
 
   auto* starts_option = cmd->get_option("--starts");
   return [o, starts_option](std::ostream& out) {
@@ -123,27 +126,60 @@ Action add_optimize_command(CLI::App& app) {
       starts = o->starts_given ? o->starts : 1;
       what = fmt::format("{} {} ({} start{})", start.layout.name, family(start.layout), starts,
                          starts == 1 ? "" : "s");
-    } else {
+    }
+    // A sharing family without a placement: every placement of its cost is
+    // searched (as `aapat enumerate` does) and the best one kept; otherwise
+    // every sample would sit inside and nothing would be shared.
+    std::vector<std::string> placements{o->placement};
+    if (o->pattern.empty()) {
       spec = parse_family(o->family, o->placement);
-      const SeedKind kind = parse_seed_kind(o->seeds);
-      SeedFunction random = family_seeds(spec, kind, o->seed, metric.filter());
+      if (spec.mirrored && o->placement.empty()) {
+        placements.clear();
+        for (const PlacementConfig& c : enumerate_placements(spec.n))
+          placements.push_back(c.sites());
+      }
+    }
+    auto seeds_for = [&](const std::string& placement) -> SeedFunction {
+      const FamilySpec s = parse_family(o->family, placement);
+      SeedFunction random = family_seeds(s, parse_seed_kind(o->seeds), o->seed, metric.filter());
       const std::vector<int> lock = o->lock;
-      make_seed = [random, lock](int i) {
+      return [random, lock](int i) {
         Problem p = random(i);
         lock_samples(p, lock);
         return p;
       };
-      what = fmt::format("{} from {} {} starts", spec.text(), starts, o->seeds);
-    }
+    };
 
     const auto t0 = std::chrono::steady_clock::now();
     MultiStartResult result;
     {
       Progress bar("optimize");
-      result = multistart(metric, starts, o->seed, make_seed, settings, o->threads,
-                          [&](int done, int total, double best) {
-                            bar.update(done, total, fmt::format("best E2 {:.4f}", best));
-                          });
+      const int total = starts * static_cast<int>(o->pattern.empty() ? placements.size() : 1);
+      int before = 0;
+      auto progress = [&](int done, int, double best) {
+        bar.update(before + done, total, fmt::format("best E2 {:.4f}", best));
+      };
+      if (!o->pattern.empty()) {
+        result = multistart(metric, starts, o->seed, make_seed, settings, o->threads, progress);
+      } else {
+        for (const std::string& placement : placements) {
+          SeedFunction seeds = seeds_for(placement);
+          MultiStartResult r =
+              multistart(metric, starts, o->seed, seeds, settings, o->threads, progress);
+          before += starts;
+          if (r.best >= 0 && (result.best < 0 || r.starts[r.best].run.final_e2 <
+                                                     result.starts[result.best].run.final_e2)) {
+            result = std::move(r);
+            make_seed = std::move(seeds);
+            o->placement = placement;
+          }
+        }
+        spec = parse_family(o->family, o->placement);
+        what = placements.size() > 1
+                   ? fmt::format("{} from {} {} starts for each of its {} placements (best: {})",
+                                 spec.text(), starts, o->seeds, placements.size(), o->placement)
+                   : fmt::format("{} from {} {} starts", spec.text(), starts, o->seeds);
+      }
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -204,14 +240,18 @@ Action add_optimize_command(CLI::App& app) {
     }
     validate(p);
 
-    out << fmt::format("optimized {} ({}, acuity {}, norm {})\n", what, metric.filter().name(),
-                       metric.acuity().name, o->metric.norm);
-    out << fmt::format(
+    // With --json the document alone goes to stdout.
+    std::ostream discard(nullptr);
+    std::ostream& text = o->json ? discard : out;
+
+    text << fmt::format("optimized {} ({}, acuity {}, norm {})\n", what, metric.filter().name(),
+                        metric.acuity().name, o->metric.norm);
+    text << fmt::format(
         "{} starts ran in {:.2f} s; best start {}: E2 {:.4f} -> {:.4f} in {} iterations\n",
         result.starts.size(), seconds, best.start, best.run.initial_e2, best.run.final_e2,
         best.run.iterations);
     if (result.polished_from > 0)
-      out << fmt::format(
+      text << fmt::format(
           "(the heuristic's best {:.5f}, polished by the minimax descent to {:.5f})\n",
           result.polished_from, best.run.final_e2);
     if (o->nonnegative) {
@@ -223,26 +263,26 @@ Action add_optimize_command(CLI::App& app) {
           metric, 1, o->seed, [&](int) { return again; }, free, o->threads);
       const double e_free =
           unconstrained.starts.empty() ? NAN : unconstrained.starts[0].run.final_e2;
-      out << fmt::format(
+      text << fmt::format(
           "non-negative weights: E2 {:.4f}; unconstrained from the same start: {:.4f} "
           "(cost {:+.4f})\n",
           best.run.final_e2, e_free, best.run.final_e2 - e_free);
     }
-    out << lattice_report;
-    out << fmt::format("{}  {}  n = {}\n", p.name, family(p), format_cost(samples_per_pixel(p)));
+    text << lattice_report;
+    text << fmt::format("{}  {}  n = {}\n", p.name, family(p), format_cost(samples_per_pixel(p)));
     for (const Vec2& s : p.sets[0])
-      out << fmt::format("  {:>9.5f} {:>9.5f}  {}\n", s.x, s.y, site_name(s));
-    out << "  weights:";
-    for (double w : p.weights[0]) out << fmt::format(" {:.5f}", w);
-    out << "\n";
+      text << fmt::format("  {:>9.5f} {:>9.5f}  {}\n", s.x, s.y, site_name(s));
+    text << "  weights:";
+    for (double w : p.weights[0]) text << fmt::format(" {:.5f}", w);
+    text << "\n";
 
     if (!o->output.empty()) {
       save_pattern_file(p, o->output);
-      out << "wrote " << o->output << "\n";
+      text << "wrote " << o->output << "\n";
     }
     if (!o->svg.empty()) {
       write_output(o->svg, pattern_svg(p), out);
-      out << "wrote " << o->svg << "\n";
+      text << "wrote " << o->svg << "\n";
     }
     if (!o->csv.empty()) {
       std::string csv = "start,initial_e2,final_e2,iterations,seconds\n";
@@ -250,7 +290,28 @@ Action add_optimize_command(CLI::App& app) {
         csv += fmt::format("{},{:.10g},{:.10g},{},{:.4f}\n", r.start, r.run.initial_e2,
                            r.run.final_e2, r.run.iterations, r.seconds);
       write_output(o->csv, csv, out);
-      out << "wrote " << o->csv << "\n";
+      text << "wrote " << o->csv << "\n";
+    }
+    if (o->json) {
+      JsonObject doc = json_report("optimize");
+      doc.update(JsonObject{{"family", family(p)},
+                            {"placement", o->placement},
+                            {"method", o->method},
+                            {"filter", metric.filter().name()},
+                            {"acuity", metric.acuity().name},
+                            {"norm", o->metric.norm},
+                            {"seed", o->seed},
+                            {"starts", result.starts.size()},
+                            {"best_start", best.start},
+                            {"initial_e2", best.run.initial_e2},
+                            {"e2", best.run.final_e2},
+                            {"iterations", best.run.iterations}});
+      if (o->lattice > 0) {
+        doc["lattice"] = o->lattice;
+        doc["lattice_e2"] = metric.evaluate(p).e2;
+      }
+      doc["pattern"] = JsonObject::parse(pattern_to_json(p));
+      out << json_text(doc);
     }
   };
 }

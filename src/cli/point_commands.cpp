@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <ostream>
 #include <random>
 #include <set>
@@ -16,6 +15,7 @@
 #include "cli/progress.h"
 #include "core/text.h"
 #include "generate/point_generators.h"
+#include "io/json_report.h"
 #include "io/line_plot.h"
 #include "io/pattern_json.h"
 #include "io/png_image.h"
@@ -33,7 +33,7 @@ struct PointSource {
     cmd->add_option("source", source, "generator spec (see `aapat list`) or a .csv / .json file")
         ->required();
     cmd->add_option("--n", n, "points")->capture_default_str()->check(CLI::Range(1, 1000000));
-    cmd->add_option("--seed", seed, "random seed")->capture_default_str();
+    add_seed_option(cmd, seed, "random seed");
   }
   bool is_file() const { return source.ends_with(".csv") || source.ends_with(".json"); }
   // Realization r of the source (a file has only one).
@@ -42,6 +42,9 @@ struct PointSource {
     return generate_points(source, n, seed + static_cast<uint64_t>(realization));
   }
 };
+
+// The exact 2D spectrum's work: points x frequencies x realizations.
+constexpr double kMaxSpectrumTerms = 68719476736.0;  // 2^36
 
 // 1D point sets for Goss & Wu's Figure 8: n points with unit mean spacing.
 std::vector<double> points_1d(const std::string& kind, int n, uint64_t seed) {
@@ -81,14 +84,18 @@ Action add_generate_command(CLI::App& app) {
   auto src = std::make_shared<PointSource>();
   auto output = std::make_shared<std::string>();
   auto tile = std::make_shared<int>(0);
+  auto json = std::make_shared<bool>(false);
   src->add_to(cmd);
+  cmd->add_flag("--json", *json, "print the points as JSON (docs/json.md) instead of CSV");
   cmd->add_option("-o,--output", *output,
                   "a .csv point set or a .json pattern (P(1,1,n)); default: CSV on stdout");
   cmd->add_option(
       "--tile", *tile,
       "with a .json output: a K x K tile of pixel sets, each generated anew: P(K^2,1,n)");
-  return [src, output, tile](std::ostream& out) {
+  return [src, output, tile, json](std::ostream& out) {
     if (src->is_file()) throw Error("generate: give a generator, not a file");
+    if (*json && !output->empty())
+      throw Error("--json prints the points; it does not go with -o (the file has them)");
     if (*tile > 0) {
       if (!output->ends_with(".json"))
         throw Error("--tile: write the tile as a pattern file (-o file.json)");
@@ -104,7 +111,14 @@ Action add_generate_command(CLI::App& app) {
       return;
     }
     const auto points = src->points();
-    if (output->empty() || *output == "-") {
+    if (*json) {
+      JsonObject doc = json_report("generate");
+      doc.update(JsonObject{{"source", src->source}, {"n", points.size()}, {"seed", src->seed}});
+      JsonObject rows = JsonObject::array();
+      for (const Vec2& v : points) rows.push_back({{"x", v.x}, {"y", v.y}});
+      doc["rows"] = std::move(rows);
+      out << json_text(doc);
+    } else if (output->empty() || *output == "-") {
       out << point_csv(points);
     } else if (output->ends_with(".json")) {
       Pattern p = points_to_pattern(
@@ -134,20 +148,32 @@ Action add_discrepancy_command(CLI::App& app) {
   cmd->add_flag("--json", *json, "print JSON");
   return [src, json](std::ostream& out) {
     const auto points = src->points();
-    const double l2 = l2_star_discrepancy(points);
-    const StarDiscrepancy star = star_discrepancy(points);
-    const EdgeDiscrepancy edge = edge_discrepancy(points);
+    check_discrepancy_size(points.size());
+    double l2 = 0;
+    StarDiscrepancy star;
+    EdgeDiscrepancy edge;
+    {
+      Progress bar("discrepancy");
+      bar.update(0, 3, "L2-star");
+      l2 = l2_star_discrepancy(points);
+      bar.update(1, 3, "star");
+      star = star_discrepancy(points);
+      bar.update(2, 3, "edge");
+      edge = edge_discrepancy(points, 720, [&](int done, int total) {
+        if (done % 16 == 0) bar.update(2, 3, fmt::format("edge {}/{}", done, total));
+      });
+    }
     if (*json) {
-      out << nlohmann::ordered_json{{"source", src->source},
-                                    {"points", points.size()},
-                                    {"l2_star", l2},
-                                    {"star_lower", star.lower},
-                                    {"star_upper", star.upper},
-                                    {"star_exact", star.exact},
-                                    {"edge", edge.value},
-                                    {"edge_normal_deg", edge.normal_deg}}
-                 .dump(2)
-          << "\n";
+      JsonObject doc = json_report("discrepancy");
+      doc.update(JsonObject{{"source", src->source},
+                            {"points", points.size()},
+                            {"l2_star", l2},
+                            {"star_lower", star.lower},
+                            {"star_upper", star.upper},
+                            {"star_exact", star.exact},
+                            {"edge", edge.value},
+                            {"edge_normal_deg", edge.normal_deg}});
+      out << json_text(doc);
       return;
     }
     out << fmt::format("{} ({} points)\n  L2-star discrepancy  {:.6f}\n", src->source,
@@ -170,11 +196,12 @@ Action add_spectrum_command(CLI::App& app) {
     int size = 256, realizations = 1, frequencies = 131072;
     double max_frequency = 4;
     std::string png, csv, svg, one_d;
+    bool json = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("source", o->src.source, "generator spec or a .csv / .json file (2D)");
   cmd->add_option("--n", o->src.n, "points")->capture_default_str()->check(CLI::Range(1, 1000000));
-  cmd->add_option("--seed", o->src.seed, "random seed")->capture_default_str();
+  add_seed_option(cmd, o->src.seed, "random seed");
   cmd->add_option("--size", o->size, "frequencies per axis, -size/2 .. size/2-1")
       ->capture_default_str()
       ->check(CLI::Range(8, 2048));
@@ -191,12 +218,20 @@ Action add_spectrum_command(CLI::App& app) {
   cmd->add_option("--frequencies", o->frequencies, "1D: frequencies evaluated")
       ->capture_default_str()
       ->check(CLI::Range(16, 10000000));
+  cmd->add_flag("--json", o->json, "print the radial average (2D) or the spectrum (1D) as JSON");
   cmd->add_option("--max-frequency", o->max_frequency,
                   "1D: highest frequency, cycles per mean spacing")
       ->capture_default_str()
       ->check(CLI::Range(0.01, 1000.0));
   return [o](std::ostream& out) {
     if (!o->one_d.empty()) {
+      if (!o->png.empty())
+        throw Error(
+            "-o writes the 2D spectrum as a PNG; with --1d write --csv or --svg (a 1D spectrum "
+            "is a curve)");
+      if (!o->src.source.empty())
+        throw Error(
+            fmt::format("--1d draws its own 1D points; drop the source '{}'", o->src.source));
       // One curve per kind in a comma list, in one table and one plot.
       std::vector<std::string> kinds;
       for (std::string_view k : split(o->one_d)) kinds.emplace_back(trim(k));
@@ -234,6 +269,23 @@ Action add_spectrum_command(CLI::App& app) {
         csv += "\n";
       }
       if (!o->csv.empty()) write_output(o->csv, csv, out);
+      if (o->json) {
+        JsonObject doc = json_report("spectrum");
+        doc.update(JsonObject{{"dimensions", 1},
+                              {"kinds", kinds},
+                              {"points", count},
+                              {"seed", o->src.seed},
+                              {"frequencies", o->frequencies},
+                              {"max_frequency", o->max_frequency}});
+        JsonObject rows = JsonObject::array();
+        for (int k = 0; k < o->frequencies; ++k) {
+          JsonObject row{{"frequency", k * o->max_frequency / o->frequencies}};
+          for (size_t i = 0; i < kinds.size(); ++i) row[kinds[i]] = powers[i][k];
+          rows.push_back(std::move(row));
+        }
+        doc["rows"] = std::move(rows);
+        out << json_text(doc);
+      }
       if (!o->svg.empty())
         write_output(
             o->svg,
@@ -246,11 +298,19 @@ Action add_spectrum_command(CLI::App& app) {
                            true},
                           lines),
             out);
-      out << fmt::format("1D {}: {} points, {} frequencies up to {}\n", o->one_d, count,
-                         o->frequencies, o->max_frequency);
+      if (!o->json)
+        out << fmt::format("1D {}: {} points, {} frequencies up to {}\n", o->one_d, count,
+                           o->frequencies, o->max_frequency);
       return;
     }
     if (o->src.source.empty()) throw Error("spectrum: give a generator or a point file (or --1d)");
+    // The exact spectrum costs points x size^2 per realization.
+    const double work = static_cast<double>(o->src.n) * o->size * o->size * o->realizations;
+    if (!o->src.is_file() && work > kMaxSpectrumTerms)
+      throw Error(fmt::format(
+          "spectrum: {} points x {}^2 frequencies x {} realizations = {:.3g} terms exceed the "
+          "limit of {:.3g}; lower --n, --size or --realizations",
+          o->src.n, o->size, o->realizations, work, kMaxSpectrumTerms));
     Spectrum2D mean;
     size_t points = 0;
     {
@@ -259,6 +319,10 @@ Action add_spectrum_command(CLI::App& app) {
       for (int r = 0; r < realizations; ++r) {
         const auto pts = o->src.points(r);
         points = pts.size();
+        if (static_cast<double>(points) * o->size * o->size > kMaxSpectrumTerms)
+          throw Error(
+              fmt::format("spectrum: {} points x {}^2 frequencies exceed the limit of {:.3g} terms",
+                          points, o->size, kMaxSpectrumTerms));
         accumulate(mean, power_spectrum(pts, o->size), 1.0 / realizations);
         bar.update(r + 1, realizations, "");
       }
@@ -297,6 +361,24 @@ Action add_spectrum_command(CLI::App& app) {
                          true},
                         {line}),
           out);
+    }
+    if (o->json) {
+      JsonObject doc = json_report("spectrum");
+      doc.update(JsonObject{{"dimensions", 2},
+                            {"source", o->src.source},
+                            {"points", points},
+                            {"seed", o->src.seed},
+                            {"width", o->size},
+                            {"height", o->size},
+                            {"realizations", o->src.is_file() ? 1 : o->realizations}});
+      JsonObject rows = JsonObject::array();
+      for (size_t i = 0; i < radial.radius.size(); ++i)
+        rows.push_back({{"radius", radial.radius[i]},
+                        {"power", radial.power[i]},
+                        {"anisotropy_db", radial.anisotropy_db[i]}});
+      doc["rows"] = std::move(rows);
+      out << json_text(doc);
+      return;
     }
     out << fmt::format(
         "{}: {} points, {}x{} frequencies, {} realization(s); mean power {:.4f} "

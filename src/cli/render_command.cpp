@@ -6,14 +6,15 @@
 
 #include <map>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "cli/commands.h"
 #include "cli/reference_options.h"
 #include "core/filter_catalog.h"
 #include "core/text.h"
+#include "generate/point_generators.h"
 #include "io/contact_sheet.h"
+#include "io/json_report.h"
 #include "io/line_plot.h"
 #include "io/pattern_json.h"
 #include "io/png_image.h"
@@ -77,6 +78,11 @@ Figures measure(const Image& image, const Image& reference) {
   return f;
 }
 
+std::string reference_text(const ReferenceSettings& ref) {
+  return fmt::format("{} jittered samples per pixel, {}", ref.samples,
+                     make_filter(ref.filter).name());
+}
+
 std::string ssim_text(const Figures& f) {
   return f.ssim_value ? fmt::format("{:.4f}", *f.ssim_value) : "-";
 }
@@ -109,7 +115,7 @@ void run_grid(const Options& o, std::ostream& out) {
   ContactSheet sheet{fmt::format("{} {}x{}", o.scene, w, h), o.rows, o.columns, {}, o.zoom};
   std::string table = "| sampling | filter | samples/pixel | RMSE | max dev. | SSIM |\n";
   table += "| --- | --- | ---: | ---: | ---: | ---: |\n";
-  nlohmann::ordered_json cells = nlohmann::ordered_json::array();
+  JsonObject cells = JsonObject::array();
   for (const std::string& row : o.rows) {
     const Sampling sampling = row_sampling(row, o.seed);
     for (const std::string& column : o.columns) {
@@ -130,12 +136,15 @@ void run_grid(const Options& o, std::ostream& out) {
       table += fmt::format("| {} | {} | {} | {:.3f} | {} | {} |\n", row, column,
                            format_cost(stats.samples_per_pixel), f.error.rmse,
                            f.error.max_deviation, ssim_text(f));
-      cells.push_back({{"sampling", row},
-                       {"filter", column},
-                       {"samples_per_pixel", stats.samples_per_pixel},
-                       {"rmse", f.error.rmse},
-                       {"max_deviation", f.error.max_deviation},
-                       {"ssim", f.ssim_value ? nlohmann::ordered_json(*f.ssim_value) : nullptr}});
+      JsonObject cell = sampling.pattern ? JsonObject{{"pattern", row}}
+                                         : JsonObject{{"generator", sampling.generator},
+                                                      {"samples", sampling.samples}};
+      cell.update(JsonObject{{"filter", column},
+                             {"samples_per_pixel", stats.samples_per_pixel},
+                             {"rmse", f.error.rmse},
+                             {"max_deviation", f.error.max_deviation},
+                             {"ssim", f.ssim_value ? JsonObject(*f.ssim_value) : nullptr}});
+      cells.push_back(std::move(cell));
     }
   }
   const GreyRaster r = compose_sheet(sheet);
@@ -144,11 +153,17 @@ void run_grid(const Options& o, std::ostream& out) {
       fmt::format("{} {}x{}: against {} jittered samples per pixel with {}\n\n", o.scene, w, h,
                   ref.samples, make_filter(ref.filter).name());
   if (!o.table.empty()) write_output(o.table, heading + table, out);
-  out << (o.json
-              ? nlohmann::ordered_json{{"scene", o.scene}, {"size", o.size}, {"cells", cells}}.dump(
-                    2) +
-                    "\n"
-              : heading + table);
+  if (o.json) {
+    JsonObject doc = json_report("render");
+    doc.update(JsonObject{{"scene", o.scene},
+                          {"width", w},
+                          {"height", h},
+                          {"reference", reference_text(ref)},
+                          {"rows", cells}});
+    out << json_text(doc);
+  } else {
+    out << heading + table;
+  }
 }
 
 void run_single(const Options& o, std::ostream& out) {
@@ -160,6 +175,13 @@ void run_single(const Options& o, std::ostream& out) {
   const Scene scene = make_view_scene(o, w, h);
   Sampling sampling;
   if (!o.pattern.empty()) sampling.pattern = resolve_pattern(o.pattern);
+  if (!o.generator.empty()) {
+    make_point_generator(o.generator);  // an unknown generator is named before anything else
+    if (o.filter.empty())
+      throw Error(fmt::format(
+          "--generator {}: per-pixel points have no weights of their own; give a --filter",
+          o.generator));
+  }
   sampling.generator = o.generator;
   sampling.samples = o.samples;
   sampling.seed = o.seed;
@@ -170,11 +192,14 @@ void run_single(const Options& o, std::ostream& out) {
   if (!o.output.empty()) write_png_gray(o.output, w, h, grey_pixels(image));
 
   const std::string& what = o.pattern.empty() ? o.generator : o.pattern;
-  nlohmann::ordered_json js{{"scene", o.scene},
-                            {"size", o.size},
-                            {"sampling", what},
-                            {"filter", filter ? filter->name() : "pattern weights"},
-                            {"samples_per_pixel", stats.samples_per_pixel}};
+  JsonObject js = json_report("render");
+  js.update(JsonObject{{"scene", o.scene}, {"width", w}, {"height", h}});
+  if (sampling.pattern)
+    js["pattern"] = o.pattern;
+  else
+    js.update(JsonObject{{"generator", o.generator}, {"samples", o.samples}});
+  js.update(JsonObject{{"filter", filter ? filter->name() : "pattern weights"},
+                       {"samples_per_pixel", stats.samples_per_pixel}});
   std::string text = fmt::format("{} {}x{}, {} with {}: {} samples per pixel\n", o.scene, w, h,
                                  what, filter ? filter->name() : "the pattern's weights",
                                  format_cost(stats.samples_per_pixel));
@@ -186,10 +211,10 @@ void run_single(const Options& o, std::ostream& out) {
     const Figures f = measure(image, reference);
     const ImageError& e = f.error;
     const std::string ref_name = make_filter(ref.filter).name();
-    js["reference"] = fmt::format("{} jittered samples per pixel, {}", ref.samples, ref_name);
+    js["reference"] = reference_text(ref);
     js["rmse"] = e.rmse;
     js["max_deviation"] = e.max_deviation;
-    js["ssim"] = f.ssim_value ? nlohmann::ordered_json(*f.ssim_value) : nullptr;
+    js["ssim"] = f.ssim_value ? JsonObject(*f.ssim_value) : nullptr;
     text += fmt::format(
         "against {} jittered samples per pixel with {}: RMSE {:.3f}, max deviation {}, SSIM {}\n",
         ref.samples, ref_name, e.rmse, e.max_deviation, ssim_text(f));
@@ -217,7 +242,7 @@ void run_single(const Options& o, std::ostream& out) {
                                  {line}),
                    out);
   }
-  out << (o.json ? js.dump(2) + "\n" : text);
+  out << (o.json ? json_text(js) : text);
 }
 
 }  // namespace
@@ -240,7 +265,7 @@ Action add_render_command(CLI::App& app) {
   cmd->add_option("--rotate", o->rotate, "rotate the scene about the image centre (degrees)");
   cmd->add_option("--scale", o->scale, "scale the scene about the image centre");
   cmd->add_option("--translate", o->translate, "move the scene by X,Y pixels (after rotating)");
-  cmd->add_option("--seed", o->seed, "random seed")->capture_default_str();
+  add_seed_option(cmd, o->seed, "random seed");
   cmd->add_option("-o,--output", o->output, "the rendering, or with --grid the sheet (.png)");
   cmd->add_option("--reference", o->reference_png, "the dense reference image (.png)");
   cmd->add_option("--error", o->error_png, "error image against the reference (.png; black = 10%)");
@@ -257,7 +282,25 @@ Action add_render_command(CLI::App& app) {
       ->check(CLI::Range(1, 16));
   cmd->add_option("--table", o->table, "--grid: also write the error table (markdown)");
   cmd->add_flag("--json", o->json, "print the figures as JSON");
-  return [o](std::ostream& out) { o->grid ? run_grid(*o, out) : run_single(*o, out); };
+  // Options of one mode are refused in the other, before any work.
+  const std::vector<const CLI::Option*> single_only = {
+      cmd->get_option("--pattern"),   cmd->get_option("--generator"),
+      cmd->get_option("--samples"),   cmd->get_option("--filter"),
+      cmd->get_option("--reference"), cmd->get_option("--error"),
+      cmd->get_option("--histogram"), cmd->get_option("--histogram-svg")};
+  const std::vector<const CLI::Option*> grid_only = {
+      cmd->get_option("--rows"), cmd->get_option("--columns"), cmd->get_option("--zoom"),
+      cmd->get_option("--table")};
+  return [o, single_only, grid_only](std::ostream& out) {
+    for (const CLI::Option* opt : o->grid ? single_only : grid_only)
+      if (opt->count() > 0)
+        throw Error(o->grid ? fmt::format("render --grid: {} is for a single rendering; a sheet "
+                                          "takes its samplings from --rows and filters from "
+                                          "--columns",
+                                          opt->get_name())
+                            : fmt::format("render: {} is for a --grid sheet", opt->get_name()));
+    o->grid ? run_grid(*o, out) : run_single(*o, out);
+  };
 }
 
 }  // namespace aapat

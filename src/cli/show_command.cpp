@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "cli/commands.h"
+#include "io/json_report.h"
 #include "io/pattern_json.h"
 #include "io/pattern_svg.h"
 
@@ -14,9 +15,11 @@ Action add_show_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("show", "print a pattern's samples, family and cost n");
   auto pattern = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
+  auto json = std::make_shared<bool>(false);
   cmd->add_option("pattern", *pattern, "catalog name or pattern file (.json)")->required();
   cmd->add_option("-o,--output", *output,
                   "write the drawing (.svg) or the pattern file (.json); - for stdout");
+  cmd->add_flag("--json", *json, "print the pattern's family, n and file content as JSON");
   return [=](std::ostream& out) {
     const Pattern p = resolve_pattern(*pattern);
     if (!output->empty()) {
@@ -27,6 +30,15 @@ Action add_show_command(CLI::App& app) {
       else
         throw Error(fmt::format("--output: '{}' must end in .svg or .json", *output));
       if (*output == "-") return;
+    }
+    if (*json) {
+      JsonObject doc = json_report("show");
+      doc.update(JsonObject{{"name", p.name},
+                            {"family", family(p)},
+                            {"n", samples_per_pixel(p)},
+                            {"pattern", JsonObject::parse(pattern_to_json(p))}});
+      out << json_text(doc);
+      return;
     }
     out << fmt::format("{}  {}  n = {}  tile {}x{}  footprint {}\n", p.name, family(p),
                        format_cost(samples_per_pixel(p)), p.tile_w, p.tile_h, p.footprint.text());

@@ -7,12 +7,12 @@
 
 #include <algorithm>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
+#include "io/json_report.h"
 #include "optimize/family.h"
 #include "optimize/multistart.h"
 
@@ -30,7 +30,7 @@ Action add_table3_command(CLI::App& app) {
   cmd->add_option("--patterns", o->patterns, "random patterns per distribution")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
-  cmd->add_option("--seed", o->seed, "random seed")->capture_default_str();
+  add_seed_option(cmd, o->seed, "random seed");
   cmd->add_option("--iterations", o->iterations, "optimizer iterations per stage")
       ->capture_default_str()
       ->check(CLI::Range(1, 10000000));
@@ -46,7 +46,7 @@ Action add_table3_command(CLI::App& app) {
     };
     const Row rows[] = {{"jittered grid", SeedKind::kJittered, {0.423, 0.622, 0.907, 0.242, 0.169}},
                         {"Poisson disk", SeedKind::kPoisson, {0.346, 0.473, 0.782, 0.221, 0.161}}};
-    nlohmann::ordered_json js = nlohmann::ordered_json::array();
+    JsonObject js = JsonObject::array();
     std::string table;
     for (const Row& row : rows) {
       double lo = INFINITY, hi = 0, sum = 0;
@@ -79,8 +79,7 @@ Action add_table3_command(CLI::App& app) {
       const double ours[5] = {lo, sum / o->patterns, hi, w.starts[w.best].run.final_e2,
                               wp.starts[wp.best].run.final_e2};
       js.push_back(
-          {{"pattern", row.name},
-           {"patterns", o->patterns},
+          {{"distribution", row.name},
            {"min", ours[0]},
            {"avg", ours[1]},
            {"max", ours[2]},
@@ -92,7 +91,14 @@ Action add_table3_command(CLI::App& app) {
       table += "\n";
     }
     if (o->json) {
-      out << js.dump(2) << "\n";
+      JsonObject doc = json_report("table3");
+      doc.update(JsonObject{{"family", "P(16,16,4)"},
+                            {"patterns", o->patterns},
+                            {"seed", o->seed},
+                            {"filter", metric.filter().name()},
+                            {"acuity", metric.acuity().name},
+                            {"rows", js}});
+      out << json_text(doc);
       return;
     }
     out << fmt::format(
