@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Installs what is needed, builds the optimized and the ASan+UBSan builds, and
-# runs every test in both. This is what CI runs (.ci/run).
+# Installs what is needed, builds the optimized and the ASan+UBSan builds, runs
+# every test in both, then fuzzes each parser for a fixed budget under ASan +
+# UBSan (scripts/fuzz.sh; AAPAT_FUZZ_SECONDS per target, default 20). This is
+# what CI runs (.ci/run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -14,4 +16,6 @@ for preset in release asan; do
   # Each test's line, the output of any that fails, and ctest's summary.
   ctest --preset "$preset" -j "$jobs" --output-on-failure || status=1
 done
+echo "== fuzz: every parser under ASan + UBSan"
+scripts/fuzz.sh build/asan || status=1
 exit "$status"

@@ -1,4 +1,5 @@
 #include "cli/app.h"
+#include "testing/cli_run.h"
 
 #include <gtest/gtest.h>
 
@@ -15,40 +16,25 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-CliRun run(std::vector<std::string> args) {
-  args.insert(args.begin(), "aapat");
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int code = run_aapat(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {code, out.str(), err.str()};
-}
-
-// A folder per test: ctest runs tests in parallel, and some look at what else
-// is in their folder.
-std::string temp_path(const std::string& name) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(::testing::TempDir()) / "aapat_cli_test" /
-                       (std::string(info->test_suite_name()) + "." + info->name());
-  fs::create_directories(dir);
-  return (dir / name).string();
-}
+using testing::CliRun;
+using testing::run;
+using testing::slurp;
+using testing::temp_path;
 
 TEST(Cli, EvalJsonHasTheDocumentedKeys) {
   const CliRun r = run({"eval", "flipquad", "centroid", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
-  const auto rows = nlohmann::json::parse(r.out);
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["command"], "eval");  // docs/json.md: command, schema, settings, rows
+  EXPECT_EQ(doc["schema"], 1);
+  EXPECT_EQ(doc["acuity"], "laine-aila");
+  const auto& rows = doc["rows"];
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0]["pattern"], "flipquad");
   EXPECT_EQ(rows[0]["family"], "P(4,1+,2)");
   EXPECT_EQ(rows[0]["n"], 2.0);
   EXPECT_NEAR(rows[0]["e2"].get<double>(), 0.364, 0.001);  // Laine-Aila Table 2
-  EXPECT_EQ(rows[1]["worst_angle"], 0.0);
+  EXPECT_EQ(rows[1]["worst_angle_deg"], 0.0);
   EXPECT_NEAR(rows[1]["e2"].get<double>(), 1.256, 0.001);  // Hasselgren Table 2
 }
 
@@ -88,7 +74,7 @@ TEST(Cli, ShowWritesDrawingAndPatternFile) {
   ASSERT_EQ(run({"show", "flipquad", "-o", json}).code, 0);
   const CliRun again = run({"eval", json, "--json"});
   ASSERT_EQ(again.code, 0) << again.err;
-  EXPECT_NEAR(nlohmann::json::parse(again.out)[0]["e2"].get<double>(), 0.364, 0.001);
+  EXPECT_NEAR(nlohmann::json::parse(again.out)["rows"][0]["e2"].get<double>(), 0.364, 0.001);
 }
 
 TEST(Cli, ListNamesCatalogFiltersAndTables) {
@@ -152,13 +138,6 @@ TEST(Cli, AnExistingFileIsReplacedWhole) {
 namespace aapat {
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(CliOptimize, WritesBestPatternWithProvenanceCsvAndSvg) {
   const std::string json = temp_path("best.json"), csv = temp_path("starts.csv"),
                     svg = temp_path("best.svg");
@@ -174,7 +153,7 @@ TEST(CliOptimize, WritesBestPatternWithProvenanceCsvAndSvg) {
   EXPECT_TRUE(prov.contains("start") && prov.contains("iterations"));
   EXPECT_LT(std::stod(prov["e2"].get<std::string>()), 0.3595);  // Laine-Aila Table 2
   const CliRun again = run({"eval", json, "--json"});
-  EXPECT_NEAR(nlohmann::json::parse(again.out)[0]["e2"].get<double>(),
+  EXPECT_NEAR(nlohmann::json::parse(again.out)["rows"][0]["e2"].get<double>(),
               std::stod(prov["e2"].get<std::string>()), 1e-6);
   std::istringstream lines(slurp(csv));
   std::string header;
@@ -229,7 +208,7 @@ TEST(CliOptimize, BadArgumentsAreExplained) {
 TEST(CliTable3, OptimizedColumnsImproveOnTheBestPattern) {
   const CliRun r = run({"table3", "--patterns", "24", "--iterations", "150", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
-  const auto rows = nlohmann::json::parse(r.out);
+  const auto rows = nlohmann::json::parse(r.out)["rows"];
   ASSERT_EQ(rows.size(), 2u);
   for (const auto& row : rows) {
     EXPECT_LE(row["min"].get<double>(), row["avg"].get<double>());
@@ -265,11 +244,9 @@ namespace {
 // same structure: a corner and two edges off it (A), two corners and two
 // edges (C), a corner and three edges (E), one sample on each edge (F).
 TEST(CliEnumerate, BestPerCostReachesThePublishedSchemes) {
-  const std::string json = temp_path("enum.json");
-  const CliRun r = run({"enumerate", "--optimize", "--starts", "8", "--json", json});
+  const CliRun r = run({"enumerate", "--optimize", "--starts", "8", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("total       85"), std::string::npos) << r.out;
-  const auto rows = nlohmann::json::parse(slurp(json));
+  const auto rows = nlohmann::json::parse(r.out)["rows"];
   ASSERT_EQ(rows.size(), 85u);
   const std::map<double, std::pair<double, std::string>> expected = {
       {1.25, {0.554, "top-left,bottom,right"}},
@@ -337,7 +314,7 @@ TEST(CliPoints, GenerateWritesCsvAndPatternFiles) {
   ASSERT_EQ(run({"generate", "n-rooks", "--n", "6", "--seed", "2", "-o", csv}).code, 0);
   const CliRun e = run({"eval", json, "--json"});
   ASSERT_EQ(e.code, 0) << e.err;
-  EXPECT_EQ(nlohmann::json::parse(e.out)[0]["family"], "P(1,1,6)");
+  EXPECT_EQ(nlohmann::json::parse(e.out)["rows"][0]["family"], "P(1,1,6)");
   // The CSV and the pattern file hold the same points.
   const CliRun a = run({"discrepancy", csv, "--json"}), b = run({"discrepancy", json, "--json"});
   ASSERT_EQ(a.code, 0) << a.err;
@@ -628,7 +605,7 @@ TEST(CliHardware, LatticeOptimizationAndOptimizedWeights) {
   EXPECT_NE(r.err.find("does not fit d3d12-tier1's pixel grid"), std::string::npos) << r.err;
   r = run({"eval", "msaa-8", "--optimized-weights", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
-  const auto rows = nlohmann::json::parse(r.out);
+  const auto rows = nlohmann::json::parse(r.out)["rows"];
   EXPECT_NEAR(rows[0]["e2"].get<double>(), 0.3437, 1e-4);
   EXPECT_LT(rows[0]["e2_optimized_weights"].get<double>(), 0.3437 - 0.02);
 }

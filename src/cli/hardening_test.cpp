@@ -1,0 +1,288 @@
+// Issue 11's classes of failure, one test each, through the command line as
+// a user meets them: crashes on input that passed validation, uncaught
+// exceptions, silently wrong answers, unbounded work, options silently
+// ignored, misleading messages, the optimizer's placement trap, the cache,
+// and inconsistent JSON. Each asserts the exact behaviour now promised.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <string>
+
+#include "cli/app.h"
+#include "testing/cli_run.h"
+
+namespace aapat {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::CliRun;
+using testing::run;
+using testing::slurp;
+using testing::temp_path;
+
+std::string write(const std::string& name, const std::string& content) {
+  const std::string path = temp_path(name);
+  std::ofstream(path, std::ios::binary) << content;
+  return path;
+}
+
+// A pattern file whose four weights sum to 1 but cancel in the hundreds of
+// orders of magnitude.
+std::string cancelling_weights_file(double big) {
+  nlohmann::json doc = nlohmann::json::parse(testing::run({"show", "rgss", "-o", "-"}).out);
+  doc["kernels"][0] = {big, -big, 0.5, 0.5};
+  return write("cancel.json", doc.dump());
+}
+
+void expect_error(const CliRun& r, int code, const std::string& fragment) {
+  EXPECT_EQ(r.code, code) << r.out << r.err;
+  EXPECT_NE(r.err.find(fragment), std::string::npos) << r.err;
+}
+
+TEST(Hardening, CrashesOnInputThatPassedValidationAreRefusedAtTheBoundary) {
+  // Huge cancelling weights: a NaN position used to index the filter's table.
+  for (double big : {1e308, 1e200})
+    expect_error(run({"optimize", cancelling_weights_file(big)}), kExitError,
+                 "kernels[0][0]: weight");
+  // An acuity weight whose square overflows.
+  expect_error(run({"optimize", "--family", "P(1,1,4)", "--acuity", "uniform:step=1,weight=1e308",
+                    "--starts", "2"}),
+               kExitError, "weight 1e+308 is out of range (0, 1000000]");
+  const std::string csv = write("huge.csv", "0,1e308\n45,1\n");
+  for (const char* command : {"enumerate", "figure10", "table3"})
+    expect_error(run({command, "--acuity", csv}), kExitError, "weight 1e+308 is out of range");
+  // The largest accepted weight optimizes to a finite E2.
+  const CliRun ok = run({"optimize", "--family", "P(1,1,4)", "--acuity",
+                         "uniform:step=1,weight=1e6", "--starts", "2", "--json"});
+  ASSERT_EQ(ok.code, 0) << ok.err;
+  EXPECT_TRUE(std::isfinite(nlohmann::json::parse(ok.out)["e2"].get<double>()));
+}
+
+TEST(Hardening, EveryExceptionBecomesAMessageAndAnExitCode) {
+  // A number past double's range in a scene file.
+  const std::string scene =
+      write("big.json", R"({"shapes": [{"circle": [1e999, 0], "radius": 1}]})");
+  expect_error(run({"render", scene, "--pattern", "rgss", "--size", "8x8"}), kExitError,
+               "not valid JSON");
+  // Invalid UTF-8 in a pattern, a scene and an export file, and in a file name.
+  const std::string bad = "{\"name\": \"\xff\xfe\"}";
+  expect_error(run({"eval", write("utf8.json", bad)}), kExitError, "not valid JSON");
+  expect_error(run({"render", write("utf8-scene.json", bad), "--pattern", "rgss"}), kExitError,
+               "not valid JSON");
+  expect_error(run({"import", write("utf8.h", "\xff\xfe garbage")}), kExitError, "utf8.h");
+  const std::string odd_name = temp_path("\xff.json");
+  ASSERT_EQ(run({"show", "flipquad", "-o", odd_name}).code, 0);
+  const CliRun named = run({"eval", odd_name, "--json"});
+  ASSERT_EQ(named.code, 0) << named.err;
+  EXPECT_TRUE(nlohmann::json::accept(named.out)) << named.out;
+  // Output folders that are files, checked before the work.
+  const std::string file = write("a-file", "x");
+  expect_error(run({"enumerate", "--optimize", "--cost", "1.25", "--best-dir", file}), kExitError,
+               "--best-dir '" + file + "': exists and is not a folder");
+  expect_error(run({"animate", "circle", "--pattern", "rgss", "--size", "8", "--frames", "1",
+                    "--frames-dir", file}),
+               kExitError, "--frames-dir '" + file + "': exists and is not a folder");
+  // Memory exhaustion is refused before allocating.
+  for (const char* step : {"uniform:step=1e-9", "uniform:step=1e-6", "linear:step=1e-4"})
+    expect_error(run({"eval", "rgss", "--acuity", step}), kExitError, "at most 36000 angles");
+}
+
+TEST(Hardening, NoSilentlyWrongAnswers) {
+  // A Gaussian too narrow to tabulate is refused, not evaluated to E2 = 0.
+  expect_error(run({"eval", "centroid", "--filter", "gaussian:sigma=1e-5"}), kExitError,
+               "sigma = 1e-05 is out of range [0.001, 16]");
+  expect_error(run({"eval", "centroid", "--filter", "lanczos-gaussian:lobes=16,sigma=0.001"}),
+               kExitError, "too narrow to tabulate");
+  // The narrowest accepted Gaussian is exact: one centred sample against a
+  // step of width sigma, E1^2 = 2 sigma int_0^inf (1 - Phi)^2 = (sqrt 2 - 1) sigma / sqrt(pi),
+  // weighted by the acuity table's 3.93 on the axes.
+  const CliRun narrow = run({"eval", "centroid", "--filter", "gaussian:sigma=0.001", "--json"});
+  ASSERT_EQ(narrow.code, 0) << narrow.err;
+  const double e1 = std::sqrt((std::sqrt(2.0) - 1) * 0.001 / std::sqrt(std::numbers::pi));
+  EXPECT_NEAR(nlohmann::json::parse(narrow.out)["rows"][0]["e2"].get<double>(), 3.93 * e1, 1e-6);
+  // Large p of the L_p mean approaches the maximum instead of underflowing to 0.
+  const double max = nlohmann::json::parse(run({"eval", "rgss", "--json"}).out)["rows"][0]["e2"];
+  for (const char* p : {"1000", "2000", "1000000"}) {
+    const CliRun r = run({"eval", "rgss", "--norm", p, "--json"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const double lp = nlohmann::json::parse(r.out)["rows"][0]["e2"];
+    EXPECT_LE(lp, max * (1 + 1e-12)) << p;
+    EXPECT_GE(lp, max * std::pow(4.0, -1.0 / std::stod(p)) * (1 - 1e-12)) << p;  // 4 angles
+  }
+  const CliRun polish =
+      run({"optimize", "--family", "P(1,1,4)", "--norm", "2000", "--starts", "2", "--json"});
+  ASSERT_EQ(polish.code, 0) << polish.err;
+  EXPECT_GT(nlohmann::json::parse(polish.out)["e2"].get<double>(), 0.3);  // not "polished" to 0
+  expect_error(run({"eval", "rgss", "--norm", "1e7"}), kExitError, "use a number in [1, 1000000]");
+}
+
+TEST(Hardening, UnboundedWorkIsFastOrRefusedWithTheLimit) {
+  expect_error(run({"generate", "best-candidate", "--n", "10000"}), kExitError,
+               "over the limit of 2e+08");
+  std::string rows;
+  for (int i = 0; i < 200000; ++i) rows += std::to_string(i * 0.0009) + ",1\n";
+  expect_error(run({"eval", "rgss", "--acuity", write("long.csv", rows)}), kExitError,
+               "more than 36000 rows, the limit");
+  expect_error(run({"discrepancy", "random", "--n", "100000"}), kExitError,
+               "100000 points exceed the limit of 65536");
+  expect_error(run({"spectrum", "random", "--n", "1000000", "--size", "2048"}), kExitError,
+               "exceed the limit");
+  // 100,000 circles render through the spatial index.
+  std::string shapes = R"({"shapes": [)";
+  for (int i = 0; i < 100000; ++i)
+    shapes += fmt::format(R"({}{{"circle": [{}, {}], "radius": 0.03}})", i ? "," : "",
+                          i % 400 * 0.04, i / 400 * 0.04);
+  shapes += "]}";
+  const CliRun many = run({"render", write("circles.json", shapes), "--pattern", "rgss", "--size",
+                           "16x16", "--reference-samples", "16", "--no-cache", "--json"});
+  ASSERT_EQ(many.code, 0) << many.err;
+  EXPECT_GT(nlohmann::json::parse(many.out)["rmse"].get<double>(), 0);
+}
+
+TEST(Hardening, OptionsAreHonouredOrRefusedBeforeWork) {
+  expect_error(run({"spectrum", "--1d", "poisson", "-o", temp_path("x.png")}), kExitError,
+               "with --1d write --csv or --svg");
+  EXPECT_FALSE(fs::exists(temp_path("x.png")));
+  expect_error(run({"render", "checkerboard", "--grid", "--error", temp_path("e.png"), "-o",
+                    temp_path("s.png"), "--size", "16x16"}),
+               kExitError, "render --grid: --error is for a single rendering");
+  expect_error(run({"render", "checkerboard", "--pattern", "rgss", "--rows", "jittered@4"}),
+               kExitError, "render: --rows is for a --grid sheet");
+  expect_error(run({"snap", "rgss", "--nonnegative"}), kExitError,
+               "--nonnegative constrains the weights --optimize-weights finds");
+  // --mp4 without ffmpeg fails before a single frame is rendered.
+  const char* path = std::getenv("PATH");
+  const std::string saved = path ? path : "";
+  setenv("PATH", "", 1);
+  const std::string frames = temp_path("frames");
+  const CliRun r = run({"animate", "circle", "--pattern", "rgss", "--mp4", temp_path("a.mp4"),
+                        "--frames-dir", frames, "--size", "8", "--frames", "2"});
+  setenv("PATH", saved.c_str(), 1);
+  expect_error(r, kExitError, "needs ffmpeg on the PATH");
+  EXPECT_FALSE(fs::exists(frames));
+}
+
+TEST(Hardening, MessagesNameTheRealProblem) {
+  const std::string dir = temp_path("a-folder");
+  fs::create_directories(dir);
+  expect_error(run({"eval", dir}), kExitError, "it is a folder, not a pattern file");
+  expect_error(run({"render", dir + ".json", "--pattern", "rgss"}), kExitError, "no such file");
+  fs::create_directories(dir + "/s.json");
+  expect_error(run({"render", dir + "/s.json", "--pattern", "rgss"}), kExitError,
+               "it is a folder, not a file");
+  expect_error(run({"eval", "rgss", "--acuity", dir}), kExitError, "it is a folder, not a CSV");
+  fs::create_directories(dir + "/p.csv");
+  expect_error(run({"discrepancy", dir + "/p.csv"}), kExitError, "it is a folder, not a file");
+  expect_error(run({"import", dir}), kExitError, "it is a folder, not a file");
+  expect_error(run({"render", "checkerboard", "--generator", "nosuch"}), kExitError,
+               "unknown generator 'nosuch'");
+  expect_error(run({"render", "checkerboard", "--generator", "jittered"}), kExitError,
+               "--generator jittered: per-pixel points have no weights of their own; give a "
+               "--filter");
+  expect_error(run({"render", "checkerboard", "--pattern", "rgss", "--reference-samples", "2"}),
+               kExitUsage, "2 is not a square number");
+  std::string polygon = R"({"shapes": [{"polygon": [)";
+  for (int i = 0; i < 100001; ++i) polygon += fmt::format("{}[{},1]", i ? "," : "", i % 7);
+  polygon += "]}]}";
+  expect_error(run({"render", write("long.json", polygon), "--pattern", "rgss"}), kExitError,
+               "shapes[0].polygon: 100001 vertices exceed the limit of 100000 per polygon");
+  for (const char* seed : {"-1", "1.5", "x"})
+    expect_error(run({"generate", "random", "--seed", seed}), kExitUsage,
+                 std::string("a seed is a whole number from 0 to 2^64 - 1, not '") + seed + "'");
+  // An export whose pixel (0, 0) weights do not sum to 1: the file and its pixel are named.
+  const std::string exported = temp_path("fq.txt");
+  ASSERT_EQ(run({"export", "flipquad", "--snap", "--api", "vulkan", "-o", exported}).code, 0);
+  std::string text = slurp(exported);
+  const auto at = text.find("const float aapat_weights");
+  ASSERT_NE(at, std::string::npos);
+  const auto first = text.find("0.25", at);
+  text.replace(first, 4, "0.75");
+  const CliRun r = run({"import", write("broken.txt", text)});
+  expect_error(r, kExitError, "import " + temp_path("broken.txt") + ": pixel (0, 0)");
+  EXPECT_EQ(r.err.find("kernels["), std::string::npos) << r.err;
+}
+
+TEST(Hardening, ASharingFamilyWithoutAPlacementSearchesThePlacements) {
+  const CliRun r = run({"optimize", "--family", "P(4,1+,2)", "--starts", "4", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_LT(doc["e2"].get<double>(), 0.3595);  // Laine-Aila Table 2: best FLIPQUAD sites 0.3591
+  EXPECT_EQ(doc["family"], "P(4,1+,2)");
+  EXPECT_NE(doc["placement"].get<std::string>().find("left"), std::string::npos);
+}
+
+TEST(Hardening, TheCacheWarnsAndContinuesAndNoCacheStillShares) {
+  const std::string file = write("not-a-folder", "x");
+  const CliRun r = run({"render", "disc", "--pattern", "rgss", "--size", "16x16",
+                        "--reference-samples", "4", "--cache", file + "/sub", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("continuing without the reference cache"), std::string::npos) << r.err;
+  const CliRun table = run({"table2", "--no-cache", "--size", "16", "--frames", "2",
+                            "--reference-samples", "4", "--json"});
+  ASSERT_EQ(table.code, 0) << table.err;
+  EXPECT_EQ(nlohmann::json::parse(table.out)["rows"].size(), 9u);
+}
+
+TEST(Hardening, TheReadmePoissonExampleAndEveryCountFit) {
+  const std::string csv = temp_path("p.csv");
+  const CliRun r = run({"generate", "poisson", "--n", "64", "-o", csv});
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (int n : {1, 2, 3, 7, 63, 64, 65, 100, 255, 256, 1000})
+    for (const char* seed : {"1", "2", "3"}) {
+      const CliRun g = run({"generate", "poisson", "--n", std::to_string(n), "--seed", seed});
+      EXPECT_EQ(g.code, 0) << n << " " << g.err;
+    }
+}
+
+TEST(Hardening, JsonIsAFlagWithOneShapeOnEveryCommand) {
+  const std::vector<std::vector<std::string>> commands = {
+      {"list"},
+      {"show", "flipquad"},
+      {"eval", "rgss"},
+      {"optimize", "--family", "P(1,1,2)", "--starts", "1", "--iterations", "10"},
+      {"snap", "rgss"},
+      {"enumerate", "--cost", "1.25"},
+      {"generate", "halton", "--n", "4"},
+      {"discrepancy", "halton", "--n", "16"},
+      {"spectrum", "halton", "--n", "16", "--size", "8"},
+      {"spectrum", "--1d", "jittered", "--n", "16", "--frequencies", "16"},
+      {"render", "disc", "--pattern", "rgss", "--size", "8x8", "--reference-samples", "4"},
+      {"render", "disc", "--grid", "--rows", "rgss", "--columns", "box", "--size", "8x8",
+       "--reference-samples", "4", "-o", temp_path("sheet.png")},
+      {"animate", "circle", "--pattern", "rgss", "--size", "8", "--frames", "1",
+       "--reference-samples", "4"},
+      {"table2", "--size", "8", "--frames", "1", "--reference-samples", "4"},
+      {"table3", "--patterns", "2", "--iterations", "5"},
+  };
+  for (auto args : commands) {
+    args.push_back("--json");
+    const CliRun r = run(args);
+    ASSERT_EQ(r.code, 0) << args[0] << ": " << r.err;
+    const auto doc = nlohmann::json::parse(r.out);  // nothing but the document on stdout
+    EXPECT_EQ(doc["command"], args[0]);
+    EXPECT_EQ(doc["schema"], 1);
+    EXPECT_FALSE(doc.contains("size")) << args[0];  // sizes are width and height
+  }
+}
+
+TEST(Hardening, AFailedCommandLeavesNoOutputFile) {
+  const std::string json = temp_path("best.json"), svg = temp_path("best.svg");
+  // The CSV's folder does not exist: the pattern and the drawing must not appear either.
+  const CliRun r = run({"optimize", "--family", "P(1,1,2)", "--starts", "1", "-o", json, "--svg",
+                        svg, "--csv", temp_path("no/such/folder/starts.csv")});
+  EXPECT_EQ(r.code, kExitError);
+  EXPECT_FALSE(fs::exists(json));
+  EXPECT_FALSE(fs::exists(svg));
+  for (const auto& e : fs::directory_iterator(fs::path(json).parent_path()))
+    EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << e.path();
+}
+
+}  // namespace
+}  // namespace aapat
