@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cerrno>
@@ -61,7 +62,8 @@ struct Staged {
 std::mutex g_mutex;
 bool g_open = false;
 std::vector<Staged> g_staged;
-std::vector<std::string> g_created_now;  // deleted on rollback
+std::vector<std::string> g_created_now;   // deleted on rollback
+std::vector<std::string> g_created_dirs;  // removed on rollback when empty, deepest first
 std::atomic<unsigned long> g_counter{0};
 
 std::string temporary_name(const std::string& path) {
@@ -157,8 +159,17 @@ void ensure_directory(const std::string& path, std::string_view what) {
     if (!std::filesystem::is_directory(status))
       throw Error(fmt::format("{} '{}': exists and is not a folder", what, path));
   } else {
+    // The folders this call makes, deepest first, for a rollback to remove.
+    std::vector<std::string> made;
+    for (std::filesystem::path p = std::filesystem::absolute(path, ec);
+         !p.empty() && !std::filesystem::exists(p, ec); p = p.parent_path()) {
+      made.push_back(p.string());
+      if (p == p.parent_path()) break;
+    }
     std::filesystem::create_directories(path, ec);
     if (ec) throw Error(fmt::format("{} '{}': cannot create it: {}", what, path, ec.message()));
+    const std::lock_guard lock(g_mutex);
+    if (g_open) g_created_dirs.insert(g_created_dirs.end(), made.begin(), made.end());
   }
   if (::access(path.c_str(), W_OK | X_OK) != 0)
     throw Error(fmt::format("{} '{}': cannot write into it: {}", what, path, std::strerror(errno)));
@@ -180,6 +191,7 @@ OutputTransaction::OutputTransaction() {
   g_open = true;
   g_staged.clear();
   g_created_now.clear();
+  g_created_dirs.clear();
 }
 
 OutputTransaction::~OutputTransaction() {
@@ -187,8 +199,13 @@ OutputTransaction::~OutputTransaction() {
   if (!g_open) return;
   for (const Staged& s : g_staged) remove_temporary(s.tmp);
   for (const std::string& path : g_created_now) std::remove(path.c_str());
+  // Deepest first (longest path), so a parent is empty when its turn comes.
+  std::sort(g_created_dirs.begin(), g_created_dirs.end(),
+            [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+  for (const std::string& dir : g_created_dirs) ::rmdir(dir.c_str());  // only if empty
   g_staged.clear();
   g_created_now.clear();
+  g_created_dirs.clear();
   g_open = false;
 }
 
@@ -198,6 +215,7 @@ void OutputTransaction::commit() {
     const std::lock_guard lock(g_mutex);
     staged.swap(g_staged);
     g_created_now.clear();
+    g_created_dirs.clear();
     g_open = false;
   }
   // A path written twice keeps its last content.

@@ -28,7 +28,8 @@ std::string read_file(const std::string& path, std::string_view what,
                       size_t max_bytes = kMaxInputFileBytes);
 
 // Creates `path` (and its parents) as a folder, or checks that it is one;
-// throws Error naming `what` when it is a file or cannot be made.
+// throws Error naming `what` when it is a file or cannot be made. Inside a
+// transaction that rolls back, the folders it made are removed again if empty.
 void ensure_directory(const std::string& path, std::string_view what);
 
 // Checks, before any work, that `path` can become the folder `ensure_directory`

@@ -66,6 +66,23 @@ TEST(AtomicFile, FilesWrittenNowAreDeletedOnRollbackUnlessKept) {
   EXPECT_EQ(testing::slurp(cache), "c");
 }
 
+TEST(AtomicFile, FoldersMadeByAFailedCommandAreRemoved) {
+  const fs::path dir = fs::path(testing::temp_path("x")).parent_path() / "made";
+  fs::remove_all(dir);
+  {
+    OutputTransaction t;
+    ensure_directory((dir / "deeper").string(), "--frames-dir");
+    write_file_now((dir / "deeper" / "frame.png").string(), "f");
+  }
+  EXPECT_FALSE(fs::exists(dir));
+  {
+    OutputTransaction t;
+    ensure_directory((dir / "deeper").string(), "--frames-dir");
+    t.commit();
+  }
+  EXPECT_TRUE(fs::is_directory(dir / "deeper"));
+}
+
 TEST(AtomicFile, ASignalDuringAWriteRemovesTheTemporaries) {
   const fs::path dir = fs::path(testing::temp_path("x")).parent_path();
   const std::string target = (dir / "out.json").string();
