@@ -61,6 +61,12 @@ void check_repeats(const AcuityTable& t, Where where) {
   }
 }
 
+void check_some_weight_positive(const AcuityTable& t) {
+  for (double w : t.weights)
+    if (w > 0) return;
+  throw Error(fmt::format("acuity table {}: every weight is 0, so every pattern scores 0", t.name));
+}
+
 }  // namespace
 
 void validate(const AcuityTable& t) {
@@ -72,7 +78,6 @@ void validate(const AcuityTable& t) {
   if (t.weights.size() != t.angles_deg.size())
     throw Error(fmt::format("acuity table {}: {} angles but {} weights", name, t.angles_deg.size(),
                             t.weights.size()));
-  bool any_positive = false;
   for (size_t i = 0; i < t.angles_deg.size(); ++i) {
     if (!(t.angles_deg[i] >= -360 && t.angles_deg[i] <= 360))
       throw Error(fmt::format("acuity table {}: angle {} is out of range [-360, 360]", name,
@@ -80,10 +85,8 @@ void validate(const AcuityTable& t) {
     if (!(t.weights[i] >= 0 && t.weights[i] <= kMaxAcuityWeight))
       throw Error(fmt::format("acuity table {}: weight {} at angle {} is out of range [0, {}]",
                               name, t.weights[i], t.angles_deg[i], kMaxAcuityWeight));
-    any_positive = any_positive || t.weights[i] > 0;
   }
-  if (!any_positive)
-    throw Error(fmt::format("acuity table {}: every weight is 0, so every pattern scores 0", name));
+  check_some_weight_positive(t);
   check_repeats(t, [&](size_t i) { return fmt::format("acuity table {}, row {}", name, i + 1); });
 }
 
@@ -139,9 +142,10 @@ AcuityTable parse_acuity_csv(std::string_view text, std::string_view source) {
     lines.push_back(line_no);
   }
   if (t.angles_deg.empty()) throw Error(fmt::format("acuity table {}: no rows", source));
+  // Each row's range was checked as it was read; what is left spans rows.
+  check_some_weight_positive(t);
   check_repeats(t,
                 [&](size_t i) { return fmt::format("acuity table {} line {}", source, lines[i]); });
-  validate(t);
   return t;
 }
 
