@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -46,19 +47,11 @@ class TorusGrid {
   explicit TorusGrid(int g) : g_(g), cells_(static_cast<size_t>(g) * g) {}
   int side() const { return g_; }
   void add(Vec2 p) { cells_[index(cell(p.y), cell(p.x))].push_back(p); }
-  // Whether any point lies closer than r to c; needs r <= 1 / side().
-  bool any_within(Vec2 c, double r) const {
-    const int cx = cell(c.x), cy = cell(c.y);
-    const int reach = std::min(g_ / 2, 1 + static_cast<int>(r * g_));
-    for (int dy = -reach; dy <= reach; ++dy)
-      for (int dx = -reach; dx <= reach; ++dx)
-        for (const Vec2& e : cells_[index(cy + dy, cx + dx)])
-          if (torus_distance(e, c) < r) return true;
-    return false;
-  }
   // The distance from c to the nearest point (infinity when empty): rings of
-  // cells outwards until no nearer point can remain.
-  double nearest(Vec2 c) const {
+  // cells outwards until no nearer point can remain. Stops early, returning
+  // a value <= `beat`, once a point at or within `beat` is found: the caller
+  // only wants candidates farther than that.
+  double nearest(Vec2 c, double beat = -1) const {
     const int cx = cell(c.x), cy = cell(c.y);
     double best = INFINITY;
     for (int r = 0; r <= g_ / 2 + 1; ++r) {
@@ -67,8 +60,10 @@ class TorusGrid {
       for (int dy = -r; dy <= r; ++dy)
         for (int dx = -r; dx <= r; ++dx) {
           if (std::max(std::abs(dx), std::abs(dy)) != r) continue;
-          for (const Vec2& e : cells_[index(cy + dy, cx + dx)])
+          for (const Vec2& e : cells_[index(cy + dy, cx + dx)]) {
             best = std::min(best, torus_distance(e, c));
+            if (best <= beat) return best;
+          }
         }
       if (2 * r + 1 >= g_) break;  // the rings have covered every cell
     }
@@ -84,12 +79,49 @@ class TorusGrid {
   std::vector<std::vector<Vec2>> cells_;
 };
 
+// Dart throwing's occupancy grid on the unit torus: cells of side below
+// r / sqrt(2), so each holds at most one point and a dart looks at the 5 x 5
+// cells around its own, in one flat array.
+class DartGrid {
+ public:
+  explicit DartGrid(double r)
+      : g_(std::clamp(static_cast<int>(std::sqrt(2.0) / r) + 1, 1, 8192)),
+        cells_(static_cast<size_t>(g_) * g_, Vec2{NAN, NAN}) {}
+  bool any_within(Vec2 c, double r) const {
+    const int cx = cell(c.x), cy = cell(c.y);
+    const int reach = std::min(g_ / 2, static_cast<int>(std::ceil(r * g_)));
+    for (int dy = -reach; dy <= reach; ++dy) {
+      const size_t row = static_cast<size_t>(wrap(cy + dy)) * g_;
+      for (int dx = -reach; dx <= reach; ++dx) {
+        const Vec2& e = cells_[row + wrap(cx + dx)];
+        if (!std::isnan(e.x) && torus_distance(e, c) < r) return true;
+      }
+    }
+    return false;
+  }
+  void add(Vec2 p) { cells_[static_cast<size_t>(cell(p.y)) * g_ + cell(p.x)] = p; }
+
+ private:
+  int cell(double v) const { return std::min(g_ - 1, static_cast<int>(v * g_)); }
+  int wrap(int i) const { return (i % g_ + g_) % g_; }
+  int g_;
+  std::vector<Vec2> cells_;
+};
+
+// Dart throwing near its jamming density takes tens of darts per point and
+// grows faster than n once the grid leaves the cache: larger sets are refused.
+void check_dart_count(int n, std::string_view name) {
+  if (n > kMaxPoissonPoints)
+    throw Error(fmt::format(
+        "{}: about {} points exceed the limit of {} for dart throwing (use jittered or halton for "
+        "larger sets)",
+        name, n, kMaxPoissonPoints));
+}
+
 std::vector<Vec2> poisson(int n, double radius, bool maximal, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<Vec2> pts;
-  // Cells no smaller than the radius, so a dart checks the 3 x 3 around it.
-  const int side = std::clamp(static_cast<int>(1 / radius), 1, 4096);
-  TorusGrid grid(side);
+  DartGrid grid(radius);
   // Dart throwing with rejection; give up after many misses in a row.
   const int patience = 1000 + 100 * n;
   for (int misses = 0; misses < patience && (maximal || static_cast<int>(pts.size()) < n);) {
@@ -107,16 +139,17 @@ std::vector<Vec2> poisson(int n, double radius, bool maximal, std::mt19937_64& r
 
 // Mitchell's best candidate: q x i candidates for point i, so the work grows
 // as q n^2 / 2 nearest-point queries. The grid is rebuilt as the points
-// multiply, so that each query visits a few cells.
+// multiply, so that each query visits a few cells, and a candidate stops as
+// soon as a point nearer than the best so far shows it cannot win.
 std::vector<Vec2> best_candidate(int n, double q, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<Vec2> p;
   auto grid_for = [](size_t points) {
-    return std::max(1, static_cast<int>(std::sqrt(points / 2.0)));
+    return std::max(1, static_cast<int>(std::sqrt(points * 2.0)));
   };
   TorusGrid grid(1);
   for (int i = 0; i < n; ++i) {
-    if (grid_for(p.size()) >= 2 * grid.side()) {
+    if (grid_for(p.size()) > grid.side()) {  // about 1 point in 2 cells; O(n^1.5) rebuilding
       grid = TorusGrid(grid_for(p.size()));
       for (const Vec2& v : p) grid.add(v);
     }
@@ -125,7 +158,7 @@ std::vector<Vec2> best_candidate(int n, double q, std::mt19937_64& rng) {
     double best_d = i > 0 ? grid.nearest(best) : 0;
     for (int t = 1; t < tries; ++t) {
       const Vec2 c{u(rng), u(rng)};
-      const double d = grid.nearest(c);
+      const double d = grid.nearest(c, best_d);  // exact whenever it beats best_d
       if (d > best_d) best_d = d, best = c;
     }
     p.push_back(best);
@@ -236,7 +269,8 @@ const std::vector<Entry>& entries() {
         "Goss & Wu 2000, Sec. 3.2.2.1 (criterion: docs/generators.md)"},
        {},
        [](int n, const Params&, std::mt19937_64&) {
-         if (n < 1 || n > 32) throw Error(fmt::format("n-queens: N = {} is out of range 1..32", n));
+         // Past 20 the lexicographic search for the first solutions takes seconds to minutes.
+         if (n < 1 || n > 20) throw Error(fmt::format("n-queens: N = {} is out of range 1..20", n));
          return best_n_queens(n);
        }},
       {{"poisson:radius=R",
@@ -244,6 +278,7 @@ const std::vector<Entry>& entries() {
         "Cook 1986; Pelikan 'Poisson disk sampling'"},
        {{"radius", NAN}},
        [](int n, const Params& prm, std::mt19937_64& rng) {
+         check_dart_count(n, "poisson");
          const bool given = !std::isnan(prm.at("radius"));
          double r = given ? prm.at("radius") : 0.75 * packing_radius(n);
          if (given && !(r > 0 && r <= 1))
@@ -273,6 +308,7 @@ const std::vector<Entry>& entries() {
                "poisson-maximal: radius = {} is out of range [0.001, 1] (a maximal set of "
                "radius r has about 0.7 / r^2 points)",
                r));
+         check_dart_count(static_cast<int>(0.7 / (r * r)), "poisson-maximal");
          return poisson(n, r, true, rng);
        }},
       {{"best-candidate:q=10",
@@ -352,25 +388,33 @@ double larcher_pillichshammer(uint32_t i) {
   return r / 4294967296.0;
 }
 
+namespace {
+
+// Row r of the backtracking: `cols`, `left` and `right` mark the columns of
+// row r that a queen above attacks vertically or along a diagonal (the
+// diagonal masks shift by one column per row). Free columns are taken lowest
+// first, so the solutions come in lexicographic order.
+void place_queens(int n, int r, uint64_t cols, uint64_t left, uint64_t right, std::vector<int>& q,
+                  size_t limit, std::vector<std::vector<int>>& out) {
+  if (r == n) {
+    out.push_back(q);
+    return;
+  }
+  const uint64_t all = (1ULL << n) - 1;
+  for (uint64_t free = all & ~(cols | left | right); free && out.size() < limit; free &= free - 1) {
+    const uint64_t bit = free & (~free + 1);
+    q[r] = std::countr_zero(free);
+    place_queens(n, r + 1, cols | bit, ((left | bit) << 1) & all, (right | bit) >> 1, q, limit,
+                 out);
+  }
+}
+
+}  // namespace
+
 std::vector<std::vector<int>> n_queens_solutions(int n, size_t limit) {
   std::vector<std::vector<int>> out;
   std::vector<int> q(n);
-  // Rows one by one; bit masks of the columns and both diagonals in use.
-  std::function<void(int, uint64_t, uint64_t, uint64_t)> place = [&](int r, uint64_t cols,
-                                                                     uint64_t d1, uint64_t d2) {
-    if (out.size() >= limit) return;
-    if (r == n) {
-      out.push_back(q);
-      return;
-    }
-    for (int c = 0; c < n; ++c) {
-      const uint64_t a = 1ULL << c, b = 1ULL << (r + c), d = 1ULL << (r - c + n);
-      if ((cols & a) || (d1 & b) || (d2 & d)) continue;
-      q[r] = c;
-      place(r + 1, cols | a, d1 | b, d2 | d);
-    }
-  };
-  place(0, 0, 0, 0);
+  if (n >= 1 && n <= 32) place_queens(n, 0, 0, 0, 0, q, limit, out);
   return out;
 }
 

@@ -18,7 +18,10 @@ namespace aapat {
 
 // Mitchell's best candidate costs q n^2 / 2 nearest-point queries; past this
 // many it is refused (docs/limits.md).
-inline constexpr double kMaxBestCandidateQueries = 2e8;
+inline constexpr double kMaxBestCandidateQueries = 5e7;  // about 7 s on one core
+
+// Dart throwing (poisson, poisson-maximal) past this many points is refused.
+inline constexpr int kMaxPoissonPoints = 200'000;  // about 8 s on one core
 
 struct GeneratorInfo {
   std::string spec;  // with its parameters and defaults
