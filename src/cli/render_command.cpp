@@ -61,6 +61,9 @@ Scene make_view_scene(const Options& o, int w, int h) {
     if (parts.size() != 2) throw Error(fmt::format("--translate: '{}' is not X,Y", o.translate));
     scene.view.translation = {parse_number(parts[0], "--translate"),
                               parse_number(parts[1], "--translate")};
+    if (!(std::abs(scene.view.translation.x) <= 1e7 && std::abs(scene.view.translation.y) <= 1e7))
+      throw Error(
+          fmt::format("--translate {}: each offset must be within 1e7 pixels", o.translate));
   }
   return scene;
 }

@@ -137,8 +137,9 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
   const double s = parse_number(body.substr(0, c1), "--family: s");
   spec.footprint = parse_footprint(trim(body.substr(c1 + 1, c2 - c1 - 1)));
   spec.n = parse_number(body.substr(c2 + 1), "--family: n");
-  const int side = static_cast<int>(std::lround(std::sqrt(s)));
-  if (s < 1 || side * side != s || side > 8)
+  // The range first: the square root of a huge s must not overflow an int.
+  const int side = s >= 1 && s <= 64 ? static_cast<int>(std::lround(std::sqrt(s))) : 0;
+  if (side < 1 || side * side != s)
     throw Error(
         fmt::format("--family {}: s = {} must be a square number of sets 1, 4, 9, ... 64 "
                     "(a square tile)",

@@ -85,21 +85,18 @@ double shade(const Scene& scene, Vec2 image_point) {
             const double r = radians(s.rotation_deg);
             const double gx = x * std::cos(r) - z * std::sin(r),
                          gz = x * std::sin(r) + z * std::cos(r);
-            return (static_cast<long long>(std::floor(gx)) +
-                    static_cast<long long>(std::floor(gz))) %
-                               2 ==
-                           0
-                       ? 1.0
-                       : 0.0;
+            // Parity in doubles: near the horizon the squares' indices pass any integer type.
+            return std::fmod(std::abs(std::floor(gx) + std::floor(gz)), 2.0) == 0 ? 1.0 : 0.0;
           },
           [&](const CirclesScene& s) {
             // Discs on a grid of cells, radius growing from 0.3 pixel to most of a cell.
             const int cols = static_cast<int>(std::ceil(std::sqrt(double(s.count))));
             const double cw = s.width / cols, ch = s.height / cols;
-            const int ci = static_cast<int>(std::floor(p.x / cw)),
-                      cj = static_cast<int>(std::floor(p.y / ch));
+            const double fi = std::floor(p.x / cw), fj = std::floor(p.y / ch);
+            if (!(fi >= 0 && fj >= 0 && fi < cols && fj < cols)) return 0.0;  // before any cast
+            const int ci = static_cast<int>(fi), cj = static_cast<int>(fj);
             const int idx = cj * cols + ci;
-            if (ci < 0 || cj < 0 || ci >= cols || cj >= cols || idx >= s.count) return 0.0;
+            if (idx >= s.count) return 0.0;
             const double t = s.count > 1 ? double(idx) / (s.count - 1) : 1.0;
             const double r = 0.3 + t * (0.45 * std::min(cw, ch) - 0.3);
             return std::hypot(p.x - (ci + 0.5) * cw, p.y - (cj + 0.5) * ch) <= r ? 1.0 : 0.0;
