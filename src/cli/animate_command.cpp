@@ -214,14 +214,12 @@ Action add_table2_command(CLI::App& app) {
     }
     if (o->json) {
       JsonObject doc = json_report("table2");
-      doc.update(JsonObject{
-          {"animation", "circle"},
-          {"frames", a->frames},
-          {"width", a->width},
-          {"height", a->height},
-          {"reference", fmt::format("{} jittered samples per pixel, {}", a->reference.samples,
-                                    make_filter(a->reference.filter).name())},
-          {"rows", rows_json}});
+      doc.update(JsonObject{{"animation", "circle"},
+                            {"frames", a->frames},
+                            {"width", a->width},
+                            {"height", a->height},
+                            {"reference", describe_reference(a->reference)},
+                            {"rows", rows_json}});
       out << json_text(doc);
       return;
     }

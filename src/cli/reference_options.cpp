@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "cli/app.h"
+#include "core/filter_catalog.h"
 #include "io/reference_cache.h"
 
 namespace aapat {
@@ -17,6 +18,11 @@ ReferenceSource ReferenceOptions::source() const {
   return remembered_references(cached_references(
       cache_dir.empty() ? default_cache_dir() : cache_dir,
       [](const std::string& message) { warnings() << "aapat: warning: " << message << "\n"; }));
+}
+
+std::string describe_reference(const ReferenceSettings& settings) {
+  return fmt::format("{} jittered samples per pixel, {}", settings.samples,
+                     make_filter(settings.filter).name());
 }
 
 void add_reference_options(CLI::App* cmd, ReferenceOptions& o, int samples_default) {

@@ -81,11 +81,6 @@ Figures measure(const Image& image, const Image& reference) {
   return f;
 }
 
-std::string reference_text(const ReferenceSettings& ref) {
-  return fmt::format("{} jittered samples per pixel, {}", ref.samples,
-                     make_filter(ref.filter).name());
-}
-
 std::string ssim_text(const Figures& f) {
   return f.ssim_value ? fmt::format("{:.4f}", *f.ssim_value) : "-";
 }
@@ -161,7 +156,7 @@ void run_grid(const Options& o, std::ostream& out) {
     doc.update(JsonObject{{"scene", o.scene},
                           {"width", w},
                           {"height", h},
-                          {"reference", reference_text(ref)},
+                          {"reference", describe_reference(ref)},
                           {"rows", cells}});
     out << json_text(doc);
   } else {
@@ -214,7 +209,7 @@ void run_single(const Options& o, std::ostream& out) {
     const Figures f = measure(image, reference);
     const ImageError& e = f.error;
     const std::string ref_name = make_filter(ref.filter).name();
-    js["reference"] = reference_text(ref);
+    js["reference"] = describe_reference(ref);
     js["rmse"] = e.rmse;
     js["max_deviation"] = e.max_deviation;
     js["ssim"] = f.ssim_value ? JsonObject(*f.ssim_value) : nullptr;

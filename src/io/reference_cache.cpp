@@ -40,13 +40,10 @@ std::string default_cache_dir() {
 }
 
 ReferenceSource cached_references(std::string dir, Warn warn) {
-  auto warned = std::make_shared<bool>(false);
-  auto warn_once = [warn, warned](const std::string& message) {
-    if (warn && !*warned) warn(message + "; continuing without the reference cache");
-    *warned = true;
-  };
-  return [dir = std::move(dir), warn_once](const Scene& scene, int width, int height,
-                                           const ReferenceSettings& r, double offset) {
+  // Set by the first failure to write: warned once, not tried again.
+  auto unwritable = std::make_shared<bool>(false);
+  return [dir = std::move(dir), warn, unwritable](const Scene& scene, int width, int height,
+                                                  const ReferenceSettings& r, double offset) {
     const std::string key = key_text(scene, width, height, r, offset);
     const std::string path = fmt::format("{}/reference-{:016x}.bin", dir, fnv1a(key));
     const size_t bytes = sizeof(double) * static_cast<size_t>(width) * height;
@@ -67,13 +64,15 @@ ReferenceSource cached_references(std::string dir, Warn warn) {
       }
     }
     Image image = render_reference(scene, width, height, r, offset);
+    if (*unwritable) return image;
     try {
       ensure_directory(dir, "reference cache");
       std::string data = std::string(kMagic) + key;
       data.append(reinterpret_cast<const char*>(image.values.data()), bytes);
       write_file_now(path, data, /*keep_on_rollback=*/true);  // valid whatever the run does next
     } catch (const Error& e) {
-      warn_once(e.what());
+      *unwritable = true;
+      if (warn) warn(std::string(e.what()) + "; continuing without the reference cache");
     }
     return image;
   };
