@@ -5,9 +5,9 @@
 
 #include <optional>
 
-#include "analyze/discrepancy.h"
-#include "analyze/spectrum.h"
-#include "generate/point_generators.h"
+#include "aapat/analyze/discrepancy.h"
+#include "aapat/analyze/spectrum.h"
+#include "aapat/generate/point_generators.h"
 
 namespace aapat {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <random>
 
-#include "core/filter_catalog.h"
-#include "core/metric.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/core/metric.h"
 
 namespace aapat {
 namespace {

@@ -5,12 +5,12 @@
 
 #include <chrono>
 
-#include "core/filter_catalog.h"
-#include "generate/catalog.h"
-#include "optimize/descent.h"
-#include "optimize/family.h"
-#include "optimize/lattice_search.h"
-#include "optimize/multistart.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/generate/catalog.h"
+#include "aapat/optimize/descent.h"
+#include "aapat/optimize/family.h"
+#include "aapat/optimize/lattice_search.h"
+#include "aapat/optimize/multistart.h"
 
 namespace aapat {
 namespace {

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <optional>
 
-#include "core/filter_catalog.h"
-#include "render/renderer.h"
-#include "render/ssim.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/render/renderer.h"
+#include "aapat/render/ssim.h"
 
 namespace aapat {
 namespace {

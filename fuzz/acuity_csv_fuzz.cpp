@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <string_view>
 
-#include "core/filter_catalog.h"
-#include "core/metric.h"
-#include "generate/catalog.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/core/metric.h"
+#include "aapat/generate/catalog.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

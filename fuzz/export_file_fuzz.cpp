@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "core/hardware_layout.h"
-#include "io/api_export.h"
+#include "aapat/core/hardware_layout.h"
+#include "aapat/io/api_export.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <string_view>
 
-#include "core/geometry.h"
-#include "core/pattern.h"
-#include "io/pattern_json.h"
+#include "aapat/core/geometry.h"
+#include "aapat/core/pattern.h"
+#include "aapat/io/pattern_json.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

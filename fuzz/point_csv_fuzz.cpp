@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "analyze/discrepancy.h"
-#include "io/point_set_file.h"
+#include "aapat/analyze/discrepancy.h"
+#include "aapat/io/point_set_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -8,13 +8,13 @@
 #include <string>
 #include <string_view>
 
-#include "core/acuity.h"
-#include "core/filter_catalog.h"
-#include "core/pattern.h"
-#include "generate/catalog.h"
-#include "generate/point_generators.h"
-#include "optimize/family.h"
-#include "render/scene.h"
+#include "aapat/core/acuity.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/core/pattern.h"
+#include "aapat/generate/catalog.h"
+#include "aapat/generate/point_generators.h"
+#include "aapat/optimize/family.h"
+#include "aapat/render/scene.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;

@@ -13,14 +13,14 @@
 #include "cli/commands.h"
 #include "cli/progress.h"
 #include "cli/reference_options.h"
-#include "core/filter_catalog.h"
-#include "core/metric.h"
-#include "io/atomic_file.h"
-#include "io/gif_animation.h"
-#include "io/json_report.h"
-#include "io/pattern_json.h"
-#include "io/png_image.h"
-#include "render/animation.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/core/metric.h"
+#include "aapat/io/atomic_file.h"
+#include "aapat/io/gif_animation.h"
+#include "aapat/io/json_report.h"
+#include "aapat/io/pattern_json.h"
+#include "aapat/io/png_image.h"
+#include "aapat/render/animation.h"
 
 namespace aapat {
 namespace {

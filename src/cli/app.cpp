@@ -4,23 +4,35 @@
 
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "cli/commands.h"
-#include "core/geometry.h"
-#include "io/atomic_file.h"
+#include "aapat/core/geometry.h"
+#include "aapat/version.h"
+#include "aapat/io/atomic_file.h"
 
 namespace aapat {
 namespace {
 
 std::ostream* g_warnings = nullptr;
 
+// The flags that give the library's named parameters.
+const std::map<std::string, std::string> kFlagOfParameter = {
+    {"family", "--family"}, {"placement", "--placement"}, {"seeds", "--seeds"},
+    {"lock", "--lock"},     {"lattice", "--lattice"},     {"cost", "--cost"},
+    {"tile", "--tile"},     {"size", "--size"},           {"norm", "--norm"}};
+
 // The message of the exception in flight, whatever its type: library errors
 // as they are, the rest named for what they mean to a user.
 std::string describe_current_exception() {
   try {
     throw;
+  } catch (const ParameterError& e) {
+    // The library names its parameter; here it is reported under its flag.
+    const auto flag = kFlagOfParameter.find(e.parameter());
+    return flag == kFlagOfParameter.end() ? e.what() : flag->second + e.detail();
   } catch (const Error& e) {
     return e.what();
   } catch (const std::bad_alloc&) {
@@ -68,7 +80,7 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
       "aapat: design antialiasing sample patterns (Laine-Aila E2 metric, Hasselgren schemes)",
       "aapat"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "aapat 0.1.0");
+  app.set_version_flag("--version", "aapat " AAPAT_VERSION);
   std::vector<std::pair<CLI::App*, Action>> commands;
   auto add = [&](auto adder) {
     const size_t before = app.get_subcommands({}).size();

@@ -296,7 +296,7 @@ TEST(CliOptimize, LockedSamplesStayAndFileSeedsStartFromTheFile) {
             std::string::npos);
   bad = run({"optimize", "--family", "P(1,1,2)", "--seeds", seed});
   EXPECT_EQ(bad.code, 1);
-  EXPECT_NE(bad.err.find("is P(4,1+,2), not the --family P(1,1,2)"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("is P(4,1+,2), not the family P(1,1,2)"), std::string::npos) << bad.err;
 }
 
 }  // namespace

@@ -10,14 +10,14 @@
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
-#include "core/filter_catalog.h"
-#include "core/text.h"
-#include "generate/enumerate.h"
-#include "io/atomic_file.h"
-#include "io/json_report.h"
-#include "io/pattern_json.h"
-#include "io/pattern_svg.h"
-#include "optimize/multistart.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/core/text.h"
+#include "aapat/generate/enumerate.h"
+#include "aapat/io/atomic_file.h"
+#include "aapat/io/json_report.h"
+#include "aapat/io/pattern_json.h"
+#include "aapat/io/pattern_svg.h"
+#include "aapat/optimize/multistart.h"
 
 namespace aapat {
 

@@ -8,10 +8,10 @@
 
 #include "cli/commands.h"
 #include "cli/metric_options.h"
-#include "io/json_report.h"
-#include "io/pattern_json.h"
-#include "io/profile_plot.h"
-#include "optimize/descent.h"
+#include "aapat/io/json_report.h"
+#include "aapat/io/pattern_json.h"
+#include "aapat/io/profile_plot.h"
+#include "aapat/optimize/descent.h"
 
 namespace aapat {
 

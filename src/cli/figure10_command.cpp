@@ -10,10 +10,10 @@
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
-#include "io/json_report.h"
-#include "io/line_plot.h"
-#include "optimize/family.h"
-#include "optimize/multistart.h"
+#include "aapat/io/json_report.h"
+#include "aapat/io/line_plot.h"
+#include "aapat/optimize/family.h"
+#include "aapat/optimize/multistart.h"
 
 namespace aapat {
 namespace {

@@ -12,14 +12,14 @@
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
-#include "core/hardware_layout.h"
-#include "core/lattice.h"
-#include "generate/catalog.h"
-#include "io/json_report.h"
-#include "optimize/descent.h"
-#include "optimize/family.h"
-#include "optimize/lattice_search.h"
-#include "optimize/multistart.h"
+#include "aapat/core/hardware_layout.h"
+#include "aapat/core/lattice.h"
+#include "aapat/generate/catalog.h"
+#include "aapat/io/json_report.h"
+#include "aapat/optimize/descent.h"
+#include "aapat/optimize/family.h"
+#include "aapat/optimize/lattice_search.h"
+#include "aapat/optimize/multistart.h"
 
 namespace aapat {
 namespace {

@@ -10,15 +10,15 @@
 
 #include "cli/commands.h"
 #include "cli/metric_options.h"
-#include "core/filter_catalog.h"
-#include "core/hardware_layout.h"
-#include "core/lattice.h"
-#include "io/api_export.h"
-#include "io/atomic_file.h"
-#include "io/json_report.h"
-#include "io/pattern_json.h"
-#include "optimize/descent.h"
-#include "optimize/problem.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/core/hardware_layout.h"
+#include "aapat/core/lattice.h"
+#include "aapat/io/api_export.h"
+#include "aapat/io/atomic_file.h"
+#include "aapat/io/json_report.h"
+#include "aapat/io/pattern_json.h"
+#include "aapat/optimize/descent.h"
+#include "aapat/optimize/problem.h"
 
 namespace aapat {
 

@@ -5,12 +5,12 @@
 #include <ostream>
 
 #include "cli/commands.h"
-#include "core/acuity.h"
-#include "core/filter_catalog.h"
-#include "generate/catalog.h"
-#include "generate/point_generators.h"
-#include "io/json_report.h"
-#include "render/scene.h"
+#include "aapat/core/acuity.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/generate/catalog.h"
+#include "aapat/generate/point_generators.h"
+#include "aapat/io/json_report.h"
+#include "aapat/render/scene.h"
 
 namespace aapat {
 

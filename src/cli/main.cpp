@@ -1,7 +1,7 @@
 #include <iostream>
 
 #include "cli/app.h"
-#include "io/atomic_file.h"
+#include "aapat/io/atomic_file.h"
 
 int main(int argc, char** argv) {
   aapat::remove_temporaries_on_signals();

@@ -1,6 +1,6 @@
 #include "cli/metric_options.h"
 
-#include "core/filter_catalog.h"
+#include "aapat/core/filter_catalog.h"
 
 namespace aapat {
 

@@ -4,7 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "core/metric.h"
+#include "aapat/core/metric.h"
 
 namespace aapat {
 

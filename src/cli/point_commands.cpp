@@ -9,17 +9,17 @@
 #include <random>
 #include <set>
 
-#include "analyze/discrepancy.h"
-#include "analyze/spectrum.h"
+#include "aapat/analyze/discrepancy.h"
+#include "aapat/analyze/spectrum.h"
 #include "cli/commands.h"
 #include "cli/progress.h"
-#include "core/text.h"
-#include "generate/point_generators.h"
-#include "io/json_report.h"
-#include "io/line_plot.h"
-#include "io/pattern_json.h"
-#include "io/png_image.h"
-#include "io/point_set_file.h"
+#include "aapat/core/text.h"
+#include "aapat/generate/point_generators.h"
+#include "aapat/io/json_report.h"
+#include "aapat/io/line_plot.h"
+#include "aapat/io/pattern_json.h"
+#include "aapat/io/png_image.h"
+#include "aapat/io/point_set_file.h"
 
 namespace aapat {
 namespace {

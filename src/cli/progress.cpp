@@ -24,4 +24,8 @@ void Progress::update(int done, int total, const std::string& note) {
   std::fflush(stderr);
 }
 
+StudyProgress Progress::callback() {
+  return [this](int done, int total, const std::string& note) { update(done, total, note); };
+}
+
 }  // namespace aapat

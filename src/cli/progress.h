@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "aapat/study/progress.h"
+
 namespace aapat {
 
 class Progress {
@@ -11,6 +13,8 @@ class Progress {
   explicit Progress(std::string label);
   ~Progress();
   void update(int done, int total, const std::string& note);
+  // The bar as a library job's progress callback.
+  StudyProgress callback();
 
  private:
   std::string label_;

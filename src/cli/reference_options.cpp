@@ -6,8 +6,8 @@
 #include <cstdlib>
 
 #include "cli/app.h"
-#include "core/filter_catalog.h"
-#include "io/reference_cache.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/io/reference_cache.h"
 
 namespace aapat {
 

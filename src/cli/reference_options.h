@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "render/reference.h"
+#include "aapat/render/reference.h"
 
 namespace aapat {
 

@@ -5,9 +5,9 @@
 #include <ostream>
 
 #include "cli/commands.h"
-#include "io/json_report.h"
-#include "io/pattern_json.h"
-#include "io/pattern_svg.h"
+#include "aapat/io/json_report.h"
+#include "aapat/io/pattern_json.h"
+#include "aapat/io/pattern_svg.h"
 
 namespace aapat {
 

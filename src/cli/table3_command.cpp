@@ -12,9 +12,9 @@
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
-#include "io/json_report.h"
-#include "optimize/family.h"
-#include "optimize/multistart.h"
+#include "aapat/io/json_report.h"
+#include "aapat/optimize/family.h"
+#include "aapat/optimize/multistart.h"
 
 namespace aapat {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "core/geometry.h"
+#include "aapat/core/geometry.h"
 
 namespace aapat::testing {
 

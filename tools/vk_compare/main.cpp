@@ -26,14 +26,14 @@
 #include <string>
 #include <vector>
 
-#include "core/filter_catalog.h"
-#include "generate/catalog.h"
-#include "io/api_export.h"
-#include "io/atomic_file.h"
-#include "io/png_image.h"
-#include "io/scene_json.h"
-#include "render/image_error.h"
-#include "render/renderer.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/generate/catalog.h"
+#include "aapat/io/api_export.h"
+#include "aapat/io/atomic_file.h"
+#include "aapat/io/png_image.h"
+#include "aapat/io/scene_json.h"
+#include "aapat/render/image_error.h"
+#include "aapat/render/renderer.h"
 
 namespace {
 

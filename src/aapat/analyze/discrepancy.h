@@ -1,0 +1,46 @@
+// Discrepancy of a point set in the unit square (docs/analysis.md):
+//  - L2-star: the L2 norm over anchored boxes [0,a) x [0,b) of
+//    (fraction of points inside - area), by Warnock's closed form;
+//  - star: the supremum of the same, exact for small sets (every box whose
+//    corner coordinates come from the points), bounded above and below on a
+//    grid for larger ones;
+//  - edge: the supremum over half-planes H of |area(H cut with the square) -
+//    fraction of points in H|, in the spirit of Dobkin & Mitchell: exact for
+//    each direction, over `directions` directions of the edge normal.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "aapat/core/geometry.h"
+
+namespace aapat {
+
+// The L2-star sum is O(N^2) and the edge discrepancy O(directions N log N):
+// larger sets are refused (docs/limits.md) rather than run for hours.
+inline constexpr size_t kMaxDiscrepancyPoints = 65536;
+// Throws Error naming the count and the limit.
+void check_discrepancy_size(size_t points);
+
+double l2_star_discrepancy(const std::vector<Vec2>& points);
+
+struct StarDiscrepancy {
+  double lower = 0, upper = 0;  // equal when exact
+  bool exact = false;
+};
+// Exact when points.size() <= exact_limit; else bounds from an m x m grid.
+StarDiscrepancy star_discrepancy(const std::vector<Vec2>& points, size_t exact_limit = 2048,
+                                 int grid = 512);
+
+struct EdgeDiscrepancy {
+  double value = 0;
+  double normal_deg = 0;  // direction of the worst half-plane's normal
+};
+// `progress(done, total)` hears each direction finish.
+EdgeDiscrepancy edge_discrepancy(const std::vector<Vec2>& points, int directions = 720,
+                                 const std::function<void(int, int)>& progress = {});
+
+// Area of {p in [0,1]^2 : p . n <= t} for the unit normal n = (cos phi, sin phi).
+double half_plane_area(double phi, double t);
+
+}  // namespace aapat

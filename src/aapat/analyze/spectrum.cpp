@@ -1,0 +1,89 @@
+#include "aapat/analyze/spectrum.h"
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <complex>
+
+namespace aapat {
+
+Spectrum2D power_spectrum(const std::vector<Vec2>& points, int size) {
+  const size_t n = points.size(), m = static_cast<size_t>(size);
+  const int half = size / 2;
+  // exp(-2 pi i v y_j) for every point and row frequency v, computed once.
+  std::vector<double> ey_re(n * m), ey_im(n * m);
+  tbb::parallel_for(size_t{0}, n, [&](size_t j) {
+    for (size_t k = 0; k < m; ++k) {
+      const double angle = -2 * kPi * (static_cast<double>(k) - half) * points[j].y;
+      ey_re[j * m + k] = std::cos(angle);
+      ey_im[j * m + k] = std::sin(angle);
+    }
+  });
+  Spectrum2D s{size, std::vector<double>(m * m)};
+  // Column u of the output: sum_j exp(-2 pi i u x_j) exp(-2 pi i v y_j) over v.
+  tbb::parallel_for(size_t{0}, m, [&](size_t col) {
+    std::vector<double> re(m, 0.0), im(m, 0.0);
+    const double u = static_cast<double>(col) - half;
+    for (size_t j = 0; j < n; ++j) {
+      const double ar = std::cos(-2 * kPi * u * points[j].x),
+                   ai = std::sin(-2 * kPi * u * points[j].x);
+      const double* br = &ey_re[j * m];
+      const double* bi = &ey_im[j * m];
+      for (size_t v = 0; v < m; ++v) {
+        re[v] += ar * br[v] - ai * bi[v];
+        im[v] += ar * bi[v] + ai * br[v];
+      }
+    }
+    for (size_t v = 0; v < m; ++v) s.power[v * m + col] = (re[v] * re[v] + im[v] * im[v]) / n;
+  });
+  return s;
+}
+
+void accumulate(Spectrum2D& sum, const Spectrum2D& other, double weight) {
+  if (sum.size == 0) sum = Spectrum2D{other.size, std::vector<double>(other.power.size(), 0.0)};
+  for (size_t i = 0; i < other.power.size(); ++i) sum.power[i] += weight * other.power[i];
+}
+
+RadialProfile radial_average(const Spectrum2D& s) {
+  const int half = s.size / 2;
+  std::vector<double> sum(half + 1, 0.0), sum_sq(half + 1, 0.0), count(half + 1, 0.0);
+  for (int v = -half; v < s.size - half; ++v)
+    for (int u = -half; u < s.size - half; ++u) {
+      const int r = static_cast<int>(std::lround(std::hypot(u, v)));
+      if (r > half) continue;  // rings cut by the square's edge are left out
+      const double p = s.at(u, v);
+      sum[r] += p;
+      sum_sq[r] += p * p;
+      count[r] += 1;
+    }
+  RadialProfile out;
+  for (int r = 0; r <= half; ++r) {
+    if (count[r] == 0) continue;
+    const double mean = sum[r] / count[r];
+    const double var = std::max(0.0, sum_sq[r] / count[r] - mean * mean);
+    out.radius.push_back(r);
+    out.power.push_back(mean);
+    out.anisotropy_db.push_back(mean > 0 && var > 0 ? 10 * std::log10(var / (mean * mean))
+                                                    : -INFINITY);
+  }
+  return out;
+}
+
+std::vector<double> power_spectrum_1d(const std::vector<double>& xs, int count, double f_max) {
+  std::vector<double> power(count);
+  const double df = f_max / count;
+  constexpr int kBlock = 256;  // exact exponentials at each block start, rotations inside
+  tbb::parallel_for(0, (count + kBlock - 1) / kBlock, [&](int b) {
+    const int k0 = b * kBlock, k1 = std::min(count, k0 + kBlock);
+    std::vector<std::complex<double>> sum(k1 - k0);
+    for (double x : xs) {
+      std::complex<double> z = std::polar(1.0, -2 * kPi * k0 * df * x);
+      const std::complex<double> step = std::polar(1.0, -2 * kPi * df * x);
+      for (int k = k0; k < k1; ++k, z *= step) sum[k - k0] += z;
+    }
+    for (int k = k0; k < k1; ++k) power[k] = std::norm(sum[k - k0]) / xs.size();
+  });
+  return power;
+}
+
+}  // namespace aapat

@@ -1,0 +1,115 @@
+// Reference reconstruction filters: 1D, even, normalized to unit integral.
+//
+// The metric compares a pattern's step response with the filter's step
+// response g0(a) (Laine-Aila Eq. 2). Every filter is tabulated once, piece by
+// piece on [0, radius], as polynomials: exactly for the piecewise-polynomial
+// filters (box, tent, the Mitchell-Netravali / Keys cubics), and by Chebyshev
+// interpolation of degree 7 on pieces 1/16 pixel wide for the others (error
+// below 1e-13). The step response and every integral the metric needs are then
+// exact antiderivatives of those pieces.
+#pragma once
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "aapat/core/polynomial.h"
+
+namespace aapat {
+
+struct BoxShape {
+  double width = 1;  // support [-width/2, width/2]
+};
+struct TentShape {
+  double radius = 1;
+};
+struct GaussianShape {
+  double sigma = 0.5;
+  double radius = 1.5;  // truncated (not shifted) at the radius
+};
+struct MitchellShape {  // Mitchell-Netravali (B, C); Keys' a = -C with B = 0
+  double b = 1.0 / 3.0;
+  double c = 1.0 / 3.0;
+};
+struct LanczosShape {  // sinc(x) sinc(x / lobes) on |x| < lobes
+  int lobes = 3;
+};
+struct LanczosGaussianShape {  // exp(-x^2 / (2 sigma^2)) sinc(x / lobes) on |x| < lobes
+  int lobes = 2;
+  double sigma = 0.5;
+};
+struct BlinnNiceShape {};  // sinc(x / 2) sinc(x / 4) on |x| < 4 (Goss-Wu Table 3)
+
+using FilterShape = std::variant<BoxShape, TentShape, GaussianShape, MitchellShape, LanczosShape,
+                                 LanczosGaussianShape, BlinnNiceShape>;
+
+double shape_radius(const FilterShape& shape);
+// The unnormalized impulse response.
+double shape_value(const FilterShape& shape, double x);
+
+class Filter {
+ public:
+  // `name` is the canonical spec the filter was built from (for reports and files).
+  Filter(FilterShape shape, std::string name);
+
+  const std::string& name() const { return name_; }
+  const FilterShape& shape() const { return shape_; }
+  double radius() const { return radius_; }
+
+  // The normalized impulse response h(x).
+  double value(double x) const;
+  // g0(a) = integral of h from -a to infinity (= from -infinity to a, h even).
+  double step_response(double a) const;
+  // Integral of g0 from -infinity to a.
+  double step_integral(double a) const;
+  // Integral of g0^2 from -infinity to a.
+  double step_square_integral(double a) const;
+  // J(p) = integral of |p - t| h(t) dt: even, equal to |p| past the radius.
+  // The metric's hot path; no allocation, O(1).
+  double abs_moment(double p) const {
+    p = p < 0 ? -p : p;
+    if (!(p < radius_)) return p;  // past the radius, and NaN (never a table index)
+    int k = static_cast<int>(p * inv_width_);
+    if (k >= segments_) k = segments_ - 1;
+    const double t = (p - k * width_) * (2.0 * inv_width_) - 1.0;
+    const double* c = &abs_moment_coef_[static_cast<size_t>(k) * coefs_];
+    double r = c[coefs_ - 1];
+    for (int i = coefs_ - 2; i >= 0; --i) r = r * t + c[i];
+    return r;
+  }
+  // Half the mean distance of two independent draws from h: (1/2) E|S - T|.
+  double half_mean_distance() const { return half_mean_distance_; }
+
+  // Degree of the pieces of h: 3 reproduces the cubics exactly; 7 on pieces
+  // 1/16 pixel wide interpolates the smooth filters to about 1e-14.
+  static constexpr int kPolynomialDegree = 3;
+  static constexpr int kInterpolatedDegree = 7;
+  // The smooth filters must be tabulated to this error relative to their
+  // peak; narrow ones get finer pieces, up to kMaxSegments, or are refused.
+  static constexpr double kTabulationTolerance = 1e-9;
+  static constexpr int kMaxSegments = 4096;
+
+ private:
+  struct Segment {
+    Polynomial h, g, one_minus_g_sq_int, g_sq_int;  // in t over the segment
+    double q0 = 0, s0 = 0;  // integrals of (1-g)^2 and g^2 from 0 to the segment start
+  };
+  int locate(double x, double* t) const;
+  void tabulate(int segments);
+  // The largest difference between the pieces and the filter, relative to its peak.
+  double tabulation_error() const;
+
+  FilterShape shape_;
+  std::string name_;
+  double radius_ = 0;
+  double scale_ = 1;  // normalization of shape_value
+  int segments_ = 0;
+  int coefs_ = 0;  // coefficients per piece of J: degree of h + 3
+  double width_ = 0, inv_width_ = 0;
+  std::vector<Segment> pieces_;
+  std::vector<double> abs_moment_coef_;
+  double half_mean_distance_ = 0;
+  double q_total_ = 0, s_total_ = 0;
+};
+
+}  // namespace aapat

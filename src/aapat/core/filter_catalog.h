@@ -1,0 +1,43 @@
+// The named reference filters, their parameters with defaults and sources, in
+// one place that both `aapat list` and the docs read; and the parser for specs
+// such as `mitchell:b=1/3,c=1/3`, `gaussian:sigma=0.5,radius=1.5`, `lanczos:lobes=3`.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "aapat/core/filter.h"
+
+namespace aapat {
+
+struct FilterParamInfo {
+  std::string key;
+  std::string default_text;
+  std::string meaning;
+};
+
+struct FilterInfo {
+  std::string name;
+  std::string summary;
+  std::string source;
+  std::vector<FilterParamInfo> params;
+};
+
+const std::vector<FilterInfo>& filter_catalog();
+
+// Builds a filter from its spec; throws Error naming the unknown filter,
+// parameter or the out-of-range value.
+Filter make_filter(std::string_view spec);
+
+// The default reference filter of both papers: Mitchell-Netravali (1/3, 1/3).
+inline constexpr std::string_view kDefaultFilter = "mitchell";
+
+// A finite number written as a decimal or a fraction ("1/3", "-1/4", "0.5").
+double parse_number(std::string_view text, std::string_view what);
+
+// "WIDTHxHEIGHT", both whole numbers from 1 to `max`.
+std::pair<int, int> parse_size(std::string_view text, std::string_view what, int max);
+
+}  // namespace aapat

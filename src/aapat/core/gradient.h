@@ -1,0 +1,23 @@
+// The analytic gradient of E1^2 for a 1D pattern (Laine-Aila Sec. 5.1),
+// differentiated from the closed form the metric evaluates (docs/metric.md):
+//   E1^2 = sum_j w_j J(p_j) - sum_{j<k} w_j w_k |p_j - p_k| - (1/2) E|S - T|
+// so, with W_<(j) and W_>(j) the weight left and right of p_j,
+//   dE1^2/dp_j = w_j (2 g0(p_j) - 1 - (W_<(j) - W_>(j)))
+//              = w_j (2 g0(p_j) - 2 W_<(j) - w_j)            (Laine-Aila Eq. 6, on E1^2)
+//   dE1^2/dw_j = J(p_j) - sum_{k != j} w_k |p_j - p_k|       (weights as free variables)
+// The weight gradient is for unconstrained weights; on the plane sum w = 1 the
+// steepest direction is this minus its mean over the kernel, which is what
+// the optimizer steps along. A tie p_j = p_k takes the sign 0 (a subgradient).
+#pragma once
+
+#include <span>
+
+#include "aapat/core/filter.h"
+
+namespace aapat {
+
+// Returns E1^2 and writes dE1^2/dp into dp and dE1^2/dw into dw (both of p's size).
+double e1_squared_gradient(const Filter& filter, std::span<const double> p,
+                           std::span<const double> w, std::span<double> dp, std::span<double> dw);
+
+}  // namespace aapat

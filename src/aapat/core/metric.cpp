@@ -1,0 +1,152 @@
+#include "aapat/core/metric.h"
+
+#include "aapat/core/filter_catalog.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+namespace aapat {
+double e1_squared(const Filter& filter, std::span<const double> p, std::span<const double> w) {
+  const size_t n = p.size();
+  double moment = 0;
+  for (size_t j = 0; j < n; ++j) moment += w[j] * filter.abs_moment(p[j]);
+  double spread = 0;  // sum over pairs j < k of w_j w_k |p_j - p_k|
+  if (n <= kPairwiseLimit) {
+    for (size_t j = 0; j < n; ++j) {
+      double s = 0;
+      for (size_t k = j + 1; k < n; ++k) s += w[k] * std::abs(p[j] - p[k]);
+      spread += w[j] * s;
+    }
+  } else {
+    // Sorted: each sample's p times (weight below - weight above).
+    thread_local std::vector<std::pair<double, double>> sorted;
+    sorted.resize(n);
+    for (size_t j = 0; j < n; ++j) sorted[j] = {p[j], w[j]};
+    std::sort(sorted.begin(), sorted.end());
+    double below = 0;
+    for (const auto& [pj, wj] : sorted) {
+      spread += wj * pj * (2 * below + wj - 1);
+      below += wj;
+    }
+  }
+  return std::max(0.0, moment - spread - filter.half_mean_distance());
+}
+
+double e1_squared_piecewise(const Filter& filter, std::span<const double> p,
+                            std::span<const double> w) {
+  std::vector<size_t> order(p.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return p[a] < p[b]; });
+  const double r = filter.radius();
+  // int_u^v (c - g0)^2 = c^2 (v - u) - 2c [I1]_u^v + [I2]_u^v, exact per piece.
+  auto piece = [&](double c, double u, double v) {
+    if (v <= u) return 0.0;
+    return c * c * (v - u) - 2 * c * (filter.step_integral(v) - filter.step_integral(u)) +
+           filter.step_square_integral(v) - filter.step_square_integral(u);
+  };
+  double lo = std::min(-r, p[order.front()]);
+  double total = piece(0.0, lo, p[order.front()]);
+  double c = 0;
+  for (size_t i = 0; i < order.size(); ++i) {
+    c += w[order[i]];
+    const double next = i + 1 < order.size() ? p[order[i + 1]] : std::max(r, p[order[i]]);
+    total += piece(c, p[order[i]], next);
+  }
+  return total;
+}
+
+double combine_over_angles(std::span<const double> values, double norm) {
+  double largest = 0;
+  for (double v : values) largest = std::max(largest, v);
+  if (norm == Metric::kMaxNorm || largest == 0) return std::sqrt(largest);
+  // ((1/M) sum v^(p/2))^(1/p) = sqrt(largest) ((1/M) sum (v / largest)^(p/2))^(1/p)
+  double sum = 0;
+  for (double v : values) sum += std::pow(v / largest, norm / 2);
+  return std::sqrt(largest) * std::pow(sum / static_cast<double>(values.size()), 1.0 / norm);
+}
+
+std::string format_norm(double norm) {
+  return norm == Metric::kMaxNorm ? "inf" : fmt::format("{}", norm);
+}
+
+double parse_norm(std::string_view text, std::string_view what) {
+  return text == "inf" || text == "infinity" ? Metric::kMaxNorm : parse_number(text, what);
+}
+
+Metric::Metric(Filter filter, AcuityTable acuity, double norm)
+    : filter_(std::move(filter)), acuity_(std::move(acuity)), norm_(norm) {
+  if (!(norm_ >= 1) || (norm_ != kMaxNorm && norm_ > kMaxFiniteNorm))
+    throw Error(fmt::format("norm: {} is not a valid p: use a number in [1, {}] or inf", norm_,
+                            kMaxFiniteNorm));
+  validate(acuity_);
+  for (double a : acuity_.angles_deg) {
+    cos_.push_back(std::cos(radians(a)));
+    sin_.push_back(std::sin(radians(a)));
+  }
+  for (double w : acuity_.weights) weight_sq_.push_back(w * w);
+}
+
+double Metric::e1_squared_at(const Kernel& k, int angle, double* proj) const {
+  const size_t n = k.w.size();
+  const double c = cos_[angle], s = sin_[angle];
+  for (size_t j = 0; j < n; ++j) proj[j] = c * k.y[j] - s * k.x[j];
+  return e1_squared(filter_, {proj, n}, k.w);
+}
+
+template <class Visit>
+void Metric::for_each_angle(const Kernel& k, Visit&& visit) const {
+  const size_t n = k.w.size();
+  // Projections on the edge normal: on the stack for ordinary kernel sizes.
+  constexpr size_t kStack = 256;
+  std::array<double, kStack> stack;
+  std::vector<double> heap(n > kStack ? n : 0);
+  double* proj = n > kStack ? heap.data() : stack.data();
+  for (int a = 0; a < angle_count(); ++a) visit(a, e1_squared_at(k, a, proj));
+}
+
+std::vector<double> Metric::profile(const Kernel& k) const {
+  std::vector<double> out(angle_count());
+  for_each_angle(k, [&](int a, double e1sq) { out[a] = acuity_.weights[a] * std::sqrt(e1sq); });
+  return out;
+}
+
+KernelError Metric::kernel_error(const Kernel& k) const {
+  // Compare W^2 E1^2: one square root per kernel, not one per angle.
+  KernelError r;
+  thread_local std::vector<double> values;
+  values.resize(angle_count());
+  double worst = -1;
+  for_each_angle(k, [&](int a, double e1sq) {
+    values[a] = weight_sq_[a] * e1sq;
+    if (values[a] > worst * (1 + 1e-12)) {  // ties (symmetric patterns) go to the first angle
+      worst = values[a];
+      r.worst_angle = a;
+    }
+  });
+  r.e2 = combine_over_angles(values, norm_);
+  return r;
+}
+
+PatternError Metric::evaluate(const Pattern& p) const {
+  PatternError r;
+  r.e2 = -1;
+  for (int k = 0; k < p.set_count(); ++k) {
+    const KernelError e = kernel_error(make_kernel(p, k));
+    if (!std::isfinite(e.e2))
+      throw Error(
+          fmt::format("pattern {}: E2 of kernel {} is {}, not a finite number", p.name, k, e.e2));
+    r.kernel_e2.push_back(e.e2);
+    if (e.e2 > r.e2) {
+      r.e2 = e.e2;
+      r.worst_kernel = k;
+      r.worst_angle_deg = acuity_.angles_deg[e.worst_angle];
+    }
+  }
+  return r;
+}
+
+}  // namespace aapat

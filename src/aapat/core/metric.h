@@ -1,0 +1,98 @@
+// The weighted error metric of Laine & Aila Sec. 4.
+//
+// E1 (Eq. 4) compares the step response of a 1D pattern, ghat0(a) = sum of
+// the weights of the samples at or left of a, with the filter's g0(a):
+//   E1^2 = int (ghat0(a) - g0(a))^2 da.
+// For weights summing to 1 this integral has the closed form (the 1D energy
+// identity; derivation in docs/metric.md)
+//   E1^2 = sum_j w_j J(p_j) - sum_{j<k} w_j w_k |p_j - p_k| - (1/2) E|S - T|,
+// with J(p) = int |p - t| h(t) dt, tabulated exactly per filter. No sort and
+// no small steps in a; `e1_squared_piecewise` integrates piece by piece
+// between the sorted samples instead, as a cross-check.
+//
+// E1(theta) projects a 2D kernel on the normal (-sin theta, cos theta) of an
+// edge of direction theta; E2 = max over the acuity table's angles of
+// W(theta) E1(theta) (Eq. 5), or their L_p mean, and max over kernels.
+#pragma once
+
+#include <limits>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "aapat/core/acuity.h"
+#include "aapat/core/filter.h"
+#include "aapat/core/pattern.h"
+
+namespace aapat {
+
+// Kernels up to this size sum over pairs; larger ones sort, O(N log N).
+inline constexpr size_t kPairwiseLimit = 24;
+
+// E1^2 of a 1D pattern whose weights sum to 1, in closed form.
+double e1_squared(const Filter& filter, std::span<const double> p, std::span<const double> w);
+// The same integral, sorted and integrated piece by piece with the filter's
+// exact antiderivatives; slower, used to check the closed form.
+double e1_squared_piecewise(const Filter& filter, std::span<const double> p,
+                            std::span<const double> w);
+
+// The combination over angles of one kernel's W^2 E1^2 values: the maximum
+// (p = infinity, Laine-Aila Eq. 5) or the L_p mean ((1/M) sum (W E1)^p)^(1/p),
+// computed scaled by the largest term so that no p over- or underflows.
+// The one place the metric and the optimizer combine angles.
+double combine_over_angles(std::span<const double> weighted_e1_squared, double norm);
+
+// "inf" for the maximum, else p as written shortest ("2", "2.5").
+std::string format_norm(double norm);
+// Reads "inf" / "infinity" or a number in [1, kMaxFiniteNorm]; `what` names the input in errors.
+double parse_norm(std::string_view text, std::string_view what);
+
+struct KernelError {
+  double e2 = 0;        // the combined weighted error over angles
+  int worst_angle = 0;  // index into the acuity table of the largest W E1
+};
+
+struct PatternError {
+  double e2 = 0;  // max over kernels
+  int worst_kernel = 0;
+  double worst_angle_deg = 0;  // edge direction of the worst kernel's largest W E1
+  std::vector<double> kernel_e2;
+};
+
+class Metric {
+ public:
+  static constexpr double kMaxNorm = std::numeric_limits<double>::infinity();
+
+  // norm: p of the L_p mean over angles, ((1/M) sum (W E1)^p)^(1/p); infinity
+  // (the default, Laine-Aila Eq. 5) is the maximum. Finite p up to kMaxFiniteNorm.
+  static constexpr double kMaxFiniteNorm = 1e6;
+  Metric(Filter filter, AcuityTable acuity, double norm = kMaxNorm);
+
+  const Filter& filter() const { return filter_; }
+  const AcuityTable& acuity() const { return acuity_; }
+  double norm() const { return norm_; }
+  int angle_count() const { return static_cast<int>(cos_.size()); }
+  double cos(int angle) const { return cos_[angle]; }
+  double sin(int angle) const { return sin_[angle]; }
+  double weight_sq(int angle) const { return weight_sq_[angle]; }
+
+  // The per-angle profile W(theta) E1(theta).
+  std::vector<double> profile(const Kernel& k) const;
+  KernelError kernel_error(const Kernel& k) const;
+  PatternError evaluate(const Pattern& p) const;
+
+ private:
+  // E1^2 at one angle; proj has room for the kernel's projections.
+  double e1_squared_at(const Kernel& k, int angle, double* proj) const;
+  // Calls visit(angle index, E1^2) for every angle of the table.
+  template <class Visit>
+  void for_each_angle(const Kernel& k, Visit&& visit) const;
+
+  Filter filter_;
+  AcuityTable acuity_;
+  double norm_;
+  std::vector<double> cos_, sin_, weight_sq_;
+};
+
+}  // namespace aapat

@@ -1,0 +1,210 @@
+#include "aapat/generate/point_generators.h"
+#include "testing/error_message.h"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+
+namespace aapat {
+namespace {
+
+bool in_unit_square(const std::vector<Vec2>& p) {
+  for (const Vec2& v : p)
+    if (!(v.x >= 0 && v.x < 1 && v.y >= 0 && v.y < 1)) return false;
+  return true;
+}
+
+RC_GTEST_PROP(Generators, NRooksHasOnePointPerRowAndColumn, ()) {
+  const int n = *rc::gen::inRange(1, 200);
+  const auto p = generate_points("n-rooks", n, *rc::gen::arbitrary<uint64_t>());
+  std::set<int> rows, cols;
+  for (const Vec2& v : p) {
+    rows.insert(static_cast<int>(v.y * n));
+    cols.insert(static_cast<int>(v.x * n));
+  }
+  RC_ASSERT(rows.size() == static_cast<size_t>(n));
+  RC_ASSERT(cols.size() == static_cast<size_t>(n));
+}
+
+RC_GTEST_PROP(Generators, JitteredHasOnePointPerStratum, ()) {
+  const int k = *rc::gen::inRange(1, 20);
+  const auto p = generate_points("jittered", k * k, *rc::gen::arbitrary<uint64_t>());
+  std::set<std::pair<int, int>> strata;
+  for (const Vec2& v : p) strata.insert({static_cast<int>(v.x * k), static_cast<int>(v.y * k)});
+  RC_ASSERT(strata.size() == static_cast<size_t>(k * k));
+  RC_ASSERT(in_unit_square(p));
+}
+
+// Goss & Wu Table 6 sizes: no two queens share a row, column or diagonal.
+TEST(Generators, NQueensAvoidRowsColumnsAndDiagonals) {
+  for (int n : {4, 5, 8, 9, 16}) {
+    const auto p = generate_points("n-queens", n, 0);
+    ASSERT_EQ(static_cast<int>(p.size()), n);
+    std::set<int> rows, cols, d1, d2;
+    for (const Vec2& v : p) {
+      const int c = static_cast<int>(v.x * n), r = static_cast<int>(v.y * n);
+      EXPECT_NEAR(v.x, (c + 0.5) / n, 1e-12);  // cell centres
+      rows.insert(r), cols.insert(c), d1.insert(r + c), d2.insert(r - c);
+    }
+    EXPECT_EQ(rows.size(), size_t(n));
+    EXPECT_EQ(cols.size(), size_t(n));
+    EXPECT_EQ(d1.size(), size_t(n));
+    EXPECT_EQ(d2.size(), size_t(n));
+  }
+  EXPECT_EQ(n_queens_solutions(8, 1000000).size(), 92u);  // the classic count
+  EXPECT_EQ(n_queens_solutions(4, 100).size(), 2u);
+  EXPECT_THROW(generate_points("n-queens", 3, 0), Error);  // none for N = 3
+}
+
+RC_GTEST_PROP(Generators, PoissonDiskKeepsItsMinimumDistance, ()) {
+  const int n = *rc::gen::inRange(2, 120);
+  const double r = 0.6 * std::sqrt(2 / (std::sqrt(3.0) * n));
+  const auto p =
+      generate_points("poisson:radius=" + std::to_string(r), n, *rc::gen::arbitrary<uint64_t>());
+  RC_ASSERT(p.size() == static_cast<size_t>(n));
+  for (size_t i = 0; i < p.size(); ++i)
+    for (size_t j = 0; j < i; ++j) {
+      double dx = std::abs(p[i].x - p[j].x), dy = std::abs(p[i].y - p[j].y);
+      dx = std::min(dx, 1 - dx), dy = std::min(dy, 1 - dy);  // on the torus
+      RC_ASSERT(std::hypot(dx, dy) >= r * (1 - 1e-12));
+    }
+}
+
+TEST(Generators, MaximalPoissonCannotTakeAnotherDart) {
+  const double r = 0.1;
+  const auto p = generate_points("poisson-maximal:radius=0.1", 100, 5);
+  EXPECT_GT(p.size(), 40u);  // random sequential packing fills well past half the densest
+  int free_spots = 0;
+  for (int i = 0; i < 200; ++i)
+    for (int j = 0; j < 200; ++j) {
+      const Vec2 c{(i + 0.5) / 200, (j + 0.5) / 200};
+      bool ok = true;
+      for (const Vec2& q : p) {
+        double dx = std::abs(q.x - c.x), dy = std::abs(q.y - c.y);
+        dx = std::min(dx, 1 - dx), dy = std::min(dy, 1 - dy);
+        ok = ok && std::hypot(dx, dy) >= r;
+      }
+      free_spots += ok;
+    }
+  EXPECT_LT(free_spots, 200 * 200 / 500);  // almost no room left
+}
+
+// Radical inverses (Pelikan): g_2(1) = 1/2, g_2(2) = 1/4, g_2(3) = 3/4, g_3(1) = 1/3, ...
+TEST(Generators, HaltonAndHammersleyMatchTheRadicalInverse) {
+  EXPECT_DOUBLE_EQ(radical_inverse(1, 2), 0.5);
+  EXPECT_DOUBLE_EQ(radical_inverse(2, 2), 0.25);
+  EXPECT_DOUBLE_EQ(radical_inverse(3, 2), 0.75);
+  EXPECT_DOUBLE_EQ(radical_inverse(6, 2), 0.375);
+  EXPECT_DOUBLE_EQ(radical_inverse(1, 3), 1.0 / 3);
+  EXPECT_DOUBLE_EQ(radical_inverse(5, 3), 2.0 / 3 + 1.0 / 9);  // 5 = 12 in base 3
+  const auto h = generate_points("halton", 4, 0);
+  EXPECT_DOUBLE_EQ(h[2].x, 0.75);
+  EXPECT_DOUBLE_EQ(h[2].y, 1.0 / 9);
+  const auto m = generate_points("hammersley", 8, 0);
+  EXPECT_DOUBLE_EQ(m[3].x, 3.0 / 8);
+  EXPECT_DOUBLE_EQ(m[3].y, 0.75);
+  EXPECT_DOUBLE_EQ(generate_points("halton:b1=3,b2=5", 2, 0)[1].y, 2.0 / 5);
+}
+
+// Larcher-Pillichshammer with x = i / 2^m is a (0, m, 2)-net: every
+// elementary interval of area 2^-m holds exactly one point.
+TEST(Generators, LarcherPillichshammerIsAZeroMTwoNet) {
+  const int m = 8, n = 1 << m;
+  const auto p = generate_points("larcher-pillichshammer", n, 0);
+  for (int a = 0; a <= m; ++a) {
+    std::set<std::pair<int, int>> cells;
+    for (const Vec2& v : p)
+      cells.insert({static_cast<int>(v.x * (1 << a)), static_cast<int>(v.y * (1 << (m - a)))});
+    EXPECT_EQ(cells.size(), static_cast<size_t>(n)) << "intervals 2^-" << a << " x 2^-" << m - a;
+  }
+}
+
+TEST(Generators, EveryGeneratorStaysInTheSquareAndIsDeterministic) {
+  for (const auto& g : generator_catalog()) {
+    const std::string name = g.spec.substr(0, g.spec.find(':'));
+    const int n = name == "n-queens" ? 8 : 64;
+    const auto a = generate_points(name, n, 11), b = generate_points(name, n, 11);
+    EXPECT_TRUE(in_unit_square(a)) << name;
+    EXPECT_EQ(a, b) << name;
+  }
+}
+
+TEST(Generators, BadSpecsAreNamed) {
+  auto msg = [](const std::string& spec, int n) {
+    return testing::error_message([&] { generate_points(spec, n, 0); });
+  };
+  EXPECT_EQ(msg("jitter", 4).find("unknown generator 'jitter': known generators are regular, "),
+            0u);
+  EXPECT_EQ(msg("jittered", 5), "jittered: n = 5 must be a square number (k x k strata)");
+  EXPECT_EQ(msg("halton:b1=4.5", 5), "generator halton: b1 = 4.5 must be a whole base 2..64");
+  EXPECT_EQ(msg("semi-jittered:amount=2", 4), "semi-jittered: amount = 2 is out of range [0, 1]");
+  EXPECT_EQ(msg("random:q=1", 4), "generator random: unknown parameter 'q=1'");
+  EXPECT_EQ(msg("random", 0), "random: n = 0 is out of range 1..1000000");
+  EXPECT_NE(
+      msg("poisson:radius=0.5", 50).find("of 50 points fit at radius 0.5; use a smaller radius"),
+      std::string::npos);
+}
+
+}  // namespace
+}  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// The grid search finds the same farthest candidates as a plain search over
+// every point (same random stream, same points).
+RC_GTEST_PROP(Generators, BestCandidateMatchesBruteForce, ()) {
+  const int n = *rc::gen::inRange(1, 80);
+  const uint64_t seed = *rc::gen::arbitrary<uint64_t>();
+  const auto fast = generate_points("best-candidate:q=3", n, seed);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  auto dist = [](Vec2 a, Vec2 b) {
+    double dx = std::abs(a.x - b.x), dy = std::abs(a.y - b.y);
+    return std::hypot(std::min(dx, 1 - dx), std::min(dy, 1 - dy));
+  };
+  std::vector<Vec2> slow;
+  for (int i = 0; i < n; ++i) {
+    auto nearest = [&](Vec2 c) {
+      double d = INFINITY;
+      for (const Vec2& e : slow) d = std::min(d, dist(e, c));
+      return i > 0 ? d : 0.0;
+    };
+    Vec2 best{u(rng), u(rng)};
+    double best_d = nearest(best);
+    for (int t = 1; t < std::max(1, 3 * i); ++t) {
+      const Vec2 c{u(rng), u(rng)};
+      if (nearest(c) > best_d) best_d = nearest(c), best = c;
+    }
+    slow.push_back(best);
+  }
+  RC_ASSERT(fast == slow);
+}
+
+}  // namespace
+}  // namespace aapat
+
+namespace aapat {
+namespace {
+
+TEST(Generators, PixelPointsDependOnlyOnSeedAndPixel) {
+  const auto a = pixel_points("jittered", 4, 7, 10, 3);
+  EXPECT_EQ(a, pixel_points("jittered", 4, 7, 10, 3));
+  EXPECT_NE(a, pixel_points("jittered", 4, 7, 3, 10));
+  EXPECT_NE(a, pixel_points("jittered", 4, 8, 10, 3));
+  for (const Vec2& v : a) EXPECT_TRUE(v.x >= -0.5 && v.x < 0.5 && v.y >= -0.5 && v.y < 0.5);
+}
+
+TEST(Generators, TilePatternIsAValidPs1n) {
+  const Pattern p = tile_pattern("n-rooks", 3, 5, 2);
+  EXPECT_NO_THROW(validate(p));
+  EXPECT_EQ(family(p), "P(4,1,3)");
+  EXPECT_EQ(p.sets[1], pixel_points("n-rooks", 3, 5, 1, 0));
+  EXPECT_THROW(tile_pattern("n-rooks", 3, 5, 0), Error);
+}
+
+}  // namespace
+}  // namespace aapat

@@ -1,0 +1,33 @@
+// What a programmer pastes into code: a hardware layout as the API's sample
+// position array (its units, its order, its pixel grid) and a resolve
+// function (HLSL, GLSL or the Metal shading language) that reads the samples
+// each output pixel's kernel needs, its neighbours' shared samples included,
+// and applies the weights. The first line is machine-readable, and the
+// arrays are printed exactly, so `aapat import` reads the text back.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "aapat/core/hardware_layout.h"
+
+namespace aapat {
+
+enum class ShaderLanguage { kHlsl, kGlsl, kMsl };
+
+ShaderLanguage default_shader(const ApiProfile& profile);  // HLSL, GLSL (Vulkan, GL), MSL
+ShaderLanguage parse_shader_language(std::string_view name);
+
+// `notes`: comment lines placed under the header (E2, cost, provenance).
+std::string export_layout(const HardwareLayout& layout, ShaderLanguage shader,
+                          const std::vector<std::string>& notes = {});
+
+// The numbers of a C-like initializer: comments, identifiers (int3, the f of
+// 0.5f) and punctuation skipped.
+std::vector<double> numbers_in(std::string_view code);
+
+// Reads an exported text back; `source` names it in error messages.
+HardwareLayout parse_export(std::string_view text, std::string_view source);
+
+}  // namespace aapat

@@ -1,0 +1,245 @@
+#include "aapat/io/atomic_file.h"
+
+#include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <vector>
+
+#include "aapat/core/geometry.h"
+
+namespace aapat {
+namespace {
+
+// Temporary files in flight, for the signal handler: fixed slots it can read
+// without locking. Past the slots a temporary is still removed on error, only
+// not on a signal.
+constexpr size_t kSignalSlots = 1024;
+std::array<std::atomic<char*>, kSignalSlots> g_in_flight{};
+
+void track_temporary(const std::string& tmp) {
+  char* copy = strdup(tmp.c_str());
+  for (auto& slot : g_in_flight) {
+    char* expected = nullptr;
+    if (slot.compare_exchange_strong(expected, copy)) return;
+  }
+  std::free(copy);
+}
+
+void untrack_temporary(const std::string& tmp) {
+  for (auto& slot : g_in_flight) {
+    char* p = slot.load();
+    if (p && tmp == p && slot.compare_exchange_strong(p, nullptr)) {
+      std::free(p);
+      return;
+    }
+  }
+}
+
+extern "C" void remove_temporaries_and_reraise(int sig) {
+  for (auto& slot : g_in_flight)
+    if (const char* p = slot.load()) ::unlink(p);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+struct Staged {
+  std::string path, tmp;
+};
+
+// The open transaction's state; guarded by g_mutex.
+std::mutex g_mutex;
+bool g_open = false;
+std::vector<Staged> g_staged;
+std::vector<std::string> g_created_now;   // deleted on rollback
+std::vector<std::string> g_created_dirs;  // removed on rollback when empty, deepest first
+std::atomic<unsigned long> g_counter{0};
+
+std::string temporary_name(const std::string& path) {
+  return fmt::format("{}.tmp.{}.{}", path, static_cast<long>(::getpid()), g_counter++);
+}
+
+void remove_temporary(const std::string& tmp) {
+  std::remove(tmp.c_str());
+  untrack_temporary(tmp);
+}
+
+// Writes the content beside the target; returns the temporary's name.
+std::string write_temporary(const std::string& path, std::string_view content) {
+  const std::string tmp = temporary_name(path);
+  track_temporary(tmp);
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  if (!out) {
+    const int err = errno;
+    untrack_temporary(tmp);
+    throw Error(fmt::format("cannot write '{}': {}", path, std::strerror(err)));
+  }
+  out.write(content.data(), static_cast<std::streamsize>(content.size()));
+  out.flush();
+  if (!out) {
+    out.close();
+    remove_temporary(tmp);
+    throw Error(fmt::format("cannot write '{}': write failed (disk full?)", path));
+  }
+  return tmp;
+}
+
+void rename_into_place(const std::string& tmp, const std::string& path) {
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    remove_temporary(tmp);
+    throw Error(fmt::format("cannot write '{}': {}", path, std::strerror(err)));
+  }
+  untrack_temporary(tmp);
+}
+
+bool exists(const std::string& path) {
+  struct stat st;
+  return ::stat(path.c_str(), &st) == 0;
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, std::string_view content) {
+  const std::string tmp = write_temporary(path, content);
+  {
+    const std::lock_guard lock(g_mutex);
+    if (g_open) {
+      g_staged.push_back({path, tmp});
+      return;
+    }
+  }
+  rename_into_place(tmp, path);
+}
+
+void write_file_now(const std::string& path, std::string_view content, bool keep_on_rollback) {
+  const bool existed = exists(path);
+  const std::string tmp = write_temporary(path, content);
+  rename_into_place(tmp, path);
+  const std::lock_guard lock(g_mutex);
+  if (g_open && !existed && !keep_on_rollback) g_created_now.push_back(path);
+}
+
+std::string read_file(const std::string& path, std::string_view what, size_t max_bytes) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status))
+    throw Error(fmt::format("cannot read {} '{}': no such file", what, path));
+  if (std::filesystem::is_directory(status))
+    throw Error(fmt::format("cannot read {} '{}': it is a folder, not a file", what, path));
+  if (!std::filesystem::is_regular_file(status))
+    throw Error(fmt::format("cannot read {} '{}': not a regular file", what, path));
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && size > max_bytes)
+    throw Error(fmt::format("cannot read {} '{}': {} bytes exceed the limit of {} bytes", what,
+                            path, size, max_bytes));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(fmt::format("cannot read {} '{}': {}", what, path, std::strerror(errno)));
+  std::ostringstream s;
+  s << in.rdbuf();
+  if (in.bad()) throw Error(fmt::format("cannot read {} '{}': read failed", what, path));
+  return s.str();
+}
+
+void ensure_directory(const std::string& path, std::string_view what) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::exists(status)) {
+    if (!std::filesystem::is_directory(status))
+      throw Error(fmt::format("{} '{}': exists and is not a folder", what, path));
+  } else {
+    // The folders this call makes, deepest first, for a rollback to remove.
+    std::vector<std::string> made;
+    for (std::filesystem::path p = std::filesystem::absolute(path, ec);
+         !p.empty() && !std::filesystem::exists(p, ec); p = p.parent_path()) {
+      made.push_back(p.string());
+      if (p == p.parent_path()) break;
+    }
+    std::filesystem::create_directories(path, ec);
+    if (ec) throw Error(fmt::format("{} '{}': cannot create it: {}", what, path, ec.message()));
+    const std::lock_guard lock(g_mutex);
+    if (g_open) g_created_dirs.insert(g_created_dirs.end(), made.begin(), made.end());
+  }
+  if (::access(path.c_str(), W_OK | X_OK) != 0)
+    throw Error(fmt::format("{} '{}': cannot write into it: {}", what, path, std::strerror(errno)));
+}
+
+void check_directory_target(const std::string& path, std::string_view what) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) return;
+  if (!std::filesystem::is_directory(status))
+    throw Error(fmt::format("{} '{}': exists and is not a folder", what, path));
+  if (::access(path.c_str(), W_OK | X_OK) != 0)
+    throw Error(fmt::format("{} '{}': cannot write into it: {}", what, path, std::strerror(errno)));
+}
+
+OutputTransaction::OutputTransaction() {
+  const std::lock_guard lock(g_mutex);
+  if (g_open) throw Error("internal: an output transaction is already open");
+  g_open = true;
+  g_staged.clear();
+  g_created_now.clear();
+  g_created_dirs.clear();
+}
+
+OutputTransaction::~OutputTransaction() {
+  const std::lock_guard lock(g_mutex);
+  if (!g_open) return;
+  for (const Staged& s : g_staged) remove_temporary(s.tmp);
+  for (const std::string& path : g_created_now) std::remove(path.c_str());
+  // Deepest first (longest path), so a parent is empty when its turn comes.
+  std::sort(g_created_dirs.begin(), g_created_dirs.end(),
+            [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+  for (const std::string& dir : g_created_dirs) ::rmdir(dir.c_str());  // only if empty
+  g_staged.clear();
+  g_created_now.clear();
+  g_created_dirs.clear();
+  g_open = false;
+}
+
+void OutputTransaction::commit() {
+  std::vector<Staged> staged;
+  {
+    const std::lock_guard lock(g_mutex);
+    staged.swap(g_staged);
+    g_created_now.clear();
+    g_created_dirs.clear();
+    g_open = false;
+  }
+  // A path written twice keeps its last content.
+  for (size_t i = 0; i < staged.size(); ++i) {
+    bool superseded = false;
+    for (size_t j = i + 1; j < staged.size(); ++j) superseded |= staged[j].path == staged[i].path;
+    if (superseded) {
+      remove_temporary(staged[i].tmp);
+      continue;
+    }
+    try {
+      rename_into_place(staged[i].tmp, staged[i].path);
+    } catch (const Error&) {
+      for (size_t j = i + 1; j < staged.size(); ++j) remove_temporary(staged[j].tmp);
+      throw;
+    }
+  }
+}
+
+void remove_temporaries_on_signals() {
+  struct sigaction action {};
+  action.sa_handler = remove_temporaries_and_reraise;
+  sigemptyset(&action.sa_mask);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &action, nullptr);
+}
+
+}  // namespace aapat

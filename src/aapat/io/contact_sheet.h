@@ -1,0 +1,27 @@
+// A contact sheet: images in a labelled grid (rows x columns) with a caption
+// under each, drawn into one grey raster (Goss & Wu Figs. 9-20 side by side).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "aapat/io/bitmap_font.h"
+
+namespace aapat {
+
+struct SheetCell {
+  int width = 0, height = 0;
+  std::vector<uint8_t> pixels;  // rows top-down
+  std::string caption;          // one line under the image
+};
+
+struct ContactSheet {
+  std::string title;
+  std::vector<std::string> row_labels, column_labels;
+  std::vector<SheetCell> cells;  // row by row
+  int zoom = 1;                  // each image pixel drawn as zoom x zoom
+};
+
+GreyRaster compose_sheet(const ContactSheet& sheet);
+
+}  // namespace aapat

@@ -1,0 +1,13 @@
+#include "aapat/io/json_report.h"
+
+namespace aapat {
+
+JsonObject json_report(std::string_view command) {
+  return JsonObject{{"command", std::string(command)}, {"schema", kJsonSchema}};
+}
+
+std::string json_text(const JsonObject& doc) {
+  return doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace aapat

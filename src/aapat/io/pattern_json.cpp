@@ -1,0 +1,199 @@
+#include "aapat/io/pattern_json.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "aapat/generate/catalog.h"
+#include "aapat/io/atomic_file.h"
+
+namespace aapat {
+namespace {
+
+using json = nlohmann::ordered_json;  // keeps the file's key order
+
+constexpr std::string_view kFormat = "aapat-pattern";
+constexpr int kVersion = 1;
+constexpr int kPerLine = 4;  // samples (or 2 x weights) per line
+
+std::string number(double v) {
+  return json(v).dump();
+}
+
+std::string json_string(std::string_view s) {
+  return json(std::string(s)).dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+[[noreturn]] void fail(std::string_view source, const std::string& message) {
+  throw Error(fmt::format("pattern file {}: {}", source, message));
+}
+
+double get_number(const json& v, std::string_view source, const std::string& field) {
+  if (!v.is_number()) fail(source, field + ": expected a number");
+  return v.get<double>();
+}
+
+}  // namespace
+
+std::string pattern_to_json(const Pattern& p) {
+  std::string out = "{\n";
+  out += fmt::format("  \"format\": {},\n  \"version\": {},\n", json_string(kFormat), kVersion);
+  out += fmt::format("  \"name\": {},\n", json_string(p.name));
+  out += fmt::format("  \"description\": {},\n", json_string(p.description));
+  out += fmt::format("  \"family\": {},\n", json_string(family(p)));
+  out += fmt::format("  \"tile\": [{}, {}],\n", p.tile_w, p.tile_h);
+  out += fmt::format("  \"footprint\": {},\n", json_string(p.footprint.text()));
+  out += "  \"sets\": [\n";
+  for (size_t k = 0; k < p.sets.size(); ++k) {
+    out += "    [";
+    for (size_t i = 0; i < p.sets[k].size(); ++i) {
+      if (i > 0) out += i % kPerLine == 0 ? ",\n     " : ", ";
+      out += fmt::format("[{}, {}]", number(p.sets[k][i].x), number(p.sets[k][i].y));
+    }
+    out += k + 1 < p.sets.size() ? "],\n" : "]\n";
+  }
+  out += "  ],\n  \"kernels\": [\n";
+  for (size_t k = 0; k < p.weights.size(); ++k) {
+    out += "    [";
+    for (size_t i = 0; i < p.weights[k].size(); ++i) {
+      if (i > 0) out += i % (2 * kPerLine) == 0 ? ",\n     " : ", ";
+      out += number(p.weights[k][i]);
+    }
+    out += k + 1 < p.weights.size() ? "],\n" : "]\n";
+  }
+  out += "  ],\n  \"provenance\": {";
+  for (size_t i = 0; i < p.provenance.size(); ++i)
+    out += fmt::format("{}\n    {}: {}", i ? "," : "", json_string(p.provenance[i].first),
+                       json_string(p.provenance[i].second));
+  out += p.provenance.empty() ? "}\n}\n" : "\n  }\n}\n";
+  return out;
+}
+
+Pattern pattern_from_json(std::string_view text, std::string_view source) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::exception& e) {  // parse errors and number overflow
+    fail(source, fmt::format("not valid JSON: {}", e.what()));
+  }
+  if (!doc.is_object()) fail(source, "expected a JSON object at the top level");
+  static const std::vector<std::string> kKeys = {"format",  "version",   "name",      "description",
+                                                 "family",  "tile",      "footprint", "sets",
+                                                 "kernels", "provenance"};
+  for (const auto& [key, value] : doc.items())
+    if (std::find(kKeys.begin(), kKeys.end(), key) == kKeys.end())
+      fail(source, fmt::format("{}: unknown field (known: format, version, name, description, "
+                               "family, tile, footprint, sets, kernels, provenance)",
+                               key));
+  for (const char* key : {"format", "version", "name", "tile", "footprint", "sets", "kernels"})
+    if (!doc.contains(key)) fail(source, fmt::format("{}: missing", key));
+  if (doc["format"] != kFormat)
+    fail(source, fmt::format("format: expected \"{}\", got {}", kFormat, doc["format"].dump()));
+  if (doc["version"] != kVersion)
+    fail(source, fmt::format("version: {} is not supported (this aapat reads version {})",
+                             doc["version"].dump(), kVersion));
+
+  Pattern p;
+  if (!doc["name"].is_string()) fail(source, "name: expected a string");
+  p.name = doc["name"].get<std::string>();
+  if (doc.contains("description")) {
+    if (!doc["description"].is_string()) fail(source, "description: expected a string");
+    p.description = doc["description"].get<std::string>();
+  }
+  const json& tile = doc["tile"];
+  if (!tile.is_array() || tile.size() != 2 || !tile[0].is_number_integer() ||
+      !tile[1].is_number_integer())
+    fail(source, "tile: expected [width, height] in pixels");
+  // Range-check before narrowing: a huge integer must not wrap into a valid size.
+  for (int i = 0; i < 2; ++i)
+    if (tile[i].get<long long>() < 0 || tile[i].get<long long>() > 1'000'000)
+      fail(source, fmt::format("tile: {}x{} is not a tile size: each side must be 1 to 128 pixels",
+                               tile[0].dump(), tile[1].dump()));
+  p.tile_w = tile[0].get<int>();
+  p.tile_h = tile[1].get<int>();
+  if (!doc["footprint"].is_string()) fail(source, "footprint: expected a string such as \"1+\"");
+  try {
+    p.footprint = parse_footprint(doc["footprint"].get<std::string>());
+  } catch (const Error& e) {
+    fail(source, e.what());
+  }
+  const json& sets = doc["sets"];
+  if (!sets.is_array()) fail(source, "sets: expected an array of sample sets");
+  // Sizes before copying: validate() names the exact rule later.
+  if (sets.size() > static_cast<size_t>(kMaxTileSide) * kMaxTileSide)
+    fail(source, fmt::format("sets: {} sets exceed the largest tile, {}x{}", sets.size(),
+                             kMaxTileSide, kMaxTileSide));
+  for (size_t k = 0; k < sets.size(); ++k) {
+    if (!sets[k].is_array()) fail(source, fmt::format("sets[{}]: expected an array of [x, y]", k));
+    if (sets[k].size() > kMaxSamplesPerSet)
+      fail(source, fmt::format("sets[{}]: {} samples exceed the limit of {} per pixel", k,
+                               sets[k].size(), kMaxSamplesPerSet));
+    std::vector<Vec2> set;
+    for (size_t i = 0; i < sets[k].size(); ++i) {
+      const json& s = sets[k][i];
+      const std::string field = fmt::format("sets[{}][{}]", k, i);
+      if (!s.is_array() || s.size() != 2) fail(source, field + ": expected [x, y]");
+      set.push_back(
+          {get_number(s[0], source, field + ".x"), get_number(s[1], source, field + ".y")});
+    }
+    p.sets.push_back(std::move(set));
+  }
+  const json& kernels = doc["kernels"];
+  if (!kernels.is_array()) fail(source, "kernels: expected an array of weight lists");
+  if (kernels.size() > sets.size())
+    fail(source, fmt::format("kernels: {} kernels for {} sets (one per pixel)", kernels.size(),
+                             sets.size()));
+  for (size_t k = 0; k < kernels.size(); ++k) {
+    if (!kernels[k].is_array())
+      fail(source, fmt::format("kernels[{}]: expected an array of weights", k));
+    if (kernels[k].size() > 16 * kMaxSamplesPerSet)
+      fail(source, fmt::format("kernels[{}]: {} weights exceed what any kernel reads", k,
+                               kernels[k].size()));
+    std::vector<double> w;
+    for (size_t i = 0; i < kernels[k].size(); ++i)
+      w.push_back(get_number(kernels[k][i], source, fmt::format("kernels[{}][{}]", k, i)));
+    p.weights.push_back(std::move(w));
+  }
+  if (doc.contains("provenance")) {
+    const json& prov = doc["provenance"];
+    if (!prov.is_object()) fail(source, "provenance: expected an object of strings");
+    for (const auto& [key, value] : prov.items()) {
+      if (!value.is_string()) fail(source, fmt::format("provenance.{}: expected a string", key));
+      p.provenance.emplace_back(key, value.get<std::string>());
+    }
+  }
+  try {
+    validate(p);
+  } catch (const Error& e) {
+    fail(source, e.what());
+  }
+  if (doc.contains("family")) {
+    if (!doc["family"].is_string()) fail(source, "family: expected a string such as \"P(4,1+,2)\"");
+    const std::string computed = family(p);
+    if (doc["family"].get<std::string>() != computed)
+      fail(source, fmt::format("family: the file says {} but its samples make {}",
+                               doc["family"].get<std::string>(), computed));
+  }
+  return p;
+}
+
+Pattern load_pattern_file(const std::string& path) {
+  return pattern_from_json(read_file(path, "pattern file"), path);
+}
+
+void save_pattern_file(const Pattern& p, const std::string& path) {
+  validate(p);
+  write_file_atomically(path, pattern_to_json(p));
+}
+
+Pattern resolve_pattern(const std::string& name_or_path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(name_or_path, ec))
+    throw Error(fmt::format("pattern '{}': it is a folder, not a pattern file", name_or_path));
+  if (name_or_path.ends_with(".json") || std::filesystem::is_regular_file(name_or_path, ec))
+    return load_pattern_file(name_or_path);
+  return catalog_pattern(name_or_path);
+}
+
+}  // namespace aapat

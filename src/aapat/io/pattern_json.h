@@ -1,0 +1,23 @@
+// The pattern file: human-readable JSON that round-trips byte for byte.
+// Layout and rules: docs/pattern-format.md.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "aapat/core/pattern.h"
+
+namespace aapat {
+
+std::string pattern_to_json(const Pattern& p);
+// `source` names the text in error messages (a file name). Validates.
+Pattern pattern_from_json(std::string_view text, std::string_view source);
+
+Pattern load_pattern_file(const std::string& path);
+void save_pattern_file(const Pattern& p, const std::string& path);
+
+// A catalog name or a path to a pattern file (anything ending in .json or
+// naming an existing file).
+Pattern resolve_pattern(const std::string& name_or_path);
+
+}  // namespace aapat

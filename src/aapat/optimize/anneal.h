@@ -1,0 +1,16 @@
+// Simulated annealing over the same parameters, the standard alternative that
+// Laine & Aila (Sec. 5) report stalls once several terms sit near the maximum.
+// Kept selectable (`--method anneal`) so the two can be compared on the same starts.
+#pragma once
+
+#include <random>
+
+#include "aapat/optimize/objective.h"
+#include "aapat/optimize/settings.h"
+
+namespace aapat {
+
+RunResult anneal(const Objective& objective, Problem& problem, const OptimizerSettings& settings,
+                 std::mt19937_64& rng);
+
+}  // namespace aapat

@@ -1,0 +1,119 @@
+#include "aapat/optimize/lattice_search.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "aapat/core/lattice.h"
+#include "aapat/optimize/descent.h"
+#include "aapat/optimize/family.h"
+#include "aapat/optimize/objective.h"
+
+namespace aapat {
+namespace {
+
+constexpr int kReach = 2;       // lattice steps a generator may move at once
+constexpr size_t kWeighed = 4;  // moves tried with their weights optimized, per step
+
+bool can_take(double v, double limit, int steps) {
+  return std::abs(v) <= std::min(limit, (steps / 2 - 1) / double(steps)) + 1e-12;
+}
+
+}  // namespace
+
+LatticeRun lattice_descent(const Metric& metric, Problem& problem, int steps,
+                           const OptimizerSettings& settings) {
+  const Objective objective(metric);
+  Workspace ws;
+  const bool borders = problem.layout.footprint.plus;
+  for (Generator& g : problem.generators) g.pos = snap_sample(g.pos, steps, borders);
+  LatticeRun run;
+  run.snapped_e2 = objective.e2(problem, ws);
+  double e2 = optimize_weights(objective, problem, settings);
+  const double h = 1.0 / steps;
+  struct Move {
+    double e2;
+    int generator;
+    Vec2 pos;
+  };
+  std::vector<Move> moves;
+  for (;;) {
+    // Every move of one generator by up to kReach steps, ranked with the current weights.
+    moves.clear();
+    for (size_t gi = 0; gi < problem.generators.size(); ++gi) {
+      Generator& g = problem.generators[gi];
+      if (g.freedom == Freedom::kFixed) continue;
+      const Vec2 at = g.pos;
+      for (int dy = -kReach; dy <= kReach; ++dy)
+        for (int dx = -kReach; dx <= kReach; ++dx) {
+          if ((dx == 0 && dy == 0) || (g.freedom == Freedom::kSlideX && dy != 0) ||
+              (g.freedom == Freedom::kSlideY && dx != 0))
+            continue;
+          const Vec2 to{at.x + dx * h, at.y + dy * h};
+          if ((dx != 0 && !can_take(to.x, g.limit, steps)) ||
+              (dy != 0 && !can_take(to.y, g.limit, steps)))
+            continue;
+          g.pos = to;
+          moves.push_back({objective.e2(problem, ws), static_cast<int>(gi), to});
+        }
+      g.pos = at;
+    }
+    // The best few, each with its weights optimized: the weights change the ranking.
+    const size_t k = std::min(moves.size(), kWeighed);
+    std::partial_sort(moves.begin(), moves.begin() + k, moves.end(),
+                      [](const Move& a, const Move& b) {
+                        return a.e2 < b.e2 || (a.e2 == b.e2 && a.generator < b.generator);
+                      });
+    Problem best = problem;
+    double best_e2 = e2 * (1 - 1e-12);
+    for (size_t m = 0; m < k; ++m) {
+      Problem trial = problem;
+      trial.generators[moves[m].generator].pos = moves[m].pos;
+      const double e = optimize_weights(objective, trial, settings);
+      if (e < best_e2) {
+        best_e2 = e;
+        best = std::move(trial);
+      }
+    }
+    if (!(best_e2 < e2 * (1 - 1e-12))) break;
+    problem = std::move(best);
+    e2 = best_e2;
+    ++run.moves;
+  }
+  run.final_e2 = e2;
+  return run;
+}
+
+LatticeSearch lattice_search(const Metric& metric, int starts,
+                             const std::function<Problem(int)>& make_start, int steps,
+                             const OptimizerSettings& settings) {
+  std::vector<Problem> problems(starts);
+  std::vector<LatticeRun> runs(starts);
+  tbb::parallel_for(0, starts, [&](int i) {
+    problems[i] = make_start(i);
+    runs[i] = lattice_descent(metric, problems[i], steps, settings);
+  });
+  LatticeSearch r;
+  r.starts = starts;
+  for (int i = 0; i < starts; ++i)
+    if (i == 0 || runs[i].final_e2 < runs[r.best_start].final_e2) r.best_start = i;
+  r.best = problems[r.best_start];
+  r.run = runs[r.best_start];
+  return r;
+}
+
+LatticeSearch lattice_search_from(const Metric& metric, const Problem& continuous_best,
+                                  const std::function<Problem(int)>& make_seed, int starts,
+                                  uint64_t seed, int steps, const OptimizerSettings& settings) {
+  return lattice_search(
+      metric, std::clamp(starts, 1, 32),
+      [&](int i) {
+        if (i == 0) return continuous_best;
+        auto rng = start_rng(seed + 7, static_cast<uint64_t>(i));
+        return i % 2 == 1 ? perturbed(continuous_best, 0.15, rng) : make_seed(i);
+      },
+      steps, settings);
+}
+
+}  // namespace aapat

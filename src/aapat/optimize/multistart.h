@@ -1,0 +1,46 @@
+// Many starts of the optimizer, in parallel across cores (oneTBB). Start i
+// draws its seed pattern and randomness from (seed, i) alone and the best is
+// the lowest E2 (ties: the lowest start), so the result is the same for any
+// thread count. A deadline skips the starts not yet begun. With the
+// heuristic (Method::kDescent) and settings.polish, the best few starts are
+// then polished by the minimax descent.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "aapat/core/metric.h"
+#include "aapat/optimize/family.h"
+#include "aapat/optimize/problem.h"
+#include "aapat/optimize/settings.h"
+
+namespace aapat {
+
+struct StartRecord {
+  int start = 0;
+  RunResult run;
+  double seconds = 0;
+};
+
+struct MultiStartResult {
+  std::vector<StartRecord> starts;  // the starts that ran, in start order
+  int best = -1;                    // index into starts
+  Problem best_problem;
+  double polished_from = 0;  // the best start's E2 before the polish (0: no polish)
+};
+
+// Builds start i's seed problem (called with i; must be deterministic in i).
+using SeedFunction = std::function<Problem(int start)>;
+// Start i of a family search: a random seed pattern of the family drawn
+// from start_rng(seed, i).
+SeedFunction family_seeds(const FamilySpec& spec, SeedKind kind, uint64_t seed,
+                          const Filter& filter);
+
+// Called after each finished start with (finished, total, best E2 so far).
+using ProgressFunction = std::function<void(int, int, double)>;
+
+MultiStartResult multistart(const Metric& metric, int starts, uint64_t seed,
+                            const SeedFunction& make_seed, const OptimizerSettings& settings,
+                            int threads, const ProgressFunction& progress = {});
+
+}  // namespace aapat

@@ -1,0 +1,194 @@
+#include "aapat/optimize/objective.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "aapat/core/gradient.h"
+
+namespace aapat {
+
+void Objective::fill_kernels(const Problem& pr, Workspace& ws) const {
+  ws.kernels.resize(pr.kernels.size());
+  size_t largest = 0;
+  for (size_t k = 0; k < pr.kernels.size(); ++k) {
+    const auto& reads = pr.kernels[k];
+    Kernel& out = ws.kernels[k];
+    out.x.resize(reads.size());
+    out.y.resize(reads.size());
+    out.w.resize(reads.size());
+    for (size_t i = 0; i < reads.size(); ++i) {
+      const Vec2 p = reads[i].place.at(pr.generators);
+      out.x[i] = p.x;
+      out.y[i] = p.y;
+      out.w[i] = pr.weights[reads[i].weight];
+    }
+    largest = std::max(largest, reads.size());
+  }
+  ws.proj.resize(largest);
+  ws.dp.resize(largest);
+  ws.dw.resize(largest);
+}
+
+double Objective::e2(const Problem& pr, Workspace& ws) const {
+  fill_kernels(pr, ws);
+  const int angles = metric_.angle_count();
+  ws.values.resize(ws.kernels.size() * angles);
+  ws.kernel_e2.resize(ws.kernels.size());
+  double e2 = 0;
+  for (size_t k = 0; k < ws.kernels.size(); ++k) {
+    const Kernel& ker = ws.kernels[k];
+    for (int a = 0; a < angles; ++a) {
+      const double c = metric_.cos(a), s = metric_.sin(a);
+      for (int j = 0; j < ker.size(); ++j) ws.proj[j] = c * ker.y[j] - s * ker.x[j];
+      ws.values[k * angles + a] =
+          metric_.weight_sq(a) *
+          e1_squared(metric_.filter(), {ws.proj.data(), ker.w.size()}, ker.w);
+    }
+    ws.kernel_e2[k] = combine_over_angles(
+        {ws.values.data() + k * angles, static_cast<size_t>(angles)}, metric_.norm());
+    e2 = std::max(e2, ws.kernel_e2[k]);
+  }
+  return e2;
+}
+
+void Objective::add_term_gradient(const Problem& pr, Workspace& ws, int k, int a, double scale,
+                                  Direction& dir) const {
+  const Kernel& ker = ws.kernels[k];
+  const size_t n = ker.w.size();
+  const double c = metric_.cos(a), s = metric_.sin(a);
+  for (size_t j = 0; j < n; ++j) ws.proj[j] = c * ker.y[j] - s * ker.x[j];
+  const double e1sq = e1_squared_gradient(metric_.filter(), {ws.proj.data(), n}, ker.w,
+                                          {ws.dp.data(), n}, {ws.dw.data(), n});
+  if (e1sq <= 0) return;
+  // d(W E1) = W dE1^2 / (2 E1)
+  const double f = scale * metric_.acuity().weights[a] / (2 * std::sqrt(e1sq));
+  const auto& reads = pr.kernels[k];
+  for (size_t j = 0; j < n; ++j) {
+    const Placement& pl = reads[j].place;
+    dir.pos[pl.generator].x += f * pl.sx * (-s * ws.dp[j]);
+    dir.pos[pl.generator].y += f * pl.sy * (c * ws.dp[j]);
+    dir.w[reads[j].weight] += f * ws.dw[j];
+  }
+}
+
+void Objective::term_gradient(const Problem& pr, Workspace& ws, int kernel, int angle,
+                              Direction& dir) const {
+  fill_kernels(pr, ws);
+  dir.pos.assign(pr.generators.size(), {0, 0});
+  dir.w.assign(pr.weights.size(), 0.0);
+  add_term_gradient(pr, ws, kernel, angle, 1.0, dir);
+}
+
+void Objective::heuristic_direction(const Problem& pr, Workspace& ws, double e2, double t,
+                                    double ratio, bool move_positions, Direction& dir) const {
+  fill_kernels(pr, ws);
+  dir.pos.assign(pr.generators.size(), {0, 0});
+  dir.w.assign(pr.weights.size(), 0.0);
+  const int angles = metric_.angle_count();
+  const bool max_norm = metric_.norm() == Metric::kMaxNorm;
+  const double threshold_sq = t * t * e2 * e2;
+  for (size_t k = 0; k < ws.kernels.size(); ++k) {
+    const bool kernel_near_max = ws.kernel_e2[k] >= t * e2;
+    for (int a = 0; a < angles; ++a) {
+      const double v = ws.values[k * angles + a];
+      double scale;
+      if (max_norm) {
+        scale = kernel_near_max && v >= threshold_sq ? ratio : 1.0;
+      } else {
+        // The L_p mean's own gradient weighs each term by (W E1)^(p-1).
+        const double rel = ws.kernel_e2[k] > 0 ? std::sqrt(v) / ws.kernel_e2[k] : 0;
+        scale = (kernel_near_max ? ratio : 1.0) * std::pow(rel, metric_.norm() - 1);
+      }
+      add_term_gradient(pr, ws, static_cast<int>(k), a, scale, dir);
+    }
+  }
+  constrain(pr, move_positions, dir);
+}
+
+void Objective::constrain(const Problem& pr, bool move_positions, Direction& dir) const {
+  // Stay on the constraints: each generator's freedom, each weight group's sum.
+  for (size_t g = 0; g < pr.generators.size(); ++g) {
+    const Freedom f = pr.generators[g].freedom;
+    if (!move_positions || f == Freedom::kFixed) dir.pos[g] = {0, 0};
+    if (f == Freedom::kSlideX) dir.pos[g].y = 0;
+    if (f == Freedom::kSlideY) dir.pos[g].x = 0;
+  }
+  for (const auto& group : pr.weight_groups) {
+    double mean = 0;
+    for (int i : group) mean += dir.w[i] / group.size();
+    for (int i : group) dir.w[i] -= mean;
+  }
+}
+
+void Objective::minimax_direction(const Problem& pr, Workspace& ws, double e2, double t,
+                                  bool move_positions, Direction& dir) const {
+  fill_kernels(pr, ws);
+  const int angles = metric_.angle_count();
+  const double threshold_sq = t * t * e2 * e2;
+  // Gradients of the active terms, flattened: 2 per generator, 1 per weight.
+  std::vector<std::vector<double>> grads;
+  Direction g;
+  for (size_t k = 0; k < ws.kernels.size(); ++k) {
+    for (int a = 0; a < angles; ++a) {
+      if (ws.values[k * angles + a] < threshold_sq) continue;
+      g.pos.assign(pr.generators.size(), {0, 0});
+      g.w.assign(pr.weights.size(), 0.0);
+      add_term_gradient(pr, ws, static_cast<int>(k), a, 1.0, g);
+      constrain(pr, move_positions, g);
+      std::vector<double> flat;
+      for (const Vec2& v : g.pos) flat.insert(flat.end(), {v.x, v.y});
+      flat.insert(flat.end(), g.w.begin(), g.w.end());
+      grads.push_back(std::move(flat));
+    }
+  }
+  const size_t m = grads.size(), dim = grads.empty() ? 0 : grads[0].size();
+  // Minimum-norm point of the convex hull: Frank-Wolfe on the Gram matrix.
+  std::vector<double> gram(m * m);
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = 0; j <= i; ++j) {
+      double d = 0;
+      for (size_t c = 0; c < dim; ++c) d += grads[i][c] * grads[j][c];
+      gram[i * m + j] = gram[j * m + i] = d;
+    }
+  std::vector<double> lambda(m, m ? 1.0 / m : 0.0), q(m);
+  for (int it = 0; it < 200 && m > 1; ++it) {
+    for (size_t i = 0; i < m; ++i) {
+      q[i] = 0;
+      for (size_t j = 0; j < m; ++j) q[i] += gram[i * m + j] * lambda[j];
+    }
+    const size_t best = std::min_element(q.begin(), q.end()) - q.begin();
+    double lq = 0;  // |x|^2 for x = G lambda
+    for (size_t i = 0; i < m; ++i) lq += lambda[i] * q[i];
+    // Exact line search from x towards vertex `best`.
+    const double num = lq - q[best], den = lq - 2 * q[best] + gram[best * m + best];
+    if (num <= 1e-18 * std::max(1.0, lq) || den <= 0) break;
+    const double gamma = std::min(1.0, num / den);
+    for (double& l : lambda) l *= 1 - gamma;
+    lambda[best] += gamma;
+  }
+  dir.pos.assign(pr.generators.size(), {0, 0});
+  dir.w.assign(pr.weights.size(), 0.0);
+  for (size_t i = 0; i < m; ++i) {
+    for (size_t gi = 0; gi < pr.generators.size(); ++gi) {
+      dir.pos[gi].x += lambda[i] * grads[i][2 * gi];
+      dir.pos[gi].y += lambda[i] * grads[i][2 * gi + 1];
+    }
+    for (size_t wi = 0; wi < pr.weights.size(); ++wi)
+      dir.w[wi] += lambda[i] * grads[i][2 * pr.generators.size() + wi];
+  }
+}
+
+RunResult begin_run(const Objective& objective, Problem& problem, bool nonnegative_weights,
+                    Workspace& ws) {
+  project_to_constraints(problem, nonnegative_weights);
+  RunResult r;
+  r.initial_e2 = r.final_e2 = objective.e2(problem, ws);
+  r.evaluations = 1;
+  if (!std::isfinite(r.initial_e2))
+    throw Error(fmt::format("optimize: the start's E2 is {}, not a finite number", r.initial_e2));
+  return r;
+}
+
+}  // namespace aapat

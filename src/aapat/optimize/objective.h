@@ -1,0 +1,67 @@
+// E2 of a Problem and the direction of the Laine-Aila heuristic (Sec. 5.2),
+// evaluated without allocating once its workspace is warm.
+#pragma once
+
+#include <vector>
+
+#include "aapat/core/metric.h"
+#include "aapat/optimize/problem.h"
+#include "aapat/optimize/settings.h"
+
+namespace aapat {
+
+// Per-run scratch: the kernels as arrays, projections, per-angle values.
+struct Workspace {
+  std::vector<Kernel> kernels;
+  std::vector<double> proj, dp, dw;
+  std::vector<double> values;  // W^2 E1^2 per (kernel, angle)
+  std::vector<double> kernel_e2;
+};
+
+// A direction in parameter space: one 2D step per generator, one per weight.
+struct Direction {
+  std::vector<Vec2> pos;
+  std::vector<double> w;
+};
+
+class Objective {
+ public:
+  explicit Objective(const Metric& metric) : metric_(metric) {}
+  const Metric& metric() const { return metric_; }
+
+  // E2 (max over kernels of the metric's combination over angles); fills
+  // ws.values and ws.kernel_e2 for the direction that may follow.
+  double e2(const Problem& pr, Workspace& ws) const;
+
+  // sum over (kernel, angle) of c * grad(W E1), with c = ratio for the terms
+  // of kernels within t of the maximum (for the max norm: terms within t of
+  // E2) and c = 1 for the rest: the step is then c0 times this direction.
+  // Positions are restricted to each generator's freedom; weights to sum 1.
+  void heuristic_direction(const Problem& pr, Workspace& ws, double e2, double t, double ratio,
+                           bool move_positions, Direction& dir) const;
+
+  // The minimax steepest-descent direction: of the terms W E1 within t of E2
+  // (the eps-active set), the convex combination of their gradients with the
+  // smallest norm (Demyanov). Where it is not zero, a small step along it
+  // lowers every active term, so E2 falls even at a kink of the maximum.
+  void minimax_direction(const Problem& pr, Workspace& ws, double e2, double t, bool move_positions,
+                         Direction& dir) const;
+
+  // The plain gradient of W E1 at one (kernel, angle), for tests.
+  void term_gradient(const Problem& pr, Workspace& ws, int kernel, int angle, Direction& dir) const;
+
+ private:
+  void fill_kernels(const Problem& pr, Workspace& ws) const;
+  void constrain(const Problem& pr, bool move_positions, Direction& dir) const;
+  void add_term_gradient(const Problem& pr, Workspace& ws, int kernel, int angle, double scale,
+                         Direction& dir) const;
+
+  const Metric& metric_;
+};
+
+// The start of every optimizer run: the problem put on its constraints and
+// its E2 evaluated (the workspace then holds its per-term values).
+RunResult begin_run(const Objective& objective, Problem& problem, bool nonnegative_weights,
+                    Workspace& ws);
+
+}  // namespace aapat

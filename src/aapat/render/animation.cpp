@@ -1,0 +1,30 @@
+#include "aapat/render/animation.h"
+
+#include <cmath>
+
+namespace aapat {
+
+ImageError animate(const AnimationSettings& a, const Sampling& sampling,
+                   const std::optional<Filter>& filter,
+                   const std::function<void(int, const Image&)>& on_frame,
+                   const ReferenceSource& references) {
+  const ReferenceSource source = references ? references : render_reference;
+  ImageError total;
+  double pixels = 0;
+  for (int f = 0; f < a.frames; ++f) {
+    const Scene scene = animation_frame(a.animation, a.width, a.height, f, a.frames);
+    const Image image = render(scene, a.width, a.height, sampling, filter);
+    ReferenceSettings ref = a.reference;
+    ref.seed += 7919 * (f + 1);
+    const Image reference = source(scene, a.width, a.height, ref, image.offset);
+    const ImageError e = compare(image, reference);
+    for (int i = 0; i < 256; ++i) total.count[i] += e.count[i];
+    total.max_deviation = std::max(total.max_deviation, e.max_deviation);
+    pixels += static_cast<double>(image.values.size());
+    if (on_frame) on_frame(f, image);
+  }
+  summarize(total, pixels);
+  return total;
+}
+
+}  // namespace aapat

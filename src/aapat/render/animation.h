@@ -1,0 +1,31 @@
+// Animations (Hasselgren et al. Sec. 6.1): every frame rendered with a
+// pattern and compared with a dense reference; the per-pixel deviations of
+// all frames together give the RMSE, the largest deviation and the
+// squared-error histogram of the whole animation.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "aapat/render/image_error.h"
+#include "aapat/render/reference.h"
+#include "aapat/render/renderer.h"
+
+namespace aapat {
+
+struct AnimationSettings {
+  std::string animation = "circle";
+  int width = 64, height = 64, frames = 32;
+  // Hasselgren's animations: 256 jittered samples; frame f's seed is seed + 7919 (f + 1).
+  ReferenceSettings reference{256, "mitchell", 1};
+};
+
+// Calls on_frame(frame, image) for each frame if given (to write PNGs).
+// References come from `references` (render_reference when empty).
+ImageError animate(const AnimationSettings& settings, const Sampling& sampling,
+                   const std::optional<Filter>& filter,
+                   const std::function<void(int, const Image&)>& on_frame = {},
+                   const ReferenceSource& references = {});
+
+}  // namespace aapat

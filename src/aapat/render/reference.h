@@ -1,0 +1,28 @@
+// The dense reference a rendering is measured against: N jittered samples per
+// pixel (a square count) reconstructed with a reference filter, by default
+// 1024 samples and the 4x4-pixel Mitchell-Netravali filter (Hasselgren Sec. 6.1).
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "aapat/render/renderer.h"
+
+namespace aapat {
+
+struct ReferenceSettings {
+  int samples = 1024;
+  std::string filter = "mitchell";
+  uint64_t seed = 1000004;
+};
+
+// Reconstructed at (i + offset, j + offset), to match a rendering whose
+// footprint shifts it (Image::offset).
+Image render_reference(const Scene& scene, int width, int height, const ReferenceSettings& r,
+                       double offset);
+
+// Where references come from: render_reference, or a cache in front of it.
+using ReferenceSource =
+    std::function<Image(const Scene&, int width, int height, const ReferenceSettings&, double)>;
+
+}  // namespace aapat

@@ -1,0 +1,210 @@
+#include "aapat/study/optimize_run.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+
+#include "aapat/core/lattice.h"
+#include "aapat/generate/enumerate.h"
+#include "aapat/optimize/lattice_search.h"
+
+namespace aapat {
+namespace {
+
+// Start 0 is the pattern itself; later starts jitter it by up to 0.1 pixel.
+SeedFunction polish_seeds(const Problem& start, uint64_t seed) {
+  return [start, seed](int i) {
+    if (i == 0) return start;
+    auto rng = start_rng(seed, static_cast<uint64_t>(i));
+    return perturbed(start, 0.1, rng);
+  };
+}
+
+SeedFunction locked(SeedFunction seeds, std::vector<int> lock) {
+  return [seeds = std::move(seeds), lock = std::move(lock)](int i) {
+    Problem p = seeds(i);
+    lock_samples(p, lock);
+    return p;
+  };
+}
+
+// The placements a family search tries: the one given or, for a sharing
+// family without one, every placement of its cost (as the enumeration lists
+// them); otherwise every sample would sit inside and nothing would be shared.
+std::vector<std::string> placements_of(const OptimizeRunSettings& s) {
+  const FamilySpec spec = parse_family(s.family, s.placement);
+  if (!spec.mirrored || !s.placement.empty()) return {s.placement};
+  std::vector<std::string> all;
+  for (const PlacementConfig& c : enumerate_placements(spec.n)) all.push_back(c.sites());
+  return all;
+}
+
+// From the continuous optimum, kicks around it, and fresh seeds, all snapped.
+LatticeStage lattice_stage(const Metric& metric, const OptimizeRunSettings& s,
+                           MultiStartResult& result, const SeedFunction& make_seed, int starts) {
+  const ApiProfile* profile = s.api.empty() ? nullptr : &api_profile(s.api);
+  LatticeStage stage;
+  stage.steps = s.lattice;
+  if (profile) {
+    stage.profile = profile->name;
+    // Fails early, naming the reason, if the family cannot fit the profile.
+    hardware_layout(snap_to_lattice(pattern_of(make_seed(0)), s.lattice), *profile);
+  }
+  const LatticeSearch lat = lattice_search_from(metric, result.best_problem, make_seed, starts,
+                                                s.seed, s.lattice, s.optimizer);
+  result.best_problem = lat.best;
+  stage.continuous_e2 = result.starts[result.best].run.final_e2;
+  stage.snapped_e2 = lat.run.snapped_e2;
+  stage.lattice_e2 = lat.run.final_e2;
+  stage.starts = lat.starts;
+  stage.best_start = lat.best_start;
+  stage.moves = lat.run.moves;
+  if (profile) stage.layout = hardware_layout(pattern_of(lat.best), *profile);
+  return stage;
+}
+
+void check_settings(const OptimizeRunSettings& s) {
+  if (s.family.empty() && !s.start)
+    throw Error("optimize: give either a family to search or a pattern to polish");
+  if (s.starts && !(*s.starts >= 1 && *s.starts <= 1000000))
+    throw Error(fmt::format("optimize: starts {} is not in [1, 1000000]", *s.starts));
+  if (s.lattice != 0 && !(s.lattice >= 2 && s.lattice <= 256))
+    throw Error(fmt::format("optimize: lattice {} is not in [2, 256] steps per pixel", s.lattice));
+  if (!s.api.empty() && s.lattice != kLatticeSteps)
+    throw Error(fmt::format("optimize: the API profile {} has a 1/{} pixel lattice, not 1/{}",
+                            s.api, kLatticeSteps, s.lattice));
+  if (!s.family.empty() && s.start &&
+      family(*s.start) != parse_family(s.family, s.placement).text())
+    throw Error(fmt::format("optimize: the start pattern {} is {}, not the family {}",
+                            s.start_label.empty() ? s.start->name : s.start_label,
+                            family(*s.start), s.family));
+}
+
+}  // namespace
+
+std::string method_name(Method m) {
+  switch (m) {
+    case Method::kAnneal:
+      return "simulated annealing";
+    case Method::kMinimax:
+      return "eps-active minimum-norm descent";
+    case Method::kDescent:
+      break;
+  }
+  return "Laine-Aila heuristic (t 0.99, c1 = 100 c0)";
+}
+
+std::string method_key(Method m) {
+  switch (m) {
+    case Method::kAnneal:
+      return "anneal";
+    case Method::kMinimax:
+      return "minimax";
+    case Method::kDescent:
+      break;
+  }
+  return "descent";
+}
+
+Method parse_method(std::string_view name) {
+  if (name == "descent") return Method::kDescent;
+  if (name == "minimax") return Method::kMinimax;
+  if (name == "anneal") return Method::kAnneal;
+  throw Error(fmt::format("method '{}': known methods are descent, minimax, anneal", name));
+}
+
+OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& settings,
+                               const StudyProgress& progress) {
+  OptimizeRunSettings s = settings;
+  if (!s.api.empty() && s.lattice == 0) s.lattice = kLatticeSteps;
+  check_settings(s);
+  const bool polish = s.start.has_value();
+  const int starts = s.starts.value_or(polish ? 1 : 16);
+  OptimizeRunResult out;
+  out.settings = s;
+  out.method = method_name(s.optimizer.method);
+  const std::vector<std::string> placements =
+      polish ? std::vector<std::string>{s.placement} : placements_of(s);
+  const int total = starts * static_cast<int>(placements.size());
+  int before = 0;
+  auto report = [&](int done, int, double best) {
+    if (progress) progress(before + done, total, fmt::format("best E2 {:.4f}", best));
+  };
+
+  const auto t0 = std::chrono::steady_clock::now();
+  SeedFunction make_seed;
+  if (polish) {
+    Problem start = problem_from_pattern(*s.start);
+    lock_samples(start, s.lock);
+    make_seed = polish_seeds(start, s.seed);
+    out.search = multistart(metric, starts, s.seed, make_seed, s.optimizer, s.threads, report);
+    out.placement = s.placement;
+    out.description = fmt::format("{} {} ({} start{})", start.layout.name, family(start.layout),
+                                  starts, starts == 1 ? "" : "s");
+  } else {
+    const SeedKind kind = parse_seed_kind(s.seeds);
+    for (const std::string& placement : placements) {
+      const FamilySpec spec = parse_family(s.family, placement);
+      SeedFunction seeds =
+          locked(family_seeds(spec, kind, s.seed, metric.filter()), s.lock);
+      MultiStartResult r = multistart(metric, starts, s.seed, seeds, s.optimizer, s.threads, report);
+      before += starts;
+      const MultiStartResult& b = out.search;
+      if (r.best >= 0 &&
+          (b.best < 0 || r.starts[r.best].run.final_e2 < b.starts[b.best].run.final_e2)) {
+        out.search = std::move(r);
+        make_seed = std::move(seeds);
+        out.placement = placement;
+      }
+    }
+    const std::string family_text = parse_family(s.family, out.placement).text();
+    out.description =
+        placements.size() > 1
+            ? fmt::format("{} from {} {} starts for each of its {} placements (best: {})",
+                          family_text, starts, s.seeds, placements.size(), out.placement)
+            : fmt::format("{} from {} {} starts", family_text, starts, s.seeds);
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (out.search.best < 0) throw Error("optimize: the time limit passed before any start ran");
+  const StartRecord& best = out.best_start();
+
+  if (s.lattice > 0) out.lattice = lattice_stage(metric, s, out.search, make_seed, starts);
+
+  Pattern& p = out.best;
+  p = pattern_of(out.search.best_problem);
+  p.name = polish ? p.name + "-optimized"
+                  : fmt::format("best-{}", parse_family(s.family, out.placement).text());
+  p.description = fmt::format("optimized {} for {}", family(p), metric.filter().name());
+  p.provenance = {{"optimizer", out.method},
+                  {"family", family(p)},
+                  {"placement", out.placement},
+                  {"filter", metric.filter().name()},
+                  {"acuity", metric.acuity().name},
+                  {"norm", format_norm(metric.norm())},
+                  {"seed", std::to_string(s.seed)},
+                  {"seeds", polish ? s.start_label : s.seeds},
+                  {"start", std::to_string(best.start)},
+                  {"iterations", std::to_string(best.run.iterations)},
+                  {"weights", s.optimizer.weights_only ? "weights only" : "positions and weights"},
+                  {"nonnegative", s.optimizer.nonnegative_weights ? "yes" : "no"},
+                  {"e2", fmt::format("{:.6f}", best.run.final_e2)}};
+  if (out.lattice) {
+    p.provenance.emplace_back("lattice", fmt::format("1/{} pixel", s.lattice));
+    if (!out.lattice->profile.empty()) p.provenance.emplace_back("api", out.lattice->profile);
+    p.provenance.emplace_back("lattice_e2", fmt::format("{:.6f}", metric.evaluate(p).e2));
+  }
+  validate(p);
+
+  if (s.optimizer.nonnegative_weights && s.report_nonnegative_cost) {
+    // What non-negative weights cost: the same best start, unconstrained.
+    OptimizerSettings free = s.optimizer;
+    free.nonnegative_weights = false;
+    const Problem again = make_seed(best.start);
+    const MultiStartResult r =
+        multistart(metric, 1, s.seed, [&](int) { return again; }, free, s.threads);
+    out.unconstrained_e2 = r.starts.empty() ? NAN : r.starts[0].run.final_e2;
+  }
+  return out;
+}
+
+}  // namespace aapat
