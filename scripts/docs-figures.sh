@@ -1,9 +1,14 @@
 #!/usr/bin/env bash
 # Regenerates the figures and tables committed under docs/ from a release build.
+# AAPAT_DOCS_OUT writes them under another folder instead (scripts/check-docs.sh
+# compares the two).
 set -euo pipefail
-cd "$(dirname "$0")/.."
-aapat=build/release/aapat
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+aapat=$root/build/release/aapat
 [ -x "$aapat" ] || { cmake --preset release >/dev/null && cmake --build --preset release --target aapat >/dev/null; }
+cd "${AAPAT_DOCS_OUT:-$root}"
+mkdir -p docs
 img=docs/images
 mkdir -p "$img"
 "$aapat" eval centroid diagonal box2x2 rgss quincunx quincunx-hasselgren flipquad fliptri \

@@ -22,7 +22,8 @@ std::ostream* g_warnings = nullptr;
 const std::map<std::string, std::string> kFlagOfParameter = {
     {"family", "--family"}, {"placement", "--placement"}, {"seeds", "--seeds"},
     {"lock", "--lock"},     {"lattice", "--lattice"},     {"cost", "--cost"},
-    {"tile", "--tile"},     {"size", "--size"},           {"norm", "--norm"}};
+    {"tile", "--tile"},     {"size", "--size"},           {"norm", "--norm"},
+    {"1d", "--1d"}};
 
 // The message of the exception in flight, whatever its type: library errors
 // as they are, the rest named for what they mean to a user.

@@ -17,9 +17,69 @@
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/pattern_svg.h"
-#include "aapat/optimize/multistart.h"
+#include "aapat/study/enumeration.h"
 
 namespace aapat {
+namespace {
+
+std::string counts_text(const Enumeration& e, const EnumerationSettings& s) {
+  std::string text = fmt::format(
+      "P(4,1+,n) placement configurations (rotations and reflections removed; at "
+      "most {} samples per edge{})\n",
+      s.rules.max_per_edge, s.rules.cull_one_edge ? "; one-border-line configurations culled" : "");
+  for (double n : s.costs) text += fmt::format("  n = {:<5} {:>4}\n", format_cost(n), e.count(n));
+  return text + fmt::format("  total     {:>4}\n", e.rows.size());
+}
+
+std::string rows_text(const Enumeration& e, bool optimized) {
+  std::string text = fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", "id", "n", "reads", "E2", "placement");
+  for (const EnumerationRow& r : e.rows)
+    text += fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", r.id, format_cost(r.n), r.config.samples(),
+                        optimized ? fmt::format("{:.4f}", r.e2) : "-", r.config.sites());
+  return text;
+}
+
+std::string rows_csv(const Enumeration& e, bool optimized) {
+  std::string csv = "id,n,placement,samples_read,e2\n";
+  for (const EnumerationRow& r : e.rows)
+    csv += fmt::format("{},{},\"{}\",{},{}\n", r.id, format_cost(r.n), r.config.sites(),
+                       r.config.samples(), optimized ? fmt::format("{:.6f}", r.e2) : "");
+  return csv;
+}
+
+template <class Options>
+JsonObject enumeration_json(const Enumeration& e, const Options& o) {
+  JsonObject rows = JsonObject::array();
+  for (const EnumerationRow& r : e.rows)
+    rows.push_back({{"id", r.id},
+                    {"n", r.n},
+                    {"placement", r.config.sites()},
+                    {"samples_read", r.config.samples()},
+                    {"e2", o.optimize ? JsonObject(r.e2) : JsonObject()}});
+  JsonObject doc = json_report("enumerate");
+  doc.update(JsonObject{{"family", "P(4,1+,n)"},
+                        {"max_per_edge", o.max_per_edge},
+                        {"cull_one_edge", o.cull_one_edge},
+                        {"optimized", o.optimize},
+                        {"starts", o.optimize ? JsonObject(o.starts) : JsonObject()},
+                        {"seed", o.seed},
+                        {"rows", rows}});
+  return doc;
+}
+
+std::string gallery(const Enumeration& e, const std::vector<double>& costs, int top) {
+  std::vector<GalleryItem> items;
+  for (double n : costs) {
+    int shown = 0;
+    for (const EnumerationRow& r : e.rows)
+      if (r.n == n && shown++ < top)
+        items.push_back({r.best, fmt::format("n = {}  E2 {:.4f}", format_cost(n), r.e2),
+                         fmt::format("#{}: {} samples read", r.id, r.config.samples())});
+  }
+  return gallery_svg(items, top, "Best P(4,1+,n) configurations per cost; disc area = weight");
+}
+
+}  // namespace
 
 Action add_enumerate_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("enumerate",
@@ -59,114 +119,35 @@ Action add_enumerate_command(CLI::App& app) {
     std::ostream discard(nullptr);
     std::ostream& text = o->json ? discard : out;
     const Metric metric = o->metric.make();  // a bad --filter or --acuity fails first
-    std::vector<double> costs;
-    for (std::string_view c : split(o->costs)) costs.push_back(parse_number(c, "--cost"));
-    const EnumerationRules rules{o->max_per_edge, o->cull_one_edge};
-    struct Row {
-      int id;
-      double n;
-      PlacementConfig config;
-      double e2 = NAN;
-      Pattern best;
-    };
-    std::vector<Row> rows;
-    for (double n : costs)
-      for (const auto& c : enumerate_placements(n, rules))
-        rows.push_back({static_cast<int>(rows.size()) + 1, n, c, NAN, {}});
+    EnumerationSettings s;
+    s.costs.clear();
+    for (std::string_view c : split(o->costs)) s.costs.push_back(parse_number(c, "--cost"));
+    s.rules = {o->max_per_edge, o->cull_one_edge};
+    s.optimize = o->optimize;
+    s.starts = o->starts;
+    s.seed = o->seed;
     if ((o->gallery.size() || o->best_dir.size()) && !o->optimize)
       throw Error("--gallery and --best-dir show optimized patterns: add --optimize");
     if (!o->best_dir.empty()) check_directory_target(o->best_dir, "--best-dir");
-
-    text << fmt::format(
-        "P(4,1+,n) placement configurations (rotations and reflections removed; at "
-        "most {} samples per edge{})\n",
-        o->max_per_edge, o->cull_one_edge ? "; one-border-line configurations culled" : "");
-    for (double n : costs)
-      text << fmt::format(
-          "  n = {:<5} {:>4}\n", format_cost(n),
-          std::count_if(rows.begin(), rows.end(), [&](const Row& r) { return r.n == n; }));
-    text << fmt::format("  total     {:>4}\n", rows.size());
+    s.optimize = false;  // the counts first, so that they show before the long part
+    Enumeration e = enumerate_study(metric, s);
+    text << counts_text(e, s);
     if (!o->optimize && o->csv.empty() && !o->json) return;
-
     if (o->optimize) {
       Progress bar("enumerate");
-      for (size_t i = 0; i < rows.size(); ++i) {
-        Row& row = rows[i];
-        const FamilySpec spec =
-            parse_family(fmt::format("P(4,1+,{})", format_cost(row.n)), row.config.sites());
-        const MultiStartResult r =
-            multistart(metric, o->starts, o->seed,
-                       family_seeds(spec, SeedKind::kJittered, o->seed, metric.filter()),
-                       OptimizerSettings{}, 0);
-        row.e2 = r.starts[r.best].run.final_e2;
-        row.best = pattern_of(r.best_problem);
-        row.best.name = fmt::format("P(4,1+,{})-config-{}", format_cost(row.n), row.id);
-        row.best.description = fmt::format("placement {}", row.config.sites());
-        row.best.provenance = {{"enumerate", fmt::format("configuration {}", row.id)},
-                               {"placement", row.config.sites()},
-                               {"filter", metric.filter().name()},
-                               {"acuity", metric.acuity().name},
-                               {"seed", std::to_string(o->seed)},
-                               {"starts", std::to_string(o->starts)},
-                               {"e2", fmt::format("{:.6f}", row.e2)}};
-        bar.update(static_cast<int>(i + 1), static_cast<int>(rows.size()),
-                   fmt::format("n = {} E2 {:.4f}", format_cost(row.n), row.e2));
-      }
-      // Rank within each cost by E2.
-      std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
-        return a.n != b.n ? a.n < b.n : a.e2 < b.e2;
-      });
+      s.optimize = true;
+      e = enumerate_study(metric, s, bar.callback());
     }
-    text << fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", "id", "n", "reads", "E2", "placement");
-    std::string csv = "id,n,placement,samples_read,e2\n";
-    JsonObject js = JsonObject::array();
-    for (const Row& r : rows) {
-      text << fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", r.id, format_cost(r.n),
-                          r.config.samples(), o->optimize ? fmt::format("{:.4f}", r.e2) : "-",
-                          r.config.sites());
-      csv += fmt::format("{},{},\"{}\",{},{}\n", r.id, format_cost(r.n), r.config.sites(),
-                         r.config.samples(), o->optimize ? fmt::format("{:.6f}", r.e2) : "");
-      js.push_back({{"id", r.id},
-                    {"n", r.n},
-                    {"placement", r.config.sites()},
-                    {"samples_read", r.config.samples()},
-                    {"e2", o->optimize ? JsonObject(r.e2) : JsonObject()}});
-    }
-    if (!o->csv.empty()) write_output(o->csv, csv, out);
-    if (o->json) {
-      JsonObject doc = json_report("enumerate");
-      doc.update(JsonObject{{"family", "P(4,1+,n)"},
-                            {"max_per_edge", o->max_per_edge},
-                            {"cull_one_edge", o->cull_one_edge},
-                            {"optimized", o->optimize},
-                            {"starts", o->optimize ? JsonObject(o->starts) : JsonObject()},
-                            {"seed", o->seed},
-                            {"rows", js}});
-      out << json_text(doc);
-    }
-    if (!o->gallery.empty()) {
-      std::vector<GalleryItem> items;
-      for (double n : costs) {
-        int shown = 0;
-        for (const Row& r : rows)
-          if (r.n == n && shown++ < o->top)
-            items.push_back({r.best, fmt::format("n = {}  E2 {:.4f}", format_cost(n), r.e2),
-                             fmt::format("#{}: {} samples read", r.id, r.config.samples())});
-      }
-      write_output(
-          o->gallery,
-          gallery_svg(items, o->top, "Best P(4,1+,n) configurations per cost; disc area = weight"),
-          out);
-    }
+    text << rows_text(e, o->optimize);
+    if (!o->csv.empty()) write_output(o->csv, rows_csv(e, o->optimize), out);
+    if (o->json) out << json_text(enumeration_json(e, *o));
+    if (!o->gallery.empty()) write_output(o->gallery, gallery(e, s.costs, o->top), out);
     if (!o->best_dir.empty()) {
       ensure_directory(o->best_dir, "--best-dir");
-      for (double n : costs)
-        for (const Row& r : rows)
-          if (r.n == n) {
-            save_pattern_file(r.best,
-                              fmt::format("{}/best-P4-1+-{}.json", o->best_dir, format_cost(n)));
-            break;
-          }
+      for (double n : s.costs)
+        if (const EnumerationRow* best = e.best(n))
+          save_pattern_file(best->best,
+                            fmt::format("{}/best-P4-1+-{}.json", o->best_dir, format_cost(n)));
     }
   };
 }

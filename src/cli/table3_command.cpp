@@ -13,8 +13,7 @@
 #include "cli/metric_options.h"
 #include "cli/progress.h"
 #include "aapat/io/json_report.h"
-#include "aapat/optimize/family.h"
-#include "aapat/optimize/multistart.h"
+#include "aapat/study/paper_tables.h"
 
 namespace aapat {
 
@@ -38,59 +37,21 @@ Action add_table3_command(CLI::App& app) {
   o->metric.add_to(cmd);
   return [o](std::ostream& out) {
     const Metric metric = o->metric.make();
-    const FamilySpec spec = parse_family("P(16,16,4)", "");
-    struct Row {
-      const char* name;
-      SeedKind kind;
-      double paper[5];  // Min, Avg, Max, Opt W, Opt W+P (Laine-Aila Table 3)
-    };
-    const Row rows[] = {{"jittered grid", SeedKind::kJittered, {0.423, 0.622, 0.907, 0.242, 0.169}},
-                        {"Poisson disk", SeedKind::kPoisson, {0.346, 0.473, 0.782, 0.221, 0.161}}};
-    JsonObject js = JsonObject::array();
-    std::string table;
-    for (const Row& row : rows) {
-      double lo = INFINITY, hi = 0, sum = 0;
-      Pattern best;
-      {
-        Progress bar(fmt::format("{:<13}", row.name));
-        for (int i = 0; i < o->patterns; ++i) {
-          auto rng = start_rng(o->seed, static_cast<uint64_t>(i));
-          Pattern p = seed_pattern(spec, row.kind, rng, metric.filter());  // h(x) h(y) weights
-          const double e2 = metric.evaluate(p).e2;
-          sum += e2;
-          hi = std::max(hi, e2);
-          if (e2 < lo) {
-            lo = e2;
-            best = p;
-          }
-          if (i % 50 == 49 || i + 1 == o->patterns)
-            bar.update(i + 1, o->patterns, fmt::format("min {:.3f}", lo));
-        }
-      }
-      OptimizerSettings settings;
-      settings.max_iterations = o->iterations;
-      settings.weights_only = true;
-      MultiStartResult w = multistart(
-          metric, 1, o->seed, [&](int) { return problem_from_pattern(best); }, settings, 0);
-      settings.weights_only = false;
-      const Problem after_w = w.best_problem;
-      MultiStartResult wp = multistart(
-          metric, 1, o->seed, [&](int) { return after_w; }, settings, 0);
-      const double ours[5] = {lo, sum / o->patterns, hi, w.starts[w.best].run.final_e2,
-                              wp.starts[wp.best].run.final_e2};
-      js.push_back(
-          {{"distribution", row.name},
-           {"min", ours[0]},
-           {"avg", ours[1]},
-           {"max", ours[2]},
-           {"opt_w", ours[3]},
-           {"opt_wp", ours[4]},
-           {"paper", {row.paper[0], row.paper[1], row.paper[2], row.paper[3], row.paper[4]}}});
-      table += fmt::format("{:<14}", row.name);
-      for (int c = 0; c < 5; ++c) table += fmt::format("  {:.3f} ({:.3f})", ours[c], row.paper[c]);
-      table += "\n";
+    std::vector<Table3Row> rows;
+    {
+      Progress bar("table3");
+      rows = table3(metric, {o->patterns, o->iterations, o->seed}, bar.callback());
     }
     if (o->json) {
+      JsonObject js = JsonObject::array();
+      for (const Table3Row& r : rows)
+        js.push_back({{"distribution", r.distribution},
+                      {"min", r.e2[0]},
+                      {"avg", r.e2[1]},
+                      {"max", r.e2[2]},
+                      {"opt_w", r.e2[3]},
+                      {"opt_wp", r.e2[4]},
+                      {"paper", r.paper}});
       JsonObject doc = json_report("table3");
       doc.update(JsonObject{{"family", "P(16,16,4)"},
                             {"patterns", o->patterns},
@@ -104,8 +65,13 @@ Action add_table3_command(CLI::App& app) {
     out << fmt::format(
         "Laine-Aila Table 3 re-run: P(16,16,4), {} patterns per distribution, seed {}, filter {}, "
         "acuity {}\naapat (paper)   Min              Avg              Max              Opt W     "
-        "       Opt W+P\n{}",
-        o->patterns, o->seed, metric.filter().name(), metric.acuity().name, table);
+        "       Opt W+P\n",
+        o->patterns, o->seed, metric.filter().name(), metric.acuity().name);
+    for (const Table3Row& r : rows) {
+      out << fmt::format("{:<14}", r.distribution);
+      for (int c = 0; c < 5; ++c) out << fmt::format("  {:.3f} ({:.3f})", r.e2[c], r.paper[c]);
+      out << "\n";
+    }
   };
 }
 

@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 
@@ -37,6 +38,17 @@ Spectrum2D power_spectrum(const std::vector<Vec2>& points, int size) {
     for (size_t v = 0; v < m; ++v) s.power[v * m + col] = (re[v] * re[v] + im[v] * im[v]) / n;
   });
   return s;
+}
+
+std::vector<uint8_t> spectrum_grey_pixels(const Spectrum2D& s) {
+  const size_t m = static_cast<size_t>(s.size);
+  std::vector<uint8_t> pixels(m * m);
+  for (size_t row = 0; row < m; ++row)
+    for (size_t col = 0; col < m; ++col) {
+      const double p = s.power[(m - 1 - row) * m + col];
+      pixels[row * m + col] = static_cast<uint8_t>(std::lround(255 * std::min(1.0, p / 2)));
+    }
+  return pixels;
 }
 
 void accumulate(Spectrum2D& sum, const Spectrum2D& other, double weight) {

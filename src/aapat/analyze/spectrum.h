@@ -6,6 +6,7 @@
 // points), in parallel over rows. 1D: points on a line, any frequencies.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "aapat/core/geometry.h"
@@ -21,6 +22,10 @@ struct Spectrum2D {
 Spectrum2D power_spectrum(const std::vector<Vec2>& points, int size);
 // Adds `other` into `sum` (for averaging realizations).
 void accumulate(Spectrum2D& sum, const Spectrum2D& other, double weight);
+
+// The spectrum as grey levels, rows top-down (highest v first), grey = power / 2
+// clamped to white, DC at the centre: what `aapat spectrum -o` writes.
+std::vector<uint8_t> spectrum_grey_pixels(const Spectrum2D& s);
 
 struct RadialProfile {
   std::vector<double> radius;         // integer |f| of each ring

@@ -39,8 +39,8 @@ const SiteInfo& info(Site s) {
 Site parse_site(std::string_view text) {
   for (const auto& s : kSites)
     if (text == s.text) return s.site;
-  throw Error(fmt::format(
-      "--placement: unknown site '{}' (sites are inside, left, right, bottom, top, bottom-left, "
+  throw ParameterError("placement", fmt::format(
+      ": unknown site '{}' (sites are inside, left, right, bottom, top, bottom-left, "
       "bottom-right, top-left, top-right)",
       text));
 }
@@ -50,62 +50,6 @@ uint64_t splitmix(uint64_t x) {
   x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
   x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
   return x ^ (x >> 31);
-}
-
-// Inside positions for every pixel of a side x side tile, m per pixel.
-// Jittered and uniform treat each pixel alone; Poisson disk throws darts over
-// the whole tile with distances measured on the torus (the tile repeats), so
-// samples keep apart across pixel borders too.
-std::vector<std::vector<Vec2>> inside_points(int side, int m, SeedKind kind, std::mt19937_64& rng,
-                                             double limit) {
-  std::uniform_real_distribution<double> u(0, 1);
-  auto clampv = [&](Vec2 v) {
-    return Vec2{std::clamp(v.x, -limit, limit), std::clamp(v.y, -limit, limit)};
-  };
-  std::vector<std::vector<Vec2>> sets(side * side);
-  if (kind == SeedKind::kPoisson) {
-    // Darts of radius 0.75 of the densest packing's, shrinking when they keep missing.
-    double d = 0.75 * std::sqrt(2 / (std::sqrt(3.0) * std::max(m, 1)));
-    std::vector<Vec2> world;  // tile coordinates, pixel centres at integers
-    auto torus = [&](double a) {
-      a = std::fmod(std::abs(a), static_cast<double>(side));
-      return std::min(a, side - a);
-    };
-    for (int k = 0; k < side * side; ++k) {
-      const int tx = k % side, ty = k / side;
-      while (static_cast<int>(sets[k].size()) < m) {
-        bool placed = false;
-        for (int attempt = 0; attempt < 300 && !placed; ++attempt) {
-          const Vec2 c = clampv({u(rng) - 0.5, u(rng) - 0.5});
-          const Vec2 w{tx + c.x, ty + c.y};
-          placed = std::all_of(world.begin(), world.end(), [&](Vec2 q) {
-            return std::hypot(torus(q.x - w.x), torus(q.y - w.y)) >= d;
-          });
-          if (placed) {
-            sets[k].push_back(c);
-            world.push_back(w);
-          }
-        }
-        if (!placed) d *= 0.95;
-      }
-    }
-    return sets;
-  }
-  for (auto& pts : sets) {
-    if (kind == SeedKind::kJittered) {
-      // m strata of a g x g grid, chosen at random, one jittered point each.
-      const int g = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(m))));
-      std::vector<int> cells(g * g);
-      for (int i = 0; i < g * g; ++i) cells[i] = i;
-      std::shuffle(cells.begin(), cells.end(), rng);
-      for (int i = 0; i < m; ++i)
-        pts.push_back(
-            clampv({(cells[i] % g + u(rng)) / g - 0.5, (cells[i] / g + u(rng)) / g - 0.5}));
-    } else {
-      for (int i = 0; i < m; ++i) pts.push_back(clampv({u(rng) - 0.5, u(rng) - 0.5}));
-    }
-  }
-  return sets;
 }
 
 }  // namespace
@@ -134,9 +78,9 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
   const auto c1 = body.find(','), c2 = body.rfind(',');
   if (c1 == std::string_view::npos || c1 == c2)
     throw ParameterError("family", fmt::format(": '{}' is not of the form P(s,r,n), e.g. P(4,1+,2)", family));
-  const double s = parse_number(body.substr(0, c1), "--family: s");
+  const double s = parse_number(body.substr(0, c1), "family: s");
   spec.footprint = parse_footprint(trim(body.substr(c1 + 1, c2 - c1 - 1)));
-  spec.n = parse_number(body.substr(c2 + 1), "--family: n");
+  spec.n = parse_number(body.substr(c2 + 1), "family: n");
   // The range first: the square root of a huge s must not overflow an int.
   const int side = s >= 1 && s <= 64 ? static_cast<int>(std::lround(std::sqrt(s))) : 0;
   if (side < 1 || side * side != s)
@@ -152,7 +96,7 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
     if (spec.n != std::floor(spec.n))
       throw ParameterError(
           "family", fmt::format(" {}: n = {} is not a whole number of inside samples; give "
-                      "--placement with border sites (corner 1/4, edge 1/2)",
+                      "a placement with border sites (corner 1/4, edge 1/2)",
                       family, spec.n));
     spec.sites.assign(static_cast<size_t>(spec.n), Site::kInside);
   } else {
@@ -180,8 +124,8 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
     // sample, which this pixel also reads: such sites come in pairs.
     auto count = [&](Site x) { return std::count(spec.sites.begin(), spec.sites.end(), x); };
     if (count(Site::kLeft) != count(Site::kRight) || count(Site::kTop) != count(Site::kBottom))
-      throw Error(fmt::format(
-          "--placement: in {} every pixel repeats the same set, so a left-edge sample is also the "
+      throw ParameterError("placement", fmt::format(
+          ": in {} every pixel repeats the same set, so a left-edge sample is also the "
           "right-edge sample of the pixel to the left: list left and right (and top and bottom) "
           "in pairs",
           family));
@@ -208,13 +152,6 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
   return spec;
 }
 
-SeedKind parse_seed_kind(std::string_view text) {
-  if (text == "jittered") return SeedKind::kJittered;
-  if (text == "poisson") return SeedKind::kPoisson;
-  if (text == "uniform") return SeedKind::kUniform;
-  throw ParameterError(
-      "seeds", fmt::format(": '{}' is not jittered, poisson, uniform or a pattern file", text));
-}
 
 std::mt19937_64 start_rng(uint64_t seed, uint64_t index) {
   return std::mt19937_64(splitmix(splitmix(seed) ^ (index + 1) * 0xd1b54a32d192ed03ULL));
@@ -241,7 +178,7 @@ Pattern seed_pattern(const FamilySpec& spec, SeedKind kind, std::mt19937_64& rng
   const int side = static_cast<int>(std::lround(std::sqrt(spec.s)));
   const int inside =
       static_cast<int>(std::count(spec.sites.begin(), spec.sites.end(), Site::kInside));
-  const auto tile_inside = inside_points(spec.mirrored ? 1 : side, inside, kind, rng, limit);
+  const auto tile_inside = tile_points(spec.mirrored ? 1 : side, inside, kind, rng, limit);
   auto make_set = [&](int k) {
     const std::vector<Vec2>& in = tile_inside[k];
     // Paired sites of a 1x1 sharing tile share one coordinate: right takes

@@ -10,6 +10,7 @@
 
 #include "aapat/core/filter.h"
 #include "aapat/core/pattern.h"
+#include "aapat/generate/point_processes.h"
 
 namespace aapat {
 
@@ -41,8 +42,6 @@ struct FamilySpec {
 // placement's cost equals n and that the sites fit the family, saying why not.
 FamilySpec parse_family(std::string_view family, std::string_view placement);
 
-enum class SeedKind { kJittered, kPoisson, kUniform };
-SeedKind parse_seed_kind(std::string_view text);
 
 // A random pattern of the family: inside samples by `kind`, border samples
 // uniform along their edge, weights equal for one-pixel footprints and the

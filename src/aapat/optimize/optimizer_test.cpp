@@ -203,30 +203,30 @@ TEST(Family, ParsesAndExplainsWhatDoesNotFit) {
   EXPECT_EQ(fq.sites.size(), 4u);
   EXPECT_EQ(parse_family("P(16,16,4)", "").sites.size(), 4u);
   expect_family_error("P(4,1+,2)", "left,right,bottom",
-                      "--family P(4,1+,2) says n = 2 but the placement costs 1.5 (left 0.5 + right "
+                      "family P(4,1+,2) says n = 2 but the placement costs 1.5 (left 0.5 + right "
                       "0.5 + bottom 0.5)");
   expect_family_error("P(4,1+,1.25)", "",
-                      "--family P(4,1+,1.25): n = 1.25 is not a whole number of inside samples; "
-                      "give --placement with border sites (corner 1/4, edge 1/2)");
+                      "family P(4,1+,1.25): n = 1.25 is not a whole number of inside samples; "
+                      "give a placement with border sites (corner 1/4, edge 1/2)");
   expect_family_error("P(3,1,2)", "",
-                      "--family P(3,1,2): s = 3 must be a square number of sets 1, 4, 9, ... 64 (a "
+                      "family P(3,1,2): s = 3 must be a square number of sets 1, 4, 9, ... 64 (a "
                       "square tile)");
   expect_family_error("Q(1,1,2)", "",
-                      "--family: 'Q(1,1,2)' is not of the form P(s,r,n), e.g. P(4,1+,2)");
+                      "family: 'Q(1,1,2)' is not of the form P(s,r,n), e.g. P(4,1+,2)");
   expect_family_error(
       "P(1,1+,1.5)", "inside,left",
-      "--placement: in P(1,1+,1.5) every pixel repeats the same set, so a left-edge "
+      "placement: in P(1,1+,1.5) every pixel repeats the same set, so a left-edge "
       "sample is also the right-edge sample of the pixel to the left: list left and "
       "right (and top and bottom) in pairs");
   expect_family_error(
       "P(1,1,1.5)", "inside,left",
-      "--family P(1,1,1.5): border sites are shared with the neighbours, which only "
+      "family P(1,1,1.5): border sites are shared with the neighbours, which only "
       "a sharing footprint (r with +) reads");
   expect_family_error("P(4,1+,2)", "left,right,middle",
-                      "--placement: unknown site 'middle' (sites are inside, left, right, bottom, "
+                      "placement: unknown site 'middle' (sites are inside, left, right, bottom, "
                       "top, bottom-left, bottom-right, top-left, top-right)");
   expect_family_error("P(4,1+,0.5)", "top-left,top-left",
-                      "--placement: the top-left corner holds one sample at most");
+                      "placement: the top-left corner holds one sample at most");
 }
 
 TEST(Family, SeedPatternsAreValidAndCostN) {

@@ -1,0 +1,201 @@
+#include "aapat/study/paper_tables.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "aapat/core/hardware_layout.h"
+#include "aapat/core/lattice.h"
+#include "aapat/generate/catalog.h"
+#include "aapat/optimize/descent.h"
+#include "aapat/optimize/lattice_search.h"
+#include "aapat/optimize/multistart.h"
+
+namespace aapat {
+namespace {
+
+void check_count(int value, int limit, const char* parameter) {
+  if (!(value >= 1 && value <= limit))
+    throw ParameterError(parameter, fmt::format(" {}: expected 1 to {}", value, limit));
+}
+
+// One distribution's row of Table 3.
+Table3Row table3_row(const Metric& metric, const Table3Settings& s, const char* name,
+                     SeedKind kind, std::array<double, 5> paper, const StudyProgress& progress) {
+  const FamilySpec spec = parse_family("P(16,16,4)", "");
+  double lo = INFINITY, hi = 0, sum = 0;
+  Pattern best;
+  for (int i = 0; i < s.patterns; ++i) {
+    auto rng = start_rng(s.seed, static_cast<uint64_t>(i));
+    Pattern p = seed_pattern(spec, kind, rng, metric.filter());  // h(x) h(y) weights
+    const double e2 = metric.evaluate(p).e2;
+    sum += e2;
+    hi = std::max(hi, e2);
+    if (e2 < lo) {
+      lo = e2;
+      best = p;
+    }
+    if (progress && (i % 50 == 49 || i + 1 == s.patterns))
+      progress(i + 1, s.patterns, fmt::format("{} min {:.3f}", name, lo));
+  }
+  OptimizerSettings settings;
+  settings.max_iterations = s.iterations;
+  settings.weights_only = true;
+  const MultiStartResult w = multistart(
+      metric, 1, s.seed, [&](int) { return problem_from_pattern(best); }, settings, 0);
+  settings.weights_only = false;
+  const Problem after_w = w.best_problem;
+  const MultiStartResult wp = multistart(
+      metric, 1, s.seed, [&](int) { return after_w; }, settings, 0);
+  return {name,
+          {lo, sum / s.patterns, hi, w.starts[w.best].run.final_e2,
+           wp.starts[wp.best].run.final_e2},
+          paper};
+}
+
+std::string layout_text(const Pattern& p, const ApiProfile& profile) {
+  const HardwareLayout L = hardware_layout(p, profile);
+  return fmt::format("{}x{} grid, {}x MSAA, reads {}", L.grid_w, L.grid_h, L.sample_count,
+                     format_cost(L.reads()));
+}
+
+struct Figures {
+  double continuous = 0, lattice = 0;
+  std::string layout;
+};
+
+// A family searched continuously, then on the lattice from there.
+Figures search(const Metric& metric, const std::string& family, const ApiProfile& profile,
+               int starts, uint64_t seed) {
+  const FamilySpec spec = parse_family(family, "");
+  const SeedFunction seeds = family_seeds(spec, SeedKind::kJittered, seed, metric.filter());
+  const OptimizerSettings settings;
+  const MultiStartResult r = multistart(metric, starts, seed, seeds, settings, 0);
+  const LatticeSearch lat =
+      lattice_search_from(metric, r.best_problem, seeds, starts, seed, kLatticeSteps, settings);
+  return {r.starts[r.best].run.final_e2, lat.run.final_e2,
+          layout_text(pattern_of(lat.best), profile)};
+}
+
+// A pattern snapped, its weights optimized, then searched on the lattice from there.
+Figures snapped(const Metric& metric, const Pattern& p, const ApiProfile& profile) {
+  Problem problem = problem_from_pattern(snap_to_lattice(p, kLatticeSteps));
+  const LatticeRun run = lattice_descent(metric, problem, kLatticeSteps, OptimizerSettings{});
+  return {metric.evaluate(p).e2, run.final_e2, layout_text(pattern_of(problem), profile)};
+}
+
+}  // namespace
+
+std::vector<Table3Row> table3(const Metric& metric, const Table3Settings& settings,
+                              const StudyProgress& progress) {
+  check_count(settings.patterns, 1000000, "patterns");
+  check_count(settings.iterations, 10000000, "iterations");
+  return {table3_row(metric, settings, "jittered grid", SeedKind::kJittered,
+                     {0.423, 0.622, 0.907, 0.242, 0.169}, progress),
+          table3_row(metric, settings, "Poisson disk", SeedKind::kPoisson,
+                     {0.346, 0.473, 0.782, 0.221, 0.161}, progress)};
+}
+
+// The structures of Hasselgren's schemes A-F below n = 2, FLIPQUAD's edges
+// plus inside samples above.
+std::vector<std::string> figure10_placements(double n) {
+  if (n == 1.25) return {"top-left,bottom,right"};
+  if (n == 1.5) return {"left,bottom,top", "left,bottom-left,top,bottom-right"};
+  if (n == 1.75) return {"bottom-left,inside,right", "bottom-left,left,top,right"};
+  if (n == 2)
+    return {"left,right,bottom,top", "inside,bottom-left,bottom-right,top-left,top-right"};
+  std::string edges = "left,right,bottom,top", inside;
+  for (int i = 0; i < n - 2; ++i) edges += ",inside";
+  for (int i = 0; i < n; ++i) inside += i ? ",inside" : "inside";
+  return {edges, inside};
+}
+
+Figure10 figure10(const Metric& metric, const Figure10Settings& settings,
+                  const StudyProgress& progress) {
+  check_count(settings.starts, 100000, "starts");
+  Figure10 fig;
+  const std::vector<std::string> families = {"P(1,1,{})", "P(4,1+,{})", "P(1,4,{})", "P(4,4,{})"};
+  int total = 0, done = 0;
+  for (const auto& f : families) total += f == "P(4,1+,{})" ? 8 : 5;
+  for (const auto& f : families) {
+    const bool mirrored = f == "P(4,1+,{})";
+    fig.series.push_back(fmt::vformat(f, fmt::make_format_args("n")));
+    std::vector<double> ns = {2, 3, 4, 5, 6};
+    if (mirrored) ns.insert(ns.begin(), {1.25, 1.5, 1.75});
+    for (double n : ns) {
+      const std::string fam = fmt::vformat(f, fmt::make_format_args(format_cost(n)));
+      const int series = static_cast<int>(fig.series.size()) - 1;
+      Figure10Point best{fam, "", n, INFINITY, series};
+      for (const auto& placement :
+           mirrored ? figure10_placements(n) : std::vector<std::string>{""}) {
+        const FamilySpec spec = parse_family(fam, placement);
+        const MultiStartResult r = multistart(
+            metric, settings.starts, settings.seed,
+            family_seeds(spec, SeedKind::kJittered, settings.seed, metric.filter()),
+            OptimizerSettings{}, 0);
+        const double e2 = r.starts[r.best].run.final_e2;
+        if (e2 < best.e2) best = {fam, placement, n, e2, series};
+      }
+      fig.points.push_back(best);
+      if (progress) progress(++done, total, fmt::format("{} {:.4f}", fam, best.e2));
+    }
+  }
+  return fig;
+}
+
+std::vector<HardwareTableRow> hardware_table(const Metric& metric,
+                                             const HardwareTableSettings& settings,
+                                             const StudyProgress& progress) {
+  check_count(settings.starts, 100000, "starts");
+  std::vector<HardwareTableRow> rows;
+  const ApiProfile &tier1 = api_profile("d3d12-tier1"), &tier2 = api_profile("d3d12-tier2");
+  auto row = [&](const std::string& n, const std::string& what, const ApiProfile& profile,
+                 const Figures& f) {
+    rows.push_back({n, what, profile.name, f.layout, f.continuous, f.lattice});
+  };
+  int done = 0;
+  const int total = 4 * 3 + 2 + 7;
+  auto report = [&](int step, const std::string& note) {
+    done += step;
+    if (progress) progress(done, total, note);
+  };
+  for (int n : {2, 4, 8, 16}) {
+    const std::string count = std::to_string(n);
+    const Pattern msaa = catalog_pattern(fmt::format("msaa-{}", n));
+    const double box = metric.evaluate(msaa).e2;
+    row(count, fmt::format("msaa-{} (standard), box resolve", n), tier1,
+        {box, box, layout_text(msaa, tier1)});
+    const double w = metric.evaluate(with_optimized_weights(metric, msaa, false)).e2;
+    row(count, fmt::format("msaa-{} positions, optimized weights", n), tier1,
+        {w, w, layout_text(msaa, tier1)});
+    report(2, fmt::format("msaa-{}", n));
+    // The search's local optima, or the standard pattern polished on the lattice.
+    Figures best =
+        search(metric, fmt::format("P(1,1,{})", n), tier1, settings.starts, settings.seed);
+    const Figures polished = snapped(metric, msaa, tier1);
+    const bool from_standard = polished.lattice < best.lattice;
+    if (from_standard) best.lattice = polished.lattice;
+    row(count,
+        fmt::format("best P(1,1,{}){}", n,
+                    from_standard ? " (msaa-" + count + " polished on the lattice)" : ""),
+        tier1, best);
+    report(1, fmt::format("P(1,1,{})", n));
+    if (n <= 4) {
+      row(count, fmt::format("best P(4,4,{}) (2x2-pixel kernels)", n), tier2,
+          search(metric, fmt::format("P(4,4,{})", n), tier2, settings.starts, settings.seed));
+      report(1, fmt::format("P(4,4,{})", n));
+    }
+  }
+  for (const char* name : {"hasselgren-a", "hasselgren-b", "hasselgren-c", "hasselgren-d",
+                           "hasselgren-e", "hasselgren-f", "quincunx-hasselgren"}) {
+    const Pattern p = catalog_pattern(name);
+    const ApiProfile& profile = p.tile_w == 1 ? tier1 : tier2;
+    row(format_cost(samples_per_pixel(p)), fmt::format("{} snapped, then searched", name),
+        profile, snapped(metric, p, profile));
+    report(1, name);
+  }
+  return rows;
+}
+
+}  // namespace aapat

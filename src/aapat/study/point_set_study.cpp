@@ -1,0 +1,92 @@
+#include "aapat/study/point_set_study.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "aapat/generate/point_processes.h"
+
+namespace aapat {
+namespace {
+
+void check_spectrum_work(size_t points, int size, int realizations) {
+  const double work = static_cast<double>(points) * size * size * realizations;
+  if (work > kMaxSpectrumTerms)
+    throw Error(fmt::format(
+        "spectrum: {} points x {}^2 frequencies x {} realizations = {:.3g} terms exceed the "
+        "limit of {:.3g}; use fewer points, frequencies or realizations",
+        points, size, realizations, work, kMaxSpectrumTerms));
+}
+
+}  // namespace
+
+DiscrepancyReport discrepancy_report(const std::vector<Vec2>& points,
+                                     const StudyProgress& progress) {
+  auto report = [&](int done, const std::string& note) {
+    if (progress) progress(done, 3, note);
+  };
+  DiscrepancyReport r;
+  r.points = points.size();
+  report(0, "L2-star");
+  r.l2_star = l2_star_discrepancy(points);  // refuses too many points before any work
+  report(1, "star");
+  r.star = star_discrepancy(points);
+  report(2, "edge");
+  r.edge = edge_discrepancy(points, 720, [&](int done, int total) {
+    if (done % 16 == 0) report(2, fmt::format("edge {}/{}", done, total));
+  });
+  return r;
+}
+
+SpectrumStudy spectrum_study(const PointSource& source, const SpectrumSettings& s,
+                             const StudyProgress& progress) {
+  if (!(s.size >= 8 && s.size <= 2048))
+    throw ParameterError("size", fmt::format(" {}: expected 8 to 2048 frequencies", s.size));
+  if (!(s.realizations >= 1 && s.realizations <= 100000))
+    throw ParameterError("realizations",
+                         fmt::format(" {}: expected 1 to 100000", s.realizations));
+  if (s.expected_points > 0) check_spectrum_work(s.expected_points, s.size, s.realizations);
+  SpectrumStudy out;
+  for (int r = 0; r < s.realizations; ++r) {
+    const auto pts = source(r);
+    out.points = pts.size();
+    check_spectrum_work(out.points, s.size, 1);
+    accumulate(out.mean, power_spectrum(pts, s.size), 1.0 / s.realizations);
+    if (progress) progress(r + 1, s.realizations, "");
+  }
+  out.radial = radial_average(out.mean);
+  const auto& radius = out.radial.radius;
+  if (!radius.empty()) {
+    double sum = 0;
+    int count = 0;
+    for (size_t i = radius.size() / 2; i < radius.size(); ++i) sum += out.radial.power[i], ++count;
+    out.tail_power = sum / count;
+    out.tail_radius = radius[radius.size() / 2];
+  }
+  return out;
+}
+
+std::vector<LineSpectrum> line_spectra(const std::vector<std::string>& kinds, int n,
+                                       uint64_t seed, int frequencies, double max_frequency) {
+  std::vector<LineSpectrum> out;
+  for (const auto& kind : kinds) {
+    const auto xs = line_points(kind, n, seed);
+    LineSpectrum line{kind, xs.size(), power_spectrum_1d(xs, frequencies, max_frequency), {}, {}};
+    const int bins = std::min(frequencies, 2000);
+    const int first =
+        static_cast<int>(std::ceil(2.0 / xs.size() / max_frequency * frequencies));
+    for (int b = 0; b < bins; ++b) {
+      const int k0 = std::max(first, b * frequencies / bins), k1 = (b + 1) * frequencies / bins;
+      if (k1 <= k0) continue;
+      double sum = 0;
+      for (int k = k0; k < k1; ++k) sum += line.power[k];
+      line.bin_frequency.push_back((k0 + k1) / 2.0 * max_frequency / frequencies);
+      line.bin_power.push_back(sum / std::max(1, k1 - k0));
+    }
+    out.push_back(std::move(line));
+  }
+  return out;
+}
+
+}  // namespace aapat

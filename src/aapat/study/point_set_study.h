@@ -1,0 +1,57 @@
+// What `aapat discrepancy` and `aapat spectrum` measure of a point set: the
+// three discrepancies at once, the 2D power spectrum averaged over
+// realizations with its radial profile, and the 1D spectra of Goss & Wu's
+// Figure 8 with the binned curves a plot can show.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "aapat/analyze/discrepancy.h"
+#include "aapat/analyze/spectrum.h"
+#include "aapat/study/progress.h"
+
+namespace aapat {
+
+struct DiscrepancyReport {
+  size_t points = 0;
+  double l2_star = 0;
+  StarDiscrepancy star;
+  EdgeDiscrepancy edge;
+};
+DiscrepancyReport discrepancy_report(const std::vector<Vec2>& points,
+                                     const StudyProgress& progress = {});
+
+// The exact 2D spectrum's work: points x frequencies x realizations.
+inline constexpr double kMaxSpectrumTerms = 68719476736.0;  // 2^36
+
+// Realization r of a point source (a file has one, whatever r).
+using PointSource = std::function<std::vector<Vec2>(int realization)>;
+
+struct SpectrumSettings {
+  int size = 256;        // frequencies -size/2 .. size/2-1 per axis
+  int realizations = 1;  // point sets averaged
+  size_t expected_points = 0;  // when known, the work is checked before any point is drawn
+};
+struct SpectrumStudy {
+  Spectrum2D mean;
+  RadialProfile radial;
+  size_t points = 0;  // of the last realization
+  double tail_radius = 0, tail_power = 0;  // mean power from the middle ring outwards
+};
+SpectrumStudy spectrum_study(const PointSource& source, const SpectrumSettings& settings,
+                             const StudyProgress& progress = {});
+
+struct LineSpectrum {
+  std::string kind;
+  size_t points = 0;
+  std::vector<double> power;  // at k * max_frequency / frequencies
+  // The mean of each of up to 2000 bins, from past the DC peak's main lobe
+  // (|f| < 2 / length) on: a curve a plot can draw.
+  std::vector<double> bin_frequency, bin_power;
+};
+std::vector<LineSpectrum> line_spectra(const std::vector<std::string>& kinds, int n,
+                                       uint64_t seed, int frequencies, double max_frequency);
+
+}  // namespace aapat
