@@ -10,9 +10,6 @@
 #include <memory>
 #include <ostream>
 
-#include "cli/commands.h"
-#include "cli/progress.h"
-#include "cli/reference_options.h"
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/metric.h"
 #include "aapat/io/atomic_file.h"
@@ -21,6 +18,10 @@
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/png_image.h"
 #include "aapat/render/animation.h"
+#include "aapat/study/pattern_studies.h"
+#include "cli/commands.h"
+#include "cli/progress.h"
+#include "cli/reference_options.h"
 
 namespace aapat {
 namespace {
@@ -72,17 +73,82 @@ void write_mp4(const std::string& dir, const std::string& path, int fps) {
   }
 }
 
+struct AnimateOptions : AnimationOptions {
+  std::string pattern, filter, frames_dir, histogram, gif, mp4;
+  int fps = 12;
+  bool json = false;
+};
+
+void run_animate(AnimateOptions& o, std::ostream& out) {
+  const AnimationSettings a = o.settings();
+  for (const auto& [path, ext] : {std::pair{o.gif, ".gif"}, std::pair{o.mp4, ".mp4"}})
+    if (!path.empty() && !path.ends_with(ext))
+      throw Error(fmt::format("'{}' must end in {}", path, ext));
+  if (!o.mp4.empty()) check_ffmpeg(o.mp4);
+  if (!o.frames_dir.empty()) check_directory_target(o.frames_dir, "--frames-dir");
+  // ffmpeg reads PNG frames from a folder: --frames-dir, or a temporary one.
+  std::string frames_dir = o.frames_dir;
+  const bool temporary_frames = !o.mp4.empty() && frames_dir.empty();
+  if (temporary_frames)
+    frames_dir = (std::filesystem::temp_directory_path() /
+                  fmt::format("aapat-frames-{}", static_cast<long>(::getpid())))
+                     .string();
+  struct Cleanup {  // the temporary frames, whatever happens
+    std::string dir;
+    ~Cleanup() {
+      std::error_code ec;
+      if (!dir.empty()) std::filesystem::remove_all(dir, ec);
+    }
+  } cleanup{temporary_frames ? frames_dir : ""};
+  Sampling s;
+  s.pattern = resolve_pattern(o.pattern);
+  std::optional<Filter> filter;
+  if (!o.filter.empty()) filter = make_filter(o.filter);
+  if (!frames_dir.empty()) ensure_directory(frames_dir, "--frames-dir");
+  Progress bar("animate");
+  GreyFrames gif{a.width, a.height, std::max(2, 100 / o.fps), {}};
+  const ImageError e = animate(
+      a, s, filter,
+      [&](int f, const Image& img) {
+        // Written now: ffmpeg reads them; on an error the run's new frames are deleted.
+        if (!frames_dir.empty())
+          write_file_now(fmt::format("{}/frame-{:04d}.png", frames_dir, f),
+                         png_gray_bytes(img.width, img.height, grey_pixels(img)));
+        if (!o.gif.empty()) gif.frames.push_back(grey_pixels(img));
+        bar.update(f + 1, a.frames, "");
+      },
+      o.reference.source());
+  if (!o.gif.empty()) write_gif(o.gif, gif);
+  if (!o.mp4.empty()) write_mp4(frames_dir, o.mp4, o.fps);
+  if (!o.histogram.empty()) {
+    std::string csv = "deviation,count,contribution\n";
+    for (int i = 0; i < 256; ++i)
+      csv += fmt::format("{},{},{:.6g}\n", i, e.count[i], e.contribution[i]);
+    write_output(o.histogram, csv, out);
+  }
+  if (o.json) {
+    JsonObject doc = json_report("animate");
+    doc.update(JsonObject{{"animation", a.animation},
+                          {"pattern", o.pattern},
+                          {"filter", filter ? filter->name() : "pattern weights"},
+                          {"frames", a.frames},
+                          {"width", a.width},
+                          {"height", a.height},
+                          {"rmse", e.rmse},
+                          {"max_deviation", e.max_deviation}});
+    out << json_text(doc);
+    return;
+  }
+  out << fmt::format("{} animation, {} frames of {}x{}, {}: RMSE {:.3f}, max deviation {}\n",
+                     a.animation, a.frames, a.width, a.width, o.pattern, e.rmse, e.max_deviation);
+}
+
 }  // namespace
 
 Action add_animate_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("animate", "render an animation with a pattern against a reference");
-  struct Options : AnimationOptions {
-    std::string pattern, filter, frames_dir, histogram, gif, mp4;
-    int fps = 12;
-    bool json = false;
-  };
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<AnimateOptions>();
   cmd->add_option("animation", o->a.animation, "circle (translating) or triangle (rotating)")
       ->required();
   cmd->add_option("--pattern", o->pattern, "catalog pattern or pattern file")->required();
@@ -97,70 +163,7 @@ Action add_animate_command(CLI::App& app) {
       ->check(CLI::Range(1, 100));
   cmd->add_option("--histogram", o->histogram, "squared-error histogram of all frames (.csv)");
   cmd->add_flag("--json", o->json, "print JSON");
-  return [o](std::ostream& out) {
-    const AnimationSettings a = o->settings();
-    for (const auto& [path, ext] : {std::pair{o->gif, ".gif"}, std::pair{o->mp4, ".mp4"}})
-      if (!path.empty() && !path.ends_with(ext))
-        throw Error(fmt::format("'{}' must end in {}", path, ext));
-    if (!o->mp4.empty()) check_ffmpeg(o->mp4);
-    if (!o->frames_dir.empty()) check_directory_target(o->frames_dir, "--frames-dir");
-    // ffmpeg reads PNG frames from a folder: --frames-dir, or a temporary one.
-    std::string frames_dir = o->frames_dir;
-    const bool temporary_frames = !o->mp4.empty() && frames_dir.empty();
-    if (temporary_frames)
-      frames_dir = (std::filesystem::temp_directory_path() /
-                    fmt::format("aapat-frames-{}", static_cast<long>(::getpid())))
-                       .string();
-    struct Cleanup {  // the temporary frames, whatever happens
-      std::string dir;
-      ~Cleanup() {
-        std::error_code ec;
-        if (!dir.empty()) std::filesystem::remove_all(dir, ec);
-      }
-    } cleanup{temporary_frames ? frames_dir : ""};
-    Sampling s;
-    s.pattern = resolve_pattern(o->pattern);
-    std::optional<Filter> filter;
-    if (!o->filter.empty()) filter = make_filter(o->filter);
-    if (!frames_dir.empty()) ensure_directory(frames_dir, "--frames-dir");
-    Progress bar("animate");
-    GreyFrames gif{a.width, a.height, std::max(2, 100 / o->fps), {}};
-    const ImageError e = animate(
-        a, s, filter,
-        [&](int f, const Image& img) {
-          // Written now: ffmpeg reads them; on an error the run's new frames are deleted.
-          if (!frames_dir.empty())
-            write_file_now(fmt::format("{}/frame-{:04d}.png", frames_dir, f),
-                           png_gray_bytes(img.width, img.height, grey_pixels(img)));
-          if (!o->gif.empty()) gif.frames.push_back(grey_pixels(img));
-          bar.update(f + 1, a.frames, "");
-        },
-        o->reference.source());
-    if (!o->gif.empty()) write_gif(o->gif, gif);
-    if (!o->mp4.empty()) write_mp4(frames_dir, o->mp4, o->fps);
-    if (!o->histogram.empty()) {
-      std::string csv = "deviation,count,contribution\n";
-      for (int i = 0; i < 256; ++i)
-        csv += fmt::format("{},{},{:.6g}\n", i, e.count[i], e.contribution[i]);
-      write_output(o->histogram, csv, out);
-    }
-    if (o->json) {
-      JsonObject doc = json_report("animate");
-      doc.update(JsonObject{{"animation", a.animation},
-                            {"pattern", o->pattern},
-                            {"filter", filter ? filter->name() : "pattern weights"},
-                            {"frames", a.frames},
-                            {"width", a.width},
-                            {"height", a.height},
-                            {"rmse", e.rmse},
-                            {"max_deviation", e.max_deviation}});
-      out << json_text(doc);
-      return;
-    }
-    out << fmt::format("{} animation, {} frames of {}x{}, {}: RMSE {:.3f}, max deviation {}\n",
-                       a.animation, a.frames, a.width, a.width, o->pattern, e.rmse,
-                       e.max_deviation);
-  };
+  return [o](std::ostream& out) { run_animate(*o, out); };
 }
 
 Action add_table2_command(CLI::App& app) {
@@ -170,66 +173,46 @@ Action add_table2_command(CLI::App& app) {
   struct Options : AnimationOptions {
     bool json = false;
   };
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<AnimateOptions>();
   add_animation_options(cmd, *o);
   cmd->add_flag("--json", o->json, "print the table as JSON (docs/json.md)");
   return [o](std::ostream& out) {
-    const auto a = std::make_shared<AnimationSettings>(o->settings());
-    JsonObject rows_json = JsonObject::array();
-    const ReferenceSource references = o->reference.source();
-    struct Row {
-      const char* pattern;
-      const char* label;
-      double e2, rmse;
-      int max_dev;  // Hasselgren et al. Table 2
-    };
-    const Row rows[] = {{"centroid", "Centroid sampling", 1.256, 9.810, 131},
-                        {"diagonal-hasselgren", "Diagonal", 0.692, 6.500, 126},
-                        {"hasselgren-a", "Scheme A (FLIPTRI)", 0.554, 7.548, 159},
-                        {"hasselgren-b", "Scheme B", 0.531, 5.139, 114},
-                        {"hasselgren-c", "Scheme C", 0.527, 4.830, 107},
-                        {"hasselgren-d", "Scheme D", 0.497, 5.000, 107},
-                        {"hasselgren-e", "Scheme E", 0.488, 4.574, 108},
-                        {"quincunx-hasselgren", "Quincunx", 0.484, 4.400, 95},
-                        {"hasselgren-f", "Scheme F (FLIPQUAD)", 0.359, 3.759, 76}};
-    const Metric metric(make_filter(kDefaultFilter), laine_aila_acuity());
-    std::string table;
-    Progress bar("table2");
-    int done = 0;
-    for (const Row& r : rows) {
-      Sampling s;
-      s.pattern = resolve_pattern(r.pattern);
-      const ImageError e = animate(*a, s, std::nullopt, {}, references);
-      const double e2 = metric.evaluate(*s.pattern).e2;
-      table += fmt::format("{:<21} {:>6.3f} ({:.3f})  {:>6.3f} ({:.3f})  {:>4} ({})\n", r.label, e2,
-                           r.e2, e.rmse, r.rmse, e.max_deviation, r.max_dev);
-      rows_json.push_back(
-          {{"pattern", r.pattern},
-           {"label", r.label},
-           {"e2", e2},
-           {"rmse", e.rmse},
-           {"max_deviation", e.max_deviation},
-           {"paper", {{"e2", r.e2}, {"rmse", r.rmse}, {"max_deviation", r.max_dev}}}});
-      bar.update(++done, static_cast<int>(std::size(rows)), r.pattern);
+    const AnimationSettings a = o->settings();
+    std::vector<Table2Row> rows;
+    {
+      Progress bar("table2");
+      rows = table2(a, o->reference.source(), bar.callback());
     }
     if (o->json) {
+      JsonObject js = JsonObject::array();
+      for (const Table2Row& r : rows)
+        js.push_back({{"pattern", r.pattern},
+                      {"label", r.label},
+                      {"e2", r.e2},
+                      {"rmse", r.rmse},
+                      {"max_deviation", r.max_deviation},
+                      {"paper",
+                       {{"e2", r.paper_e2},
+                        {"rmse", r.paper_rmse},
+                        {"max_deviation", r.paper_max_deviation}}}});
       JsonObject doc = json_report("table2");
       doc.update(JsonObject{{"animation", "circle"},
-                            {"frames", a->frames},
-                            {"width", a->width},
-                            {"height", a->height},
-                            {"reference", describe_reference(a->reference)},
-                            {"rows", rows_json}});
+                            {"frames", a.frames},
+                            {"width", a.width},
+                            {"height", a.height},
+                            {"reference", describe_reference(a.reference)},
+                            {"rows", js}});
       out << json_text(doc);
       return;
     }
     out << fmt::format(
         "Hasselgren Table 2 re-measured: translating circle, {} frames of {}x{}, reference {} "
         "jittered samples per pixel with {}\naapat (paper)         E2               RMSE           "
-        " "
-        "  max dev.\n{}",
-        a->frames, a->width, a->width, a->reference.samples,
-        make_filter(a->reference.filter).name(), table);
+        "   max dev.\n",
+        a.frames, a.width, a.width, a.reference.samples, make_filter(a.reference.filter).name());
+    for (const Table2Row& r : rows)
+      out << fmt::format("{:<21} {:>6.3f} ({:.3f})  {:>6.3f} ({:.3f})  {:>4} ({})\n", r.label, r.e2,
+                         r.paper_e2, r.rmse, r.paper_rmse, r.max_deviation, r.paper_max_deviation);
   };
 }
 

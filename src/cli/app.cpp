@@ -8,10 +8,10 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "cli/commands.h"
 #include "aapat/core/geometry.h"
-#include "aapat/version.h"
 #include "aapat/io/atomic_file.h"
+#include "aapat/version.h"
+#include "cli/commands.h"
 
 namespace aapat {
 namespace {
@@ -19,11 +19,23 @@ namespace {
 std::ostream* g_warnings = nullptr;
 
 // The flags that give the library's named parameters.
-const std::map<std::string, std::string> kFlagOfParameter = {
-    {"family", "--family"}, {"placement", "--placement"}, {"seeds", "--seeds"},
-    {"lock", "--lock"},     {"lattice", "--lattice"},     {"cost", "--cost"},
-    {"tile", "--tile"},     {"size", "--size"},           {"norm", "--norm"},
-    {"1d", "--1d"}};
+const std::map<std::string, std::string> kFlagOfParameter = {{"family", "--family"},
+                                                             {"placement", "--placement"},
+                                                             {"seeds", "--seeds"},
+                                                             {"lock", "--lock"},
+                                                             {"lattice", "--lattice"},
+                                                             {"cost", "--cost"},
+                                                             {"tile", "--tile"},
+                                                             {"size", "--size"},
+                                                             {"norm", "--norm"},
+                                                             {"1d", "--1d"},
+                                                             {"rows", "--rows"},
+                                                             {"columns", "--columns"},
+                                                             {"translate", "--translate"},
+                                                             {"starts", "--starts"},
+                                                             {"patterns", "--patterns"},
+                                                             {"iterations", "--iterations"},
+                                                             {"realizations", "--realizations"}};
 
 // The message of the exception in flight, whatever its type: library errors
 // as they are, the rest named for what they mean to a user.

@@ -7,9 +7,6 @@
 #include <memory>
 #include <ostream>
 
-#include "cli/commands.h"
-#include "cli/metric_options.h"
-#include "cli/progress.h"
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/text.h"
 #include "aapat/generate/enumerate.h"
@@ -18,6 +15,9 @@
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/pattern_svg.h"
 #include "aapat/study/enumeration.h"
+#include "cli/commands.h"
+#include "cli/metric_options.h"
+#include "cli/progress.h"
 
 namespace aapat {
 namespace {
@@ -32,7 +32,8 @@ std::string counts_text(const Enumeration& e, const EnumerationSettings& s) {
 }
 
 std::string rows_text(const Enumeration& e, bool optimized) {
-  std::string text = fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", "id", "n", "reads", "E2", "placement");
+  std::string text =
+      fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", "id", "n", "reads", "E2", "placement");
   for (const EnumerationRow& r : e.rows)
     text += fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", r.id, format_cost(r.n), r.config.samples(),
                         optimized ? fmt::format("{:.4f}", r.e2) : "-", r.config.sites());
@@ -79,21 +80,59 @@ std::string gallery(const Enumeration& e, const std::vector<double>& costs, int 
   return gallery_svg(items, top, "Best P(4,1+,n) configurations per cost; disc area = weight");
 }
 
+struct EnumerateOptions {
+  std::string costs = "1.25,1.5,1.75,2";
+  int max_per_edge = 8, starts = 32, top = 3;
+  bool cull_one_edge = false, optimize = false;
+  uint64_t seed = 1;
+  std::string csv, gallery, best_dir;
+  bool json = false;
+  MetricOptions metric;
+};
+
+void run_enumerate(EnumerateOptions& o, std::ostream& out) {
+  // With --json the document alone goes to stdout; the text goes nowhere.
+  std::ostream discard(nullptr);
+  std::ostream& text = o.json ? discard : out;
+  const Metric metric = o.metric.make();  // a bad --filter or --acuity fails first
+  EnumerationSettings s;
+  s.costs.clear();
+  for (std::string_view c : split(o.costs)) s.costs.push_back(parse_number(c, "--cost"));
+  s.rules = {o.max_per_edge, o.cull_one_edge};
+  s.optimize = o.optimize;
+  s.starts = o.starts;
+  s.seed = o.seed;
+  if ((o.gallery.size() || o.best_dir.size()) && !o.optimize)
+    throw Error("--gallery and --best-dir show optimized patterns: add --optimize");
+  if (!o.best_dir.empty()) check_directory_target(o.best_dir, "--best-dir");
+  s.optimize = false;  // the counts first, so that they show before the long part
+  Enumeration e = enumerate_study(metric, s);
+  text << counts_text(e, s);
+  if (!o.optimize && o.csv.empty() && !o.json) return;
+  if (o.optimize) {
+    Progress bar("enumerate");
+    s.optimize = true;
+    e = enumerate_study(metric, s, bar.callback());
+  }
+  text << rows_text(e, o.optimize);
+  if (!o.csv.empty()) write_output(o.csv, rows_csv(e, o.optimize), out);
+  if (o.json) out << json_text(enumeration_json(e, o));
+  if (!o.gallery.empty()) write_output(o.gallery, gallery(e, s.costs, o.top), out);
+  if (!o.best_dir.empty()) {
+    ensure_directory(o.best_dir, "--best-dir");
+    for (double n : s.costs)
+      if (const EnumerationRow* best = e.best(n))
+        save_pattern_file(best->best,
+                          fmt::format("{}/best-P4-1+-{}.json", o.best_dir, format_cost(n)));
+  }
+}
+
 }  // namespace
 
 Action add_enumerate_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("enumerate",
                                  "list, optimize and rank every P(4,1+,n) placement configuration");
-  struct Options {
-    std::string costs = "1.25,1.5,1.75,2";
-    int max_per_edge = 8, starts = 32, top = 3;
-    bool cull_one_edge = false, optimize = false;
-    uint64_t seed = 1;
-    std::string csv, gallery, best_dir;
-    bool json = false;
-    MetricOptions metric;
-  };
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<EnumerateOptions>();
   cmd->add_option("--cost", o->costs, "comma list of costs n, multiples of 1/4")
       ->capture_default_str();
   cmd->add_option("--max-per-edge", o->max_per_edge,
@@ -114,42 +153,7 @@ Action add_enumerate_command(CLI::App& app) {
   cmd->add_option("--best-dir", o->best_dir, "write the best pattern of each n into this folder");
   o->metric.add_to(cmd);
 
-  return [o](std::ostream& out) {
-    // With --json the document alone goes to stdout; the text goes nowhere.
-    std::ostream discard(nullptr);
-    std::ostream& text = o->json ? discard : out;
-    const Metric metric = o->metric.make();  // a bad --filter or --acuity fails first
-    EnumerationSettings s;
-    s.costs.clear();
-    for (std::string_view c : split(o->costs)) s.costs.push_back(parse_number(c, "--cost"));
-    s.rules = {o->max_per_edge, o->cull_one_edge};
-    s.optimize = o->optimize;
-    s.starts = o->starts;
-    s.seed = o->seed;
-    if ((o->gallery.size() || o->best_dir.size()) && !o->optimize)
-      throw Error("--gallery and --best-dir show optimized patterns: add --optimize");
-    if (!o->best_dir.empty()) check_directory_target(o->best_dir, "--best-dir");
-    s.optimize = false;  // the counts first, so that they show before the long part
-    Enumeration e = enumerate_study(metric, s);
-    text << counts_text(e, s);
-    if (!o->optimize && o->csv.empty() && !o->json) return;
-    if (o->optimize) {
-      Progress bar("enumerate");
-      s.optimize = true;
-      e = enumerate_study(metric, s, bar.callback());
-    }
-    text << rows_text(e, o->optimize);
-    if (!o->csv.empty()) write_output(o->csv, rows_csv(e, o->optimize), out);
-    if (o->json) out << json_text(enumeration_json(e, *o));
-    if (!o->gallery.empty()) write_output(o->gallery, gallery(e, s.costs, o->top), out);
-    if (!o->best_dir.empty()) {
-      ensure_directory(o->best_dir, "--best-dir");
-      for (double n : s.costs)
-        if (const EnumerationRow* best = e.best(n))
-          save_pattern_file(best->best,
-                            fmt::format("{}/best-P4-1+-{}.json", o->best_dir, format_cost(n)));
-    }
-  };
+  return [o](std::ostream& out) { run_enumerate(*o, out); };
 }
 
 }  // namespace aapat

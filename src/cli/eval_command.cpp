@@ -6,24 +6,86 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "cli/commands.h"
-#include "cli/metric_options.h"
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/profile_plot.h"
 #include "aapat/optimize/descent.h"
+#include "cli/commands.h"
+#include "cli/metric_options.h"
 
 namespace aapat {
 
+namespace {
+
+struct EvalOptions {
+  std::vector<std::string> patterns;
+  MetricOptions metric;
+  bool json = false, optimized_weights = false;
+  std::string profile;
+};
+
+void run_eval(EvalOptions& o, std::ostream& out) {
+  if (!o.profile.empty() && !o.profile.ends_with(".svg") && !o.profile.ends_with(".csv"))
+    throw Error(fmt::format("--profile: '{}' must end in .svg or .csv", o.profile));
+  const Metric metric = o.metric.make();
+  std::vector<Pattern> patterns;
+  for (const auto& name : o.patterns) patterns.push_back(resolve_pattern(name));
+
+  JsonObject rows = JsonObject::array();
+  std::vector<ProfileSeries> series;
+  if (!o.json)
+    out << fmt::format(
+        "filter {}, acuity {} ({} angles), norm {}\n{:<22} {:<14} {:>6} {:>8} {:>12} {:>7}{}\n",
+        metric.filter().name(), metric.acuity().name, metric.angle_count(), o.metric.norm,
+        "pattern", "family", "n", "E2", "worst angle", "kernel",
+        o.optimized_weights ? "  E2 opt. W" : "");
+  for (const Pattern& p : patterns) {
+    const PatternError e = metric.evaluate(p);
+    const double n = samples_per_pixel(p);
+    const double e2_w =
+        o.optimized_weights ? metric.evaluate(with_optimized_weights(metric, p, false)).e2 : 0;
+    if (o.json) {
+      rows.push_back({{"pattern", p.name},
+                      {"family", family(p)},
+                      {"n", n},
+                      {"e2", e.e2},
+                      {"worst_angle_deg", e.worst_angle_deg},
+                      {"worst_kernel", e.worst_kernel},
+                      {"kernel_e2", e.kernel_e2}});
+      if (o.optimized_weights) rows.back()["e2_optimized_weights"] = e2_w;
+    } else {
+      out << fmt::format("{:<22} {:<14} {:>6} {:>8.4f} {:>12g} {:>7}{}\n", p.name, family(p),
+                         format_cost(n), e.e2, e.worst_angle_deg, e.worst_kernel,
+                         o.optimized_weights ? fmt::format("  {:>10.4f}", e2_w) : "");
+    }
+    if (!o.profile.empty())
+      series.push_back({p.name, metric.profile(make_kernel(p, e.worst_kernel))});
+  }
+  if (o.json) {
+    JsonObject doc = json_report("eval");
+    doc["filter"] = metric.filter().name();
+    doc["acuity"] = metric.acuity().name;
+    doc["angles"] = metric.angle_count();
+    doc["norm"] = o.metric.norm;
+    doc["rows"] = rows;
+    out << json_text(doc);
+  }
+  if (!o.profile.empty()) {
+    const std::string title = fmt::format("W(theta) E1(theta), filter {}, acuity {}",
+                                          metric.filter().name(), metric.acuity().name);
+    write_output(o.profile,
+                 o.profile.ends_with(".svg") ? profile_svg(metric.acuity(), series, title)
+                                             : profile_csv(metric.acuity(), series),
+                 out);
+    if (!o.json) out << "wrote " << o.profile << "\n";
+  }
+}
+
+}  // namespace
+
 Action add_eval_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("eval", "evaluate E2 of patterns against a reference filter");
-  struct Options {
-    std::vector<std::string> patterns;
-    MetricOptions metric;
-    bool json = false, optimized_weights = false;
-    std::string profile;
-  };
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<EvalOptions>();
   cmd->add_option("patterns", o->patterns, "catalog names or pattern files (.json)")->required();
   o->metric.add_to(cmd);
   cmd->add_flag("--json", o->json, "print JSON (docs/json.md): a row per pattern");
@@ -31,62 +93,7 @@ Action add_eval_command(CLI::App& app) {
                 "also the E2 with weights optimized for the same positions");
   cmd->add_option("--profile", o->profile,
                   "write W(theta) E1(theta) of all patterns to a .svg plot or .csv table");
-  return [o](std::ostream& out) {
-    if (!o->profile.empty() && !o->profile.ends_with(".svg") && !o->profile.ends_with(".csv"))
-      throw Error(fmt::format("--profile: '{}' must end in .svg or .csv", o->profile));
-    const Metric metric = o->metric.make();
-    std::vector<Pattern> patterns;
-    for (const auto& name : o->patterns) patterns.push_back(resolve_pattern(name));
-
-    JsonObject rows = JsonObject::array();
-    std::vector<ProfileSeries> series;
-    if (!o->json)
-      out << fmt::format(
-          "filter {}, acuity {} ({} angles), norm {}\n{:<22} {:<14} {:>6} {:>8} {:>12} {:>7}{}\n",
-          metric.filter().name(), metric.acuity().name, metric.angle_count(), o->metric.norm,
-          "pattern", "family", "n", "E2", "worst angle", "kernel",
-          o->optimized_weights ? "  E2 opt. W" : "");
-    for (const Pattern& p : patterns) {
-      const PatternError e = metric.evaluate(p);
-      const double n = samples_per_pixel(p);
-      const double e2_w =
-          o->optimized_weights ? metric.evaluate(with_optimized_weights(metric, p, false)).e2 : 0;
-      if (o->json) {
-        rows.push_back({{"pattern", p.name},
-                        {"family", family(p)},
-                        {"n", n},
-                        {"e2", e.e2},
-                        {"worst_angle_deg", e.worst_angle_deg},
-                        {"worst_kernel", e.worst_kernel},
-                        {"kernel_e2", e.kernel_e2}});
-        if (o->optimized_weights) rows.back()["e2_optimized_weights"] = e2_w;
-      } else {
-        out << fmt::format("{:<22} {:<14} {:>6} {:>8.4f} {:>12g} {:>7}{}\n", p.name, family(p),
-                           format_cost(n), e.e2, e.worst_angle_deg, e.worst_kernel,
-                           o->optimized_weights ? fmt::format("  {:>10.4f}", e2_w) : "");
-      }
-      if (!o->profile.empty())
-        series.push_back({p.name, metric.profile(make_kernel(p, e.worst_kernel))});
-    }
-    if (o->json) {
-      JsonObject doc = json_report("eval");
-      doc["filter"] = metric.filter().name();
-      doc["acuity"] = metric.acuity().name;
-      doc["angles"] = metric.angle_count();
-      doc["norm"] = o->metric.norm;
-      doc["rows"] = rows;
-      out << json_text(doc);
-    }
-    if (!o->profile.empty()) {
-      const std::string title = fmt::format("W(theta) E1(theta), filter {}, acuity {}",
-                                            metric.filter().name(), metric.acuity().name);
-      write_output(o->profile,
-                   o->profile.ends_with(".svg") ? profile_svg(metric.acuity(), series, title)
-                                                : profile_csv(metric.acuity(), series),
-                   out);
-      if (!o->json) out << "wrote " << o->profile << "\n";
-    }
-  };
+  return [o](std::ostream& out) { run_eval(*o, out); };
 }
 
 }  // namespace aapat

@@ -9,11 +9,11 @@
 #include <memory>
 #include <ostream>
 
+#include "aapat/io/json_report.h"
+#include "aapat/study/paper_tables.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
-#include "aapat/io/json_report.h"
-#include "aapat/study/paper_tables.h"
 
 namespace aapat {
 

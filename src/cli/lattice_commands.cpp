@@ -8,8 +8,6 @@
 #include <ostream>
 #include <tuple>
 
-#include "cli/commands.h"
-#include "cli/metric_options.h"
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/hardware_layout.h"
 #include "aapat/core/lattice.h"
@@ -17,8 +15,9 @@
 #include "aapat/io/atomic_file.h"
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
-#include "aapat/optimize/descent.h"
-#include "aapat/optimize/problem.h"
+#include "aapat/study/pattern_studies.h"
+#include "cli/commands.h"
+#include "cli/metric_options.h"
 
 namespace aapat {
 
@@ -49,19 +48,8 @@ Action add_snap_command(CLI::App& app) {
       throw Error("--nonnegative constrains the weights --optimize-weights finds: add it");
     const Metric metric = o->metric.make();
     const Pattern before = resolve_pattern(o->pattern);
-    Pattern after = snap_to_lattice(before, o->lattice);
-    after.name = fmt::format("{}-lattice{}", before.name, o->lattice);
-    const double e_before = metric.evaluate(before).e2, e_snapped = metric.evaluate(after).e2;
-    double e_weights = e_snapped;
-    if (o->weights) {
-      after = with_optimized_weights(metric, after, o->nonnegative);
-      e_weights = metric.evaluate(after).e2;
-    }
-    double moved = 0;
-    for (size_t k = 0; k < before.sets.size(); ++k)
-      for (size_t i = 0; i < before.sets[k].size(); ++i)
-        moved = std::max(moved, std::hypot(after.sets[k][i].x - before.sets[k][i].x,
-                                           after.sets[k][i].y - before.sets[k][i].y));
+    const SnapResult r = snap_study(metric, before, o->lattice, o->weights, o->nonnegative);
+    const Pattern& after = r.snapped;
     if (!o->output.empty()) save_pattern_file(after, o->output);
     if (o->json) {
       JsonObject js = json_report("snap");
@@ -69,22 +57,23 @@ Action add_snap_command(CLI::App& app) {
                            {"lattice", o->lattice},
                            {"filter", metric.filter().name()},
                            {"acuity", metric.acuity().name},
-                           {"e2_before", e_before},
-                           {"e2_snapped", e_snapped},
-                           {"largest_move", moved},
+                           {"e2_before", r.e2_before},
+                           {"e2_snapped", r.e2_snapped},
+                           {"largest_move", r.largest_move},
                            {"family", family(after)},
                            {"n", samples_per_pixel(after)}});
-      if (o->weights) js["e2_optimized_weights"] = e_weights;
+      if (r.e2_optimized_weights) js["e2_optimized_weights"] = *r.e2_optimized_weights;
       out << json_text(js);
       return;
     }
     out << fmt::format(
         "{} on the 1/{} lattice ({}): E2 {:.4f} -> {:.4f} ({:+.4f}); largest move "
         "{:.4f} pixel\n",
-        before.name, o->lattice, family(after), e_before, e_snapped, e_snapped - e_before, moved);
-    if (o->weights)
+        before.name, o->lattice, family(after), r.e2_before, r.e2_snapped,
+        r.e2_snapped - r.e2_before, r.largest_move);
+    if (r.e2_optimized_weights)
       out << fmt::format("with weights optimized for the snapped positions: E2 {:.4f}\n",
-                         e_weights);
+                         *r.e2_optimized_weights);
     for (size_t k = 0; k < after.sets.size(); ++k)
       for (const Vec2& s : after.sets[k])
         out << fmt::format("  set {}: ({:>2}/{}, {:>2}/{})  {}\n", k, std::lround(s.x * o->lattice),

@@ -4,13 +4,13 @@
 #include <memory>
 #include <ostream>
 
-#include "cli/commands.h"
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter_catalog.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/json_report.h"
 #include "aapat/render/scene.h"
+#include "cli/commands.h"
 
 namespace aapat {
 

@@ -1,7 +1,7 @@
 #include <iostream>
 
-#include "cli/app.h"
 #include "aapat/io/atomic_file.h"
+#include "cli/app.h"
 
 int main(int argc, char** argv) {
   aapat::remove_temporaries_on_signals();

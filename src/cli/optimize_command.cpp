@@ -6,9 +6,6 @@
 #include <memory>
 #include <ostream>
 
-#include "cli/commands.h"
-#include "cli/metric_options.h"
-#include "cli/progress.h"
 #include "aapat/core/hardware_layout.h"
 #include "aapat/core/lattice.h"
 #include "aapat/generate/enumerate.h"
@@ -19,22 +16,26 @@
 #include "aapat/optimize/lattice_search.h"
 #include "aapat/optimize/multistart.h"
 #include "aapat/study/optimize_run.h"
+#include "cli/commands.h"
+#include "cli/metric_options.h"
+#include "cli/progress.h"
 
 namespace aapat {
 namespace {
 
 std::string optimize_text(const OptimizeRunResult& r, const Metric& metric) {
   const StartRecord& best = r.best_start();
-  std::string text = fmt::format("optimized {} ({}, acuity {}, norm {})\n", r.description,
-                                 metric.filter().name(), metric.acuity().name,
-                                 format_norm(metric.norm()));
+  std::string text =
+      fmt::format("optimized {} ({}, acuity {}, norm {})\n", r.description, metric.filter().name(),
+                  metric.acuity().name, format_norm(metric.norm()));
   text += fmt::format(
       "{} starts ran in {:.2f} s; best start {}: E2 {:.4f} -> {:.4f} in {} iterations\n",
       r.search.starts.size(), r.seconds, best.start, best.run.initial_e2, best.run.final_e2,
       best.run.iterations);
   if (r.search.polished_from > 0)
-    text += fmt::format("(the heuristic's best {:.5f}, polished by the minimax descent to {:.5f})\n",
-                        r.search.polished_from, best.run.final_e2);
+    text +=
+        fmt::format("(the heuristic's best {:.5f}, polished by the minimax descent to {:.5f})\n",
+                    r.search.polished_from, best.run.final_e2);
   if (r.unconstrained_e2)
     text += fmt::format(
         "non-negative weights: E2 {:.4f}; unconstrained from the same start: {:.4f} "
@@ -66,8 +67,8 @@ std::string optimize_text(const OptimizeRunResult& r, const Metric& metric) {
 std::string starts_csv(const MultiStartResult& result) {
   std::string csv = "start,initial_e2,final_e2,iterations,seconds\n";
   for (const auto& r : result.starts)
-    csv += fmt::format("{},{:.10g},{:.10g},{},{:.4f}\n", r.start, r.run.initial_e2,
-                       r.run.final_e2, r.run.iterations, r.seconds);
+    csv += fmt::format("{},{:.10g},{:.10g},{},{:.4f}\n", r.start, r.run.initial_e2, r.run.final_e2,
+                       r.run.iterations, r.seconds);
   return csv;
 }
 
@@ -94,23 +95,78 @@ JsonObject optimize_json(const OptimizeRunResult& r, const Metric& metric) {
   return doc;
 }
 
+struct OptimizeOptions {
+  std::string pattern, family, placement, seeds = "jittered", method = "descent";
+  std::string output, csv, svg, api;
+  MetricOptions metric;
+  int lattice = 0;
+  int starts = 16, threads = 0, iterations = 4000;
+  uint64_t seed = 1;
+  double time_limit = 0;
+  std::vector<int> lock;
+  bool weights_only = false, nonnegative = false, starts_given = false, json = false;
+};
+
+void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ostream& out) {
+  if (o.pattern.empty() == o.family.empty())
+    throw Error("optimize: give either --family (a search) or a PATTERN to polish");
+  if (!o.output.empty() && !o.output.ends_with(".json"))
+    throw Error(fmt::format("--output: '{}' must end in .json", o.output));
+  const Metric metric = o.metric.make();
+  OptimizeRunSettings s;
+  s.family = o.family;
+  s.placement = o.placement;
+  s.seeds = o.seeds;
+  // Seeds from a file: the same as polishing it, in the family asked for.
+  if (!o.family.empty() && o.seeds.ends_with(".json")) o.pattern = o.seeds;
+  if (!o.pattern.empty()) {
+    s.start = resolve_pattern(o.pattern);
+    s.start_label = o.pattern;
+  }
+  if (starts_option->count() > 0 || o.pattern.empty()) s.starts = o.starts;
+  s.seed = o.seed;
+  s.lock = o.lock;
+  s.threads = o.threads;
+  s.lattice = o.lattice;
+  s.api = o.api;
+  s.optimizer.method = parse_method(o.method);
+  s.optimizer.max_iterations = o.iterations;
+  s.optimizer.weights_only = o.weights_only;
+  s.optimizer.nonnegative_weights = o.nonnegative;
+  if (o.time_limit > 0)
+    s.optimizer.deadline = std::chrono::steady_clock::now() +
+                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                               std::chrono::duration<double>(o.time_limit));
+  OptimizeRunResult r;
+  {
+    Progress bar("optimize");
+    r = optimize_run(metric, s, bar.callback());
+  }
+  // With --json the document alone goes to stdout.
+  std::ostream discard(nullptr);
+  std::ostream& text = o.json ? discard : out;
+  text << optimize_text(r, metric);
+  if (!o.output.empty()) {
+    save_pattern_file(r.best, o.output);
+    text << "wrote " << o.output << "\n";
+  }
+  if (!o.svg.empty()) {
+    write_output(o.svg, pattern_svg(r.best), out);
+    text << "wrote " << o.svg << "\n";
+  }
+  if (!o.csv.empty()) {
+    write_output(o.csv, starts_csv(r.search), out);
+    text << "wrote " << o.csv << "\n";
+  }
+  if (o.json) out << json_text(optimize_json(r, metric));
+}
+
 }  // namespace
 
 Action add_optimize_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "optimize", "optimize positions and weights: a family from random starts, or a pattern");
-  struct Options {
-    std::string pattern, family, placement, seeds = "jittered", method = "descent";
-    std::string output, csv, svg, api;
-    MetricOptions metric;
-    int lattice = 0;
-    int starts = 16, threads = 0, iterations = 4000;
-    uint64_t seed = 1;
-    double time_limit = 0;
-    std::vector<int> lock;
-    bool weights_only = false, nonnegative = false, starts_given = false, json = false;
-  };
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<OptimizeOptions>();
   cmd->add_option("pattern", o->pattern, "catalog name or pattern file to polish");
   cmd->add_option("--family", o->family, "family to search, e.g. 'P(4,1+,2)'");
   cmd->add_option("--placement", o->placement,
@@ -152,59 +208,7 @@ Action add_optimize_command(CLI::App& app) {
   cmd->add_flag("--json", o->json, "print the result as JSON (docs/json.md)");
 
   auto* starts_option = cmd->get_option("--starts");
-  return [o, starts_option](std::ostream& out) {
-    if (o->pattern.empty() == o->family.empty())
-      throw Error("optimize: give either --family (a search) or a PATTERN to polish");
-    if (!o->output.empty() && !o->output.ends_with(".json"))
-      throw Error(fmt::format("--output: '{}' must end in .json", o->output));
-    const Metric metric = o->metric.make();
-    OptimizeRunSettings s;
-    s.family = o->family;
-    s.placement = o->placement;
-    s.seeds = o->seeds;
-    // Seeds from a file: the same as polishing it, in the family asked for.
-    if (!o->family.empty() && o->seeds.ends_with(".json")) o->pattern = o->seeds;
-    if (!o->pattern.empty()) {
-      s.start = resolve_pattern(o->pattern);
-      s.start_label = o->pattern;
-    }
-    if (starts_option->count() > 0 || o->pattern.empty()) s.starts = o->starts;
-    s.seed = o->seed;
-    s.lock = o->lock;
-    s.threads = o->threads;
-    s.lattice = o->lattice;
-    s.api = o->api;
-    s.optimizer.method = parse_method(o->method);
-    s.optimizer.max_iterations = o->iterations;
-    s.optimizer.weights_only = o->weights_only;
-    s.optimizer.nonnegative_weights = o->nonnegative;
-    if (o->time_limit > 0)
-      s.optimizer.deadline = std::chrono::steady_clock::now() +
-                             std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                 std::chrono::duration<double>(o->time_limit));
-    OptimizeRunResult r;
-    {
-      Progress bar("optimize");
-      r = optimize_run(metric, s, bar.callback());
-    }
-    // With --json the document alone goes to stdout.
-    std::ostream discard(nullptr);
-    std::ostream& text = o->json ? discard : out;
-    text << optimize_text(r, metric);
-    if (!o->output.empty()) {
-      save_pattern_file(r.best, o->output);
-      text << "wrote " << o->output << "\n";
-    }
-    if (!o->svg.empty()) {
-      write_output(o->svg, pattern_svg(r.best), out);
-      text << "wrote " << o->svg << "\n";
-    }
-    if (!o->csv.empty()) {
-      write_output(o->csv, starts_csv(r.search), out);
-      text << "wrote " << o->csv << "\n";
-    }
-    if (o->json) out << json_text(optimize_json(r, metric));
-  };
+  return [o, starts_option](std::ostream& out) { run_optimize(*o, starts_option, out); };
 }
 
 }  // namespace aapat

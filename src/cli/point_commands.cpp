@@ -7,8 +7,6 @@
 #include <memory>
 #include <ostream>
 
-#include "cli/commands.h"
-#include "cli/progress.h"
 #include "aapat/core/text.h"
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/json_report.h"
@@ -17,6 +15,8 @@
 #include "aapat/io/png_image.h"
 #include "aapat/io/point_set_file.h"
 #include "aapat/study/point_set_study.h"
+#include "cli/commands.h"
+#include "cli/progress.h"
 
 namespace aapat {
 namespace {
@@ -40,7 +40,6 @@ struct PointOptions {
   }
 };
 
-
 struct SpectrumOptions {
   PointOptions src;
   int size = 256, realizations = 1, frequencies = 131072;
@@ -48,6 +47,19 @@ struct SpectrumOptions {
   std::string png, csv, svg, one_d;
   bool json = false;
 };
+
+// The options of --1d: the kinds, and the frequencies to evaluate.
+void add_line_spectrum_options(CLI::App* cmd, SpectrumOptions& o) {
+  cmd->add_option("--1d", o.one_d,
+                  "Goss-Wu Fig. 8: 1D 'poisson' or 'jittered' with unit mean spacing");
+  cmd->add_option("--frequencies", o.frequencies, "1D: frequencies evaluated")
+      ->capture_default_str()
+      ->check(CLI::Range(16, 10000000));
+  cmd->add_option("--max-frequency", o.max_frequency,
+                  "1D: highest frequency, cycles per mean spacing")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 1000.0));
+}
 
 std::string radial_svg(const SpectrumStudy& st, const std::string& source, int realizations) {
   const RadialProfile& radial = st.radial;
@@ -109,8 +121,8 @@ void run_line_spectra(const SpectrumOptions& o, std::ostream& out) {
   if (!o.svg.empty()) {
     std::vector<LineSeries> lines;
     for (const auto& sp : spectra)
-      lines.push_back({fmt::format("{} ({} points)", sp.kind, sp.points), sp.bin_frequency,
-                       sp.bin_power});
+      lines.push_back(
+          {fmt::format("{} ({} points)", sp.kind, sp.points), sp.bin_frequency, sp.bin_power});
     write_output(o.svg,
                  line_plot_svg({fmt::format("1D power spectra, {} points (Goss-Wu Fig. 8)", count),
                                 "frequency (cycles per mean spacing)",
@@ -123,8 +135,8 @@ void run_line_spectra(const SpectrumOptions& o, std::ostream& out) {
                  out);
   }
   if (!o.json)
-    out << fmt::format("1D {}: {} points, {} frequencies up to {}\n", o.one_d, count,
-                       o.frequencies, o.max_frequency);
+    out << fmt::format("1D {}: {} points, {} frequencies up to {}\n", o.one_d, count, o.frequencies,
+                       o.max_frequency);
 }
 
 }  // namespace
@@ -220,8 +232,8 @@ Action add_discrepancy_command(CLI::App& app) {
     if (d.star.exact)
       out << fmt::format("  star discrepancy     {:.6f} (exact)\n", d.star.upper);
     else
-      out << fmt::format("  star discrepancy     in [{:.6f}, {:.6f}] (grid bounds)\n",
-                         d.star.lower, d.star.upper);
+      out << fmt::format("  star discrepancy     in [{:.6f}, {:.6f}] (grid bounds)\n", d.star.lower,
+                         d.star.upper);
     out << fmt::format("  edge discrepancy     {:.6f} (worst half-plane normal at {:g} degrees)\n",
                        d.edge.value, d.edge.normal_deg);
   };
@@ -245,16 +257,8 @@ Action add_spectrum_command(CLI::App& app) {
                   "the 2D spectrum as a PNG (grey = power / 2, DC at the centre)");
   cmd->add_option("--csv", o->csv, "radial average (2D) or the spectrum (1D) as CSV");
   cmd->add_option("--svg", o->svg, "radial average (2D) or the spectrum (1D) as an SVG plot");
-  cmd->add_option("--1d", o->one_d,
-                  "Goss-Wu Fig. 8: 1D 'poisson' or 'jittered' with unit mean spacing");
-  cmd->add_option("--frequencies", o->frequencies, "1D: frequencies evaluated")
-      ->capture_default_str()
-      ->check(CLI::Range(16, 10000000));
+  add_line_spectrum_options(cmd, *o);
   cmd->add_flag("--json", o->json, "print the radial average (2D) or the spectrum (1D) as JSON");
-  cmd->add_option("--max-frequency", o->max_frequency,
-                  "1D: highest frequency, cycles per mean spacing")
-      ->capture_default_str()
-      ->check(CLI::Range(0.01, 1000.0));
   return [o](std::ostream& out) {
     if (!o->one_d.empty()) return run_line_spectra(*o, out);
     if (o->src.source.empty()) throw Error("spectrum: give a generator or a point file (or --1d)");

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "cli/app.h"
 #include "aapat/core/filter_catalog.h"
 #include "aapat/io/reference_cache.h"
+#include "cli/app.h"
 
 namespace aapat {
 

@@ -4,12 +4,9 @@
 // With --grid, rows of samplings x columns of filters in one contact sheet.
 #include <fmt/format.h>
 
-#include <map>
 #include <memory>
 #include <ostream>
 
-#include "cli/commands.h"
-#include "cli/reference_options.h"
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/text.h"
 #include "aapat/generate/point_generators.h"
@@ -19,9 +16,10 @@
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/png_image.h"
 #include "aapat/io/scene_json.h"
-#include "aapat/render/image_error.h"
-#include "aapat/render/renderer.h"
-#include "aapat/render/ssim.h"
+#include "aapat/study/render_study.h"
+#include "cli/commands.h"
+#include "cli/progress.h"
+#include "cli/reference_options.h"
 
 namespace aapat {
 namespace {
@@ -47,59 +45,23 @@ ReferenceSettings reference_settings(const Options& o) {
 }
 
 Scene make_view_scene(const Options& o, int w, int h) {
-  Scene scene = resolve_scene(o.scene, w, h);
-  if (!std::isfinite(o.rotate) || !(o.scale > 1e-6 && o.scale < 1e6))
-    throw Error(
-        fmt::format("--rotate {} / --scale {}: need a finite angle and a scale in "
-                    "(1e-6, 1e6)",
-                    o.rotate, o.scale));
-  scene.view.pivot = {(w - 1) / 2.0, (h - 1) / 2.0};
-  scene.view.rotation_deg = o.rotate;
-  scene.view.scale = o.scale;
+  Vec2 translation{0, 0};
   if (!o.translate.empty()) {
     const auto parts = split(o.translate);
     if (parts.size() != 2) throw Error(fmt::format("--translate: '{}' is not X,Y", o.translate));
-    scene.view.translation = {parse_number(parts[0], "--translate"),
-                              parse_number(parts[1], "--translate")};
-    if (!(std::abs(scene.view.translation.x) <= 1e7 && std::abs(scene.view.translation.y) <= 1e7))
-      throw Error(
-          fmt::format("--translate {}: each offset must be within 1e7 pixels", o.translate));
+    translation = {parse_number(parts[0], "--translate"), parse_number(parts[1], "--translate")};
   }
-  return scene;
+  return view_scene(resolve_scene(o.scene, w, h), w, h, o.rotate, o.scale, translation);
 }
 
-// The error figures of one rendering against its reference.
-struct Figures {
-  ImageError error;
-  std::optional<double> ssim_value;
-};
-
-Figures measure(const Image& image, const Image& reference) {
-  Figures f{compare(image, reference), std::nullopt};
-  if (image.width >= kSsimWindow && image.height >= kSsimWindow)
-    f.ssim_value = ssim(image, reference);
-  return f;
+std::string ssim_text(const RenderFigures& f) {
+  return f.ssim ? fmt::format("{:.4f}", *f.ssim) : "-";
 }
 
-std::string ssim_text(const Figures& f) {
-  return f.ssim_value ? fmt::format("{:.4f}", *f.ssim_value) : "-";
-}
-
-// A grid row: `GENERATOR@N` (a per-pixel generator, N samples) or a pattern.
-Sampling row_sampling(const std::string& row, uint64_t seed) {
-  Sampling s;
-  s.seed = seed;
-  if (const auto at = row.rfind('@'); at != std::string::npos) {
-    s.generator = row.substr(0, at);
-    const double n = parse_number(row.substr(at + 1), fmt::format("--rows {}", row));
-    if (!(n >= 1 && n <= 65536) || n != std::floor(n))
-      throw Error(
-          fmt::format("--rows {}: the sample count must be a whole number in [1, 65536]", row));
-    s.samples = static_cast<int>(n);
-  } else {
-    s.pattern = resolve_pattern(row);
-  }
-  return s;
+JsonObject figures_json(const RenderFigures& f) {
+  return {{"rmse", f.error.rmse},
+          {"max_deviation", f.error.max_deviation},
+          {"ssim", f.ssim ? JsonObject(*f.ssim) : nullptr}};
 }
 
 void run_grid(const Options& o, std::ostream& out) {
@@ -107,72 +69,82 @@ void run_grid(const Options& o, std::ostream& out) {
   if (o.output.empty() || !o.output.ends_with(".png"))
     throw Error("render --grid: give the sheet's file with -o SHEET.png");
   const Scene scene = make_view_scene(o, w, h);
-  const ReferenceSource references = o.reference.source();
-  const ReferenceSettings ref = reference_settings(o);
-  std::map<double, Image> reference_at;  // by offset: even footprints shift the image
+  const RenderGridSettings s{w, h, o.rows, o.columns, o.seed, reference_settings(o)};
+  std::vector<RenderGridCell> cells;
+  {
+    Progress bar("render");
+    cells = render_grid(scene, s, o.reference.source(), bar.callback());
+  }
   ContactSheet sheet{fmt::format("{} {}x{}", o.scene, w, h), o.rows, o.columns, {}, o.zoom};
   std::string table = "| sampling | filter | samples/pixel | RMSE | max dev. | SSIM |\n";
   table += "| --- | --- | ---: | ---: | ---: | ---: |\n";
-  JsonObject cells = JsonObject::array();
-  for (const std::string& row : o.rows) {
-    const Sampling sampling = row_sampling(row, o.seed);
-    for (const std::string& column : o.columns) {
-      std::optional<Filter> filter;
-      if (column != "weights") filter = make_filter(column);
-      if (!filter && !sampling.pattern)
-        throw Error(
-            fmt::format("--columns weights: row '{}' is a generator, which has no weights", row));
-      RenderStats stats;
-      const Image image = render(scene, w, h, sampling, filter, &stats);
-      auto it = reference_at.find(image.offset);
-      if (it == reference_at.end())
-        it = reference_at.emplace(image.offset, references(scene, w, h, ref, image.offset)).first;
-      const Figures f = measure(image, it->second);
-      sheet.cells.push_back(
-          {w, h, grey_pixels(image),
-           fmt::format("RMSE {:.2f} MAX {}", f.error.rmse, f.error.max_deviation)});
-      table += fmt::format("| {} | {} | {} | {:.3f} | {} | {} |\n", row, column,
-                           format_cost(stats.samples_per_pixel), f.error.rmse,
-                           f.error.max_deviation, ssim_text(f));
-      JsonObject cell = sampling.pattern ? JsonObject{{"pattern", row}}
-                                         : JsonObject{{"generator", sampling.generator},
-                                                      {"samples", sampling.samples}};
-      cell.update(JsonObject{{"filter", column},
-                             {"samples_per_pixel", stats.samples_per_pixel},
-                             {"rmse", f.error.rmse},
-                             {"max_deviation", f.error.max_deviation},
-                             {"ssim", f.ssim_value ? JsonObject(*f.ssim_value) : nullptr}});
-      cells.push_back(std::move(cell));
-    }
+  JsonObject rows = JsonObject::array();
+  for (const RenderGridCell& c : cells) {
+    const ImageError& e = c.figures.error;
+    sheet.cells.push_back(
+        {w, h, grey_pixels(c.image), fmt::format("RMSE {:.2f} MAX {}", e.rmse, e.max_deviation)});
+    table += fmt::format("| {} | {} | {} | {:.3f} | {} | {} |\n", c.row, c.column,
+                         format_cost(c.stats.samples_per_pixel), e.rmse, e.max_deviation,
+                         ssim_text(c.figures));
+    JsonObject cell = c.sampling.pattern ? JsonObject{{"pattern", c.row}}
+                                         : JsonObject{{"generator", c.sampling.generator},
+                                                      {"samples", c.sampling.samples}};
+    cell.update(JsonObject{{"filter", c.column}, {"samples_per_pixel", c.stats.samples_per_pixel}});
+    cell.update(figures_json(c.figures));
+    rows.push_back(std::move(cell));
   }
   const GreyRaster r = compose_sheet(sheet);
   write_png_gray(o.output, r.width, r.height, r.pixels);
   const std::string heading =
       fmt::format("{} {}x{}: against {} jittered samples per pixel with {}\n\n", o.scene, w, h,
-                  ref.samples, make_filter(ref.filter).name());
+                  s.reference.samples, make_filter(s.reference.filter).name());
   if (!o.table.empty()) write_output(o.table, heading + table, out);
-  if (o.json) {
-    JsonObject doc = json_report("render");
-    doc.update(JsonObject{{"scene", o.scene},
-                          {"width", w},
-                          {"height", h},
-                          {"reference", describe_reference(ref)},
-                          {"rows", cells}});
-    out << json_text(doc);
-  } else {
+  if (!o.json) {
     out << heading + table;
+    return;
   }
+  JsonObject doc = json_report("render");
+  doc.update(JsonObject{{"scene", o.scene},
+                        {"width", w},
+                        {"height", h},
+                        {"reference", describe_reference(s.reference)},
+                        {"rows", rows}});
+  out << json_text(doc);
 }
 
-void run_single(const Options& o, std::ostream& out) {
-  const auto [w, h] = parse_size(o.size, "--size", 16384);
+// The squared-error histogram as CSV and as a plot.
+void write_histogram(const Options& o, const ImageError& e, std::ostream& out) {
+  const std::string& what = o.pattern.empty() ? o.generator : o.pattern;
+  std::string csv = "deviation,count,contribution\n";
+  LineSeries line{what, {}, {}};
+  for (int i = 0; i < 256; ++i) {
+    csv += fmt::format("{},{},{:.6g}\n", i, e.count[i], e.contribution[i]);
+    if (i >= 1 && i <= std::max(1, e.max_deviation)) {
+      line.x.push_back(i);
+      line.y.push_back(e.contribution[i]);
+    }
+  }
+  if (!o.histogram.empty()) write_output(o.histogram, csv, out);
+  if (!o.histogram_svg.empty())
+    write_output(o.histogram_svg,
+                 line_plot_svg({"Squared-error histogram C(i) i^2 / n (Hasselgren Eq. 1)",
+                                "deviation i (0-255)",
+                                "C(i) i^2 / n",
+                                {},
+                                0,
+                                0,
+                                true},
+                               {line}),
+                 out);
+}
+
+RenderSettings single_settings(const Options& o, int w, int h) {
   if (o.pattern.empty() == o.generator.empty())
     throw Error("render: give either --pattern or --generator");
-  for (const std::string* f : {&o.output, &o.error_png, &o.reference_png})
-    if (!f->empty() && !f->ends_with(".png")) throw Error(fmt::format("'{}' must end in .png", *f));
-  const Scene scene = make_view_scene(o, w, h);
-  Sampling sampling;
-  if (!o.pattern.empty()) sampling.pattern = resolve_pattern(o.pattern);
+  RenderSettings s;
+  s.width = w;
+  s.height = h;
+  if (!o.pattern.empty()) s.sampling.pattern = resolve_pattern(o.pattern);
   if (!o.generator.empty()) {
     make_point_generator(o.generator);  // an unknown generator is named before anything else
     if (o.filter.empty())
@@ -180,65 +152,48 @@ void run_single(const Options& o, std::ostream& out) {
           "--generator {}: per-pixel points have no weights of their own; give a --filter",
           o.generator));
   }
-  sampling.generator = o.generator;
-  sampling.samples = o.samples;
-  sampling.seed = o.seed;
-  std::optional<Filter> filter;
-  if (!o.filter.empty()) filter = make_filter(o.filter);
-  RenderStats stats;
-  const Image image = render(scene, w, h, sampling, filter, &stats);
-  if (!o.output.empty()) write_png_gray(o.output, w, h, grey_pixels(image));
+  s.sampling.generator = o.generator;
+  s.sampling.samples = o.samples;
+  s.sampling.seed = o.seed;
+  if (!o.filter.empty()) s.filter = make_filter(o.filter);
+  s.measure = o.json || !o.error_png.empty() || !o.histogram.empty() || !o.histogram_svg.empty() ||
+              !o.reference_png.empty();
+  s.reference = reference_settings(o);
+  return s;
+}
 
-  const std::string& what = o.pattern.empty() ? o.generator : o.pattern;
+void run_single(const Options& o, std::ostream& out) {
+  const auto [w, h] = parse_size(o.size, "--size", 16384);
+  for (const std::string* f : {&o.output, &o.error_png, &o.reference_png})
+    if (!f->empty() && !f->ends_with(".png")) throw Error(fmt::format("'{}' must end in .png", *f));
+  const Scene scene = make_view_scene(o, w, h);
+  const RenderSettings s = single_settings(o, w, h);
+  const RenderResult r = render_study(scene, s, o.reference.source());
+  if (!o.output.empty()) write_png_gray(o.output, w, h, grey_pixels(r.image));
+  const std::string filter = s.filter ? s.filter->name() : "the pattern's weights";
+  std::string text = fmt::format("{} {}x{}, {} with {}: {} samples per pixel\n", o.scene, w, h,
+                                 o.pattern.empty() ? o.generator : o.pattern, filter,
+                                 format_cost(r.stats.samples_per_pixel));
   JsonObject js = json_report("render");
   js.update(JsonObject{{"scene", o.scene}, {"width", w}, {"height", h}});
-  if (sampling.pattern)
+  if (s.sampling.pattern)
     js["pattern"] = o.pattern;
   else
     js.update(JsonObject{{"generator", o.generator}, {"samples", o.samples}});
-  js.update(JsonObject{{"filter", filter ? filter->name() : "pattern weights"},
-                       {"samples_per_pixel", stats.samples_per_pixel}});
-  std::string text = fmt::format("{} {}x{}, {} with {}: {} samples per pixel\n", o.scene, w, h,
-                                 what, filter ? filter->name() : "the pattern's weights",
-                                 format_cost(stats.samples_per_pixel));
-  const bool want_reference = o.json || !o.error_png.empty() || !o.histogram.empty() ||
-                              !o.histogram_svg.empty() || !o.reference_png.empty();
-  if (want_reference) {
-    const ReferenceSettings ref = reference_settings(o);
-    const Image reference = o.reference.source()(scene, w, h, ref, image.offset);
-    const Figures f = measure(image, reference);
-    const ImageError& e = f.error;
-    const std::string ref_name = make_filter(ref.filter).name();
-    js["reference"] = describe_reference(ref);
-    js["rmse"] = e.rmse;
-    js["max_deviation"] = e.max_deviation;
-    js["ssim"] = f.ssim_value ? JsonObject(*f.ssim_value) : nullptr;
+  js.update(JsonObject{{"filter", s.filter ? s.filter->name() : "pattern weights"},
+                       {"samples_per_pixel", r.stats.samples_per_pixel}});
+  if (r.figures) {
+    const ImageError& e = r.figures->error;
+    js["reference"] = describe_reference(s.reference);
+    js.update(figures_json(*r.figures));
     text += fmt::format(
         "against {} jittered samples per pixel with {}: RMSE {:.3f}, max deviation {}, SSIM {}\n",
-        ref.samples, ref_name, e.rmse, e.max_deviation, ssim_text(f));
-    if (!o.error_png.empty()) write_png_gray(o.error_png, w, h, error_pixels(image, reference));
-    if (!o.reference_png.empty()) write_png_gray(o.reference_png, w, h, grey_pixels(reference));
-    std::string csv = "deviation,count,contribution\n";
-    LineSeries line{what, {}, {}};
-    for (int i = 0; i < 256; ++i) {
-      csv += fmt::format("{},{},{:.6g}\n", i, e.count[i], e.contribution[i]);
-      if (i >= 1 && i <= std::max(1, e.max_deviation)) {
-        line.x.push_back(i);
-        line.y.push_back(e.contribution[i]);
-      }
-    }
-    if (!o.histogram.empty()) write_output(o.histogram, csv, out);
-    if (!o.histogram_svg.empty())
-      write_output(o.histogram_svg,
-                   line_plot_svg({"Squared-error histogram C(i) i^2 / n (Hasselgren Eq. 1)",
-                                  "deviation i (0-255)",
-                                  "C(i) i^2 / n",
-                                  {},
-                                  0,
-                                  0,
-                                  true},
-                                 {line}),
-                   out);
+        s.reference.samples, make_filter(s.reference.filter).name(), e.rmse, e.max_deviation,
+        ssim_text(*r.figures));
+    if (!o.error_png.empty())
+      write_png_gray(o.error_png, w, h, error_pixels(r.image, *r.reference));
+    if (!o.reference_png.empty()) write_png_gray(o.reference_png, w, h, grey_pixels(*r.reference));
+    write_histogram(o, e, out);
   }
   out << (o.json ? json_text(js) : text);
 }

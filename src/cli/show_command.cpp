@@ -4,10 +4,10 @@
 #include <memory>
 #include <ostream>
 
-#include "cli/commands.h"
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/pattern_svg.h"
+#include "cli/commands.h"
 
 namespace aapat {
 

@@ -9,23 +9,67 @@
 #include <memory>
 #include <ostream>
 
+#include "aapat/io/json_report.h"
+#include "aapat/study/paper_tables.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
-#include "aapat/io/json_report.h"
-#include "aapat/study/paper_tables.h"
 
 namespace aapat {
 
+namespace {
+
+struct Table3Options {
+  int patterns = 1000, iterations = 4000;
+  uint64_t seed = 1;
+  bool json = false;
+  MetricOptions metric;
+};
+
+void run_table3(Table3Options& o, std::ostream& out) {
+  const Metric metric = o.metric.make();
+  std::vector<Table3Row> rows;
+  {
+    Progress bar("table3");
+    rows = table3(metric, {o.patterns, o.iterations, o.seed}, bar.callback());
+  }
+  if (o.json) {
+    JsonObject js = JsonObject::array();
+    for (const Table3Row& r : rows)
+      js.push_back({{"distribution", r.distribution},
+                    {"min", r.e2[0]},
+                    {"avg", r.e2[1]},
+                    {"max", r.e2[2]},
+                    {"opt_w", r.e2[3]},
+                    {"opt_wp", r.e2[4]},
+                    {"paper", r.paper}});
+    JsonObject doc = json_report("table3");
+    doc.update(JsonObject{{"family", "P(16,16,4)"},
+                          {"patterns", o.patterns},
+                          {"seed", o.seed},
+                          {"filter", metric.filter().name()},
+                          {"acuity", metric.acuity().name},
+                          {"rows", js}});
+    out << json_text(doc);
+    return;
+  }
+  out << fmt::format(
+      "Laine-Aila Table 3 re-run: P(16,16,4), {} patterns per distribution, seed {}, filter {}, "
+      "acuity {}\naapat (paper)   Min              Avg              Max              Opt W     "
+      "       Opt W+P\n",
+      o.patterns, o.seed, metric.filter().name(), metric.acuity().name);
+  for (const Table3Row& r : rows) {
+    out << fmt::format("{:<14}", r.distribution);
+    for (int c = 0; c < 5; ++c) out << fmt::format("  {:.3f} ({:.3f})", r.e2[c], r.paper[c]);
+    out << "\n";
+  }
+}
+
+}  // namespace
+
 Action add_table3_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("table3", "re-run Laine-Aila Table 3 (P(16,16,4) distributions)");
-  struct Options {
-    int patterns = 1000, iterations = 4000;
-    uint64_t seed = 1;
-    bool json = false;
-    MetricOptions metric;
-  };
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<Table3Options>();
   cmd->add_option("--patterns", o->patterns, "random patterns per distribution")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
@@ -35,44 +79,7 @@ Action add_table3_command(CLI::App& app) {
       ->check(CLI::Range(1, 10000000));
   cmd->add_flag("--json", o->json, "print the numbers as JSON");
   o->metric.add_to(cmd);
-  return [o](std::ostream& out) {
-    const Metric metric = o->metric.make();
-    std::vector<Table3Row> rows;
-    {
-      Progress bar("table3");
-      rows = table3(metric, {o->patterns, o->iterations, o->seed}, bar.callback());
-    }
-    if (o->json) {
-      JsonObject js = JsonObject::array();
-      for (const Table3Row& r : rows)
-        js.push_back({{"distribution", r.distribution},
-                      {"min", r.e2[0]},
-                      {"avg", r.e2[1]},
-                      {"max", r.e2[2]},
-                      {"opt_w", r.e2[3]},
-                      {"opt_wp", r.e2[4]},
-                      {"paper", r.paper}});
-      JsonObject doc = json_report("table3");
-      doc.update(JsonObject{{"family", "P(16,16,4)"},
-                            {"patterns", o->patterns},
-                            {"seed", o->seed},
-                            {"filter", metric.filter().name()},
-                            {"acuity", metric.acuity().name},
-                            {"rows", js}});
-      out << json_text(doc);
-      return;
-    }
-    out << fmt::format(
-        "Laine-Aila Table 3 re-run: P(16,16,4), {} patterns per distribution, seed {}, filter {}, "
-        "acuity {}\naapat (paper)   Min              Avg              Max              Opt W     "
-        "       Opt W+P\n",
-        o->patterns, o->seed, metric.filter().name(), metric.acuity().name);
-    for (const Table3Row& r : rows) {
-      out << fmt::format("{:<14}", r.distribution);
-      for (int c = 0; c < 5; ++c) out << fmt::format("  {:.3f} ({:.3f})", r.e2[c], r.paper[c]);
-      out << "\n";
-    }
-  };
+  return [o](std::ostream& out) { run_table3(*o, out); };
 }
 
 }  // namespace aapat

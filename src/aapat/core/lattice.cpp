@@ -29,7 +29,8 @@ Vec2 snap_sample(Vec2 v, int steps, bool shared_borders) {
 
 Pattern snap_to_lattice(const Pattern& p, int steps) {
   if (steps < 2 || steps > 256 || steps % 2 != 0)
-    throw ParameterError("lattice", fmt::format(" {}: expected an even number of steps from 2 to 256", steps));
+    throw ParameterError("lattice",
+                         fmt::format(" {}: expected an even number of steps from 2 to 256", steps));
   Pattern q = p;
   for (auto& set : q.sets)
     for (Vec2& s : set) s = snap_sample(s, steps, p.footprint.plus);

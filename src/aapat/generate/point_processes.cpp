@@ -17,7 +17,7 @@ SeedKind parse_seed_kind(std::string_view text) {
 }
 
 std::vector<std::vector<Vec2>> tile_points(int side, int m, SeedKind kind, std::mt19937_64& rng,
-                                             double limit) {
+                                           double limit) {
   std::uniform_real_distribution<double> u(0, 1);
   auto clampv = [&](Vec2 v) {
     return Vec2{std::clamp(v.x, -limit, limit), std::clamp(v.y, -limit, limit)};
@@ -68,7 +68,6 @@ std::vector<std::vector<Vec2>> tile_points(int side, int m, SeedKind kind, std::
   return sets;
 }
 
-
 std::vector<double> line_points(std::string_view kind, int n, uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0, 1);
@@ -98,6 +97,5 @@ std::vector<double> line_points(std::string_view kind, int n, uint64_t seed) {
   }
   return xs;
 }
-
 
 }  // namespace aapat

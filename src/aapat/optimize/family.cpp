@@ -39,10 +39,11 @@ const SiteInfo& info(Site s) {
 Site parse_site(std::string_view text) {
   for (const auto& s : kSites)
     if (text == s.text) return s.site;
-  throw ParameterError("placement", fmt::format(
-      ": unknown site '{}' (sites are inside, left, right, bottom, top, bottom-left, "
-      "bottom-right, top-left, top-right)",
-      text));
+  throw ParameterError(
+      "placement",
+      fmt::format(": unknown site '{}' (sites are inside, left, right, bottom, top, bottom-left, "
+                  "bottom-right, top-left, top-right)",
+                  text));
 }
 
 uint64_t splitmix(uint64_t x) {
@@ -73,31 +74,34 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
   FamilySpec spec;
   const std::string_view f = trim(family);
   if (!f.starts_with("P(") || !f.ends_with(")"))
-    throw ParameterError("family", fmt::format(": '{}' is not of the form P(s,r,n), e.g. P(4,1+,2)", family));
+    throw ParameterError("family",
+                         fmt::format(": '{}' is not of the form P(s,r,n), e.g. P(4,1+,2)", family));
   const std::string_view body = f.substr(2, f.size() - 3);
   const auto c1 = body.find(','), c2 = body.rfind(',');
   if (c1 == std::string_view::npos || c1 == c2)
-    throw ParameterError("family", fmt::format(": '{}' is not of the form P(s,r,n), e.g. P(4,1+,2)", family));
+    throw ParameterError("family",
+                         fmt::format(": '{}' is not of the form P(s,r,n), e.g. P(4,1+,2)", family));
   const double s = parse_number(body.substr(0, c1), "family: s");
   spec.footprint = parse_footprint(trim(body.substr(c1 + 1, c2 - c1 - 1)));
   spec.n = parse_number(body.substr(c2 + 1), "family: n");
   // The range first: the square root of a huge s must not overflow an int.
   const int side = s >= 1 && s <= 64 ? static_cast<int>(std::lround(std::sqrt(s))) : 0;
   if (side < 1 || side * side != s)
-    throw ParameterError(
-        "family", fmt::format(" {}: s = {} must be a square number of sets 1, 4, 9, ... 64 "
-                    "(a square tile)",
-                    family, s));
+    throw ParameterError("family",
+                         fmt::format(" {}: s = {} must be a square number of sets 1, 4, 9, ... 64 "
+                                     "(a square tile)",
+                                     family, s));
   spec.s = static_cast<int>(s);
   if (!(spec.n > 0) || spec.n > 256)
-    throw ParameterError("family", fmt::format(" {}: n = {} is out of range (0, 256]", family, spec.n));
+    throw ParameterError("family",
+                         fmt::format(" {}: n = {} is out of range (0, 256]", family, spec.n));
 
   if (placement.empty()) {
     if (spec.n != std::floor(spec.n))
-      throw ParameterError(
-          "family", fmt::format(" {}: n = {} is not a whole number of inside samples; give "
-                      "a placement with border sites (corner 1/4, edge 1/2)",
-                      family, spec.n));
+      throw ParameterError("family",
+                           fmt::format(" {}: n = {} is not a whole number of inside samples; give "
+                                       "a placement with border sites (corner 1/4, edge 1/2)",
+                                       family, spec.n));
     spec.sites.assign(static_cast<size_t>(spec.n), Site::kInside);
   } else {
     for (std::string_view site : split(placement)) spec.sites.push_back(parse_site(trim(site)));
@@ -106,15 +110,15 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
       std::any_of(spec.sites.begin(), spec.sites.end(), [](Site x) { return x != Site::kInside; });
   spec.mirrored = spec.s == 4 && spec.footprint == Footprint{1, true};
   if (on_border && !spec.footprint.plus)
-    throw ParameterError(
-        "family", fmt::format(" {}: border sites are shared with the neighbours, which only "
-                    "a sharing footprint (r with +) reads",
-                    family));
+    throw ParameterError("family",
+                         fmt::format(" {}: border sites are shared with the neighbours, which only "
+                                     "a sharing footprint (r with +) reads",
+                                     family));
   if (on_border && !spec.mirrored && !(spec.s == 1 && spec.footprint.size == 1))
-    throw ParameterError(
-        "family", fmt::format(" {}: border sites are supported for P(1,1+,n) and the "
-                    "mirrored P(4,1+,n)",
-                    family));
+    throw ParameterError("family",
+                         fmt::format(" {}: border sites are supported for P(1,1+,n) and the "
+                                     "mirrored P(4,1+,n)",
+                                     family));
   for (Site site : {Site::kBottomLeft, Site::kBottomRight, Site::kTopLeft, Site::kTopRight})
     if (std::count(spec.sites.begin(), spec.sites.end(), site) > 1)
       throw ParameterError(
@@ -124,18 +128,20 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
     // sample, which this pixel also reads: such sites come in pairs.
     auto count = [&](Site x) { return std::count(spec.sites.begin(), spec.sites.end(), x); };
     if (count(Site::kLeft) != count(Site::kRight) || count(Site::kTop) != count(Site::kBottom))
-      throw ParameterError("placement", fmt::format(
-          ": in {} every pixel repeats the same set, so a left-edge sample is also the "
-          "right-edge sample of the pixel to the left: list left and right (and top and bottom) "
-          "in pairs",
-          family));
+      throw ParameterError(
+          "placement",
+          fmt::format(": in {} every pixel repeats the same set, so a left-edge sample is also the "
+                      "right-edge sample of the pixel to the left: list left and right (and top "
+                      "and bottom) "
+                      "in pairs",
+                      family));
     const auto corners = count(Site::kBottomLeft) + count(Site::kBottomRight) +
                          count(Site::kTopLeft) + count(Site::kTopRight);
     if (corners != 0 && corners != 4)
-      throw ParameterError(
-          "placement", fmt::format(": in {} a corner sample is every corner's sample: list "
-                      "all four corners or none",
-                      family));
+      throw ParameterError("placement",
+                           fmt::format(": in {} a corner sample is every corner's sample: list "
+                                       "all four corners or none",
+                                       family));
   }
   // n from the sites: each physical sample once (in a 1x1 1+ tile the paired
   // edges and the four corners are one sample each, whose reads cost 1/2, 1/4).
@@ -147,11 +153,11 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
         fmt::format("{}{} {}", terms.empty() ? "" : " + ", site_text(x), format_cost(site_cost(x)));
   }
   if (std::abs(cost - spec.n) > 1e-9)
-    throw ParameterError("family", fmt::format(" {} says n = {} but the placement costs {} ({})", family,
-                            format_cost(spec.n), format_cost(cost), terms));
+    throw ParameterError("family",
+                         fmt::format(" {} says n = {} but the placement costs {} ({})", family,
+                                     format_cost(spec.n), format_cost(cost), terms));
   return spec;
 }
-
 
 std::mt19937_64 start_rng(uint64_t seed, uint64_t index) {
   return std::mt19937_64(splitmix(splitmix(seed) ^ (index + 1) * 0xd1b54a32d192ed03ULL));

@@ -42,7 +42,6 @@ struct FamilySpec {
 // placement's cost equals n and that the sites fit the family, saying why not.
 FamilySpec parse_family(std::string_view family, std::string_view placement);
 
-
 // A random pattern of the family: inside samples by `kind`, border samples
 // uniform along their edge, weights equal for one-pixel footprints and the
 // filter's h(x) h(y) (normalized) for larger ones.

@@ -218,10 +218,9 @@ TEST(Family, ParsesAndExplainsWhatDoesNotFit) {
       "placement: in P(1,1+,1.5) every pixel repeats the same set, so a left-edge "
       "sample is also the right-edge sample of the pixel to the left: list left and "
       "right (and top and bottom) in pairs");
-  expect_family_error(
-      "P(1,1,1.5)", "inside,left",
-      "family P(1,1,1.5): border sites are shared with the neighbours, which only "
-      "a sharing footprint (r with +) reads");
+  expect_family_error("P(1,1,1.5)", "inside,left",
+                      "family P(1,1,1.5): border sites are shared with the neighbours, which only "
+                      "a sharing footprint (r with +) reads");
   expect_family_error("P(4,1+,2)", "left,right,middle",
                       "placement: unknown site 'middle' (sites are inside, left, right, bottom, "
                       "top, bottom-left, bottom-right, top-left, top-right)");

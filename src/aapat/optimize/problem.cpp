@@ -114,8 +114,9 @@ Pattern pattern_of(const Problem& pr) {
 void lock_samples(Problem& pr, const std::vector<int>& set0_samples) {
   for (int i : set0_samples) {
     if (i < 0 || i >= static_cast<int>(pr.set_samples[0].size()))
-      throw ParameterError("lock", fmt::format(": sample {} does not exist: the base pixel has samples 0..{}",
-                              i, pr.set_samples[0].size() - 1));
+      throw ParameterError(
+          "lock", fmt::format(": sample {} does not exist: the base pixel has samples 0..{}", i,
+                              pr.set_samples[0].size() - 1));
     pr.generators[pr.set_samples[0][i].generator].freedom = Freedom::kFixed;
   }
 }

@@ -28,8 +28,8 @@ struct EnumerationRow {
 };
 
 struct Enumeration {
-  std::vector<EnumerationRow> rows;  // by cost, then (optimized) by E2
-  int count(double n) const;         // configurations of cost n
+  std::vector<EnumerationRow> rows;            // by cost, then (optimized) by E2
+  int count(double n) const;                   // configurations of cost n
   const EnumerationRow* best(double n) const;  // the first row of cost n
 };
 

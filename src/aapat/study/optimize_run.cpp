@@ -76,8 +76,8 @@ void check_settings(const OptimizeRunSettings& s) {
   if (!s.family.empty() && s.start &&
       family(*s.start) != parse_family(s.family, s.placement).text())
     throw Error(fmt::format("optimize: the start pattern {} is {}, not the family {}",
-                            s.start_label.empty() ? s.start->name : s.start_label,
-                            family(*s.start), s.family));
+                            s.start_label.empty() ? s.start->name : s.start_label, family(*s.start),
+                            s.family));
 }
 
 }  // namespace
@@ -145,9 +145,9 @@ OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& 
     const SeedKind kind = parse_seed_kind(s.seeds);
     for (const std::string& placement : placements) {
       const FamilySpec spec = parse_family(s.family, placement);
-      SeedFunction seeds =
-          locked(family_seeds(spec, kind, s.seed, metric.filter()), s.lock);
-      MultiStartResult r = multistart(metric, starts, s.seed, seeds, s.optimizer, s.threads, report);
+      SeedFunction seeds = locked(family_seeds(spec, kind, s.seed, metric.filter()), s.lock);
+      MultiStartResult r =
+          multistart(metric, starts, s.seed, seeds, s.optimizer, s.threads, report);
       before += starts;
       const MultiStartResult& b = out.search;
       if (r.best >= 0 &&
@@ -200,8 +200,8 @@ OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& 
     OptimizerSettings free = s.optimizer;
     free.nonnegative_weights = false;
     const Problem again = make_seed(best.start);
-    const MultiStartResult r =
-        multistart(metric, 1, s.seed, [&](int) { return again; }, free, s.threads);
+    const MultiStartResult r = multistart(
+        metric, 1, s.seed, [&](int) { return again; }, free, s.threads);
     out.unconstrained_e2 = r.starts.empty() ? NAN : r.starts[0].run.final_e2;
   }
   return out;

@@ -21,9 +21,9 @@ struct OptimizeRunSettings {
   std::string family;
   std::string placement;  // empty: all inside, or every placement of a mirrored family's cost
   std::optional<Pattern> start;
-  std::string start_label;  // how the polished pattern was named (provenance)
+  std::string start_label;         // how the polished pattern was named (provenance)
   std::string seeds = "jittered";  // random seed kind of a family search
-  std::optional<int> starts;  // default: 16 for a search, 1 (the pattern itself) for a polish
+  std::optional<int> starts;       // default: 16 for a search, 1 (the pattern itself) for a polish
   uint64_t seed = 1;
   std::vector<int> lock;  // samples of set 0 that stay where they are
   OptimizerSettings optimizer;
@@ -44,18 +44,18 @@ struct LatticeStage {
 
 struct OptimizeRunResult {
   OptimizeRunSettings settings;  // as run (the API's lattice filled in)
-  MultiStartResult search;  // the continuous search of the chosen placement
-  Pattern best;             // named, described, with provenance
-  std::string description;  // "P(1,1,4) from 16 jittered starts"
-  std::string placement;    // the placement the best came from
-  std::string method;       // the optimizer, in words
+  MultiStartResult search;       // the continuous search of the chosen placement
+  Pattern best;                  // named, described, with provenance
+  std::string description;       // "P(1,1,4) from 16 jittered starts"
+  std::string placement;         // the placement the best came from
+  std::string method;            // the optimizer, in words
   double seconds = 0;
   std::optional<LatticeStage> lattice;
   std::optional<double> unconstrained_e2;  // non-negative runs: the same start unconstrained
   const StartRecord& best_start() const { return search.starts[search.best]; }
 };
 
-std::string method_name(Method m);  // "Laine-Aila heuristic (t 0.99, c1 = 100 c0)", ...
+std::string method_name(Method m);           // "Laine-Aila heuristic (t 0.99, c1 = 100 c0)", ...
 Method parse_method(std::string_view name);  // descent, minimax, anneal
 std::string method_key(Method m);            // the name parse_method reads
 

@@ -21,8 +21,8 @@ void check_count(int value, int limit, const char* parameter) {
 }
 
 // One distribution's row of Table 3.
-Table3Row table3_row(const Metric& metric, const Table3Settings& s, const char* name,
-                     SeedKind kind, std::array<double, 5> paper, const StudyProgress& progress) {
+Table3Row table3_row(const Metric& metric, const Table3Settings& s, const char* name, SeedKind kind,
+                     std::array<double, 5> paper, const StudyProgress& progress) {
   const FamilySpec spec = parse_family("P(16,16,4)", "");
   double lo = INFINITY, hi = 0, sum = 0;
   Pattern best;
@@ -48,10 +48,10 @@ Table3Row table3_row(const Metric& metric, const Table3Settings& s, const char* 
   const Problem after_w = w.best_problem;
   const MultiStartResult wp = multistart(
       metric, 1, s.seed, [&](int) { return after_w; }, settings, 0);
-  return {name,
-          {lo, sum / s.patterns, hi, w.starts[w.best].run.final_e2,
-           wp.starts[wp.best].run.final_e2},
-          paper};
+  return {
+      name,
+      {lo, sum / s.patterns, hi, w.starts[w.best].run.final_e2, wp.starts[wp.best].run.final_e2},
+      paper};
 }
 
 std::string layout_text(const Pattern& p, const ApiProfile& profile) {
@@ -130,10 +130,10 @@ Figure10 figure10(const Metric& metric, const Figure10Settings& settings,
       for (const auto& placement :
            mirrored ? figure10_placements(n) : std::vector<std::string>{""}) {
         const FamilySpec spec = parse_family(fam, placement);
-        const MultiStartResult r = multistart(
-            metric, settings.starts, settings.seed,
-            family_seeds(spec, SeedKind::kJittered, settings.seed, metric.filter()),
-            OptimizerSettings{}, 0);
+        const MultiStartResult r =
+            multistart(metric, settings.starts, settings.seed,
+                       family_seeds(spec, SeedKind::kJittered, settings.seed, metric.filter()),
+                       OptimizerSettings{}, 0);
         const double e2 = r.starts[r.best].run.final_e2;
         if (e2 < best.e2) best = {fam, placement, n, e2, series};
       }
@@ -191,8 +191,8 @@ std::vector<HardwareTableRow> hardware_table(const Metric& metric,
                            "hasselgren-e", "hasselgren-f", "quincunx-hasselgren"}) {
     const Pattern p = catalog_pattern(name);
     const ApiProfile& profile = p.tile_w == 1 ? tier1 : tier2;
-    row(format_cost(samples_per_pixel(p)), fmt::format("{} snapped, then searched", name),
-        profile, snapped(metric, p, profile));
+    row(format_cost(samples_per_pixel(p)), fmt::format("{} snapped, then searched", name), profile,
+        snapped(metric, p, profile));
     report(1, name);
   }
   return rows;

@@ -22,8 +22,8 @@ struct Table3Settings {
   uint64_t seed = 1;
 };
 struct Table3Row {
-  std::string distribution;   // "jittered grid", "Poisson disk"
-  std::array<double, 5> e2;   // Min, Avg, Max, Opt W, Opt W+P
+  std::string distribution;  // "jittered grid", "Poisson disk"
+  std::array<double, 5> e2;  // Min, Avg, Max, Opt W, Opt W+P
   std::array<double, 5> paper;
 };
 std::vector<Table3Row> table3(const Metric& metric, const Table3Settings& settings,
@@ -42,7 +42,7 @@ struct Figure10Point {
   int series = 0;  // index into Figure10::series
 };
 struct Figure10 {
-  std::vector<std::string> series;  // "P(1,1,n)", ... in order
+  std::vector<std::string> series;    // "P(1,1,n)", ... in order
   std::vector<Figure10Point> points;  // by series, then n
 };
 std::vector<std::string> figure10_placements(double n);

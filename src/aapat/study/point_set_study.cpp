@@ -44,8 +44,7 @@ SpectrumStudy spectrum_study(const PointSource& source, const SpectrumSettings& 
   if (!(s.size >= 8 && s.size <= 2048))
     throw ParameterError("size", fmt::format(" {}: expected 8 to 2048 frequencies", s.size));
   if (!(s.realizations >= 1 && s.realizations <= 100000))
-    throw ParameterError("realizations",
-                         fmt::format(" {}: expected 1 to 100000", s.realizations));
+    throw ParameterError("realizations", fmt::format(" {}: expected 1 to 100000", s.realizations));
   if (s.expected_points > 0) check_spectrum_work(s.expected_points, s.size, s.realizations);
   SpectrumStudy out;
   for (int r = 0; r < s.realizations; ++r) {
@@ -67,15 +66,14 @@ SpectrumStudy spectrum_study(const PointSource& source, const SpectrumSettings& 
   return out;
 }
 
-std::vector<LineSpectrum> line_spectra(const std::vector<std::string>& kinds, int n,
-                                       uint64_t seed, int frequencies, double max_frequency) {
+std::vector<LineSpectrum> line_spectra(const std::vector<std::string>& kinds, int n, uint64_t seed,
+                                       int frequencies, double max_frequency) {
   std::vector<LineSpectrum> out;
   for (const auto& kind : kinds) {
     const auto xs = line_points(kind, n, seed);
     LineSpectrum line{kind, xs.size(), power_spectrum_1d(xs, frequencies, max_frequency), {}, {}};
     const int bins = std::min(frequencies, 2000);
-    const int first =
-        static_cast<int>(std::ceil(2.0 / xs.size() / max_frequency * frequencies));
+    const int first = static_cast<int>(std::ceil(2.0 / xs.size() / max_frequency * frequencies));
     for (int b = 0; b < bins; ++b) {
       const int k0 = std::max(first, b * frequencies / bins), k1 = (b + 1) * frequencies / bins;
       if (k1 <= k0) continue;

@@ -30,14 +30,14 @@ inline constexpr double kMaxSpectrumTerms = 68719476736.0;  // 2^36
 using PointSource = std::function<std::vector<Vec2>(int realization)>;
 
 struct SpectrumSettings {
-  int size = 256;        // frequencies -size/2 .. size/2-1 per axis
-  int realizations = 1;  // point sets averaged
+  int size = 256;              // frequencies -size/2 .. size/2-1 per axis
+  int realizations = 1;        // point sets averaged
   size_t expected_points = 0;  // when known, the work is checked before any point is drawn
 };
 struct SpectrumStudy {
   Spectrum2D mean;
   RadialProfile radial;
-  size_t points = 0;  // of the last realization
+  size_t points = 0;                       // of the last realization
   double tail_radius = 0, tail_power = 0;  // mean power from the middle ring outwards
 };
 SpectrumStudy spectrum_study(const PointSource& source, const SpectrumSettings& settings,
@@ -51,7 +51,7 @@ struct LineSpectrum {
   // (|f| < 2 / length) on: a curve a plot can draw.
   std::vector<double> bin_frequency, bin_power;
 };
-std::vector<LineSpectrum> line_spectra(const std::vector<std::string>& kinds, int n,
-                                       uint64_t seed, int frequencies, double max_frequency);
+std::vector<LineSpectrum> line_spectra(const std::vector<std::string>& kinds, int n, uint64_t seed,
+                                       int frequencies, double max_frequency);
 
 }  // namespace aapat
