@@ -1,4 +1,6 @@
-// `aapat list`: the catalog, the filters and the acuity tables, one line each.
+// `aapat list`: every registry of specs (core/spec.h), one line per entry:
+// the catalog patterns, filters, point generators, acuity tables, scenes and
+// API profiles, with their parameters and defaults.
 #include <fmt/format.h>
 
 #include <memory>
@@ -6,6 +8,7 @@
 
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter_catalog.h"
+#include "aapat/core/hardware_layout.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/json_report.h"
@@ -13,64 +16,85 @@
 #include "cli/commands.h"
 
 namespace aapat {
+namespace {
+
+// One registry's section: a heading and its entries' infos.
+struct Section {
+  std::string key, heading;
+  std::vector<SpecInfo> infos;
+};
+
+template <class R>
+Section section(std::string key, std::string heading, const R& registry) {
+  Section s{std::move(key), std::move(heading), {}};
+  for (const auto& e : registry.entries()) s.infos.push_back(e.info);
+  return s;
+}
+
+std::vector<Section> sections() {
+  return {section("patterns", "patterns", pattern_registry()),
+          section("filters", "filters", filter_registry()),
+          section("generators", "point generators (aapat generate, spectrum, discrepancy)",
+                  generator_registry()),
+          section("acuity_tables", "acuity tables (or a CSV file of 'edge_angle_deg,weight' rows)",
+                  acuity_registry()),
+          section("scenes", "scenes (aapat render; or a .json scene file, docs/renderer.md)",
+                  scene_registry()),
+          section("api_profiles", "API profiles (aapat export --api, optimize --api)",
+                  profile_registry())};
+}
+
+JsonObject info_json(const SpecInfo& info) {
+  JsonObject params = JsonObject::array();
+  for (const ParamInfo& p : info.params)
+    params.push_back(
+        {{"key", p.key},
+         {"default", p.default_text.empty() ? JsonObject() : JsonObject(p.default_text)},
+         {"meaning", p.meaning}});
+  return {{"name", info.name},
+          {"usage", info.usage()},
+          {"summary", info.summary},
+          {"source", info.source},
+          {"parameters", params}};
+}
+
+// "spiral:turns=6,arm=0.35", or the family beside a catalog pattern's name.
+std::string entry_line(const Section& s, const SpecInfo& info) {
+  if (s.key == "patterns") {
+    const std::string fam =
+        info.name == "grid-NxN" ? "P(1,1,N*N)" : family(catalog_pattern(info.name));
+    return fmt::format("  {:<20} {:<13} {} [{}]\n", info.name, fam, info.summary, info.source);
+  }
+  std::string line = fmt::format("  {:<34} {} [{}]\n", info.usage(), info.summary, info.source);
+  for (const ParamInfo& p : info.params)
+    line += fmt::format("      {:<10} {}{}\n", p.key, p.meaning,
+                        p.default_text.empty() ? "" : fmt::format(" ({})", p.default_text));
+  return line;
+}
+
+}  // namespace
 
 Action add_list_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "list", "list the catalog patterns, filters, generators, acuity tables and scenes");
+      "list",
+      "list the catalog patterns, filters, generators, acuity tables, scenes and API profiles");
   auto json = std::make_shared<bool>(false);
-  cmd->add_flag("--json", *json, "print the catalogs as JSON (docs/json.md)");
+  cmd->add_flag("--json", *json, "print the registries as JSON (docs/json.md)");
   return [json](std::ostream& out) {
     if (*json) {
       JsonObject doc = json_report("list");
-      JsonObject patterns = JsonObject::array(), filters = JsonObject::array(),
-                 generators = JsonObject::array(), acuity = JsonObject::array(),
-                 scenes = JsonObject::array();
-      for (const auto& e : pattern_catalog())
-        patterns.push_back({{"name", e.name}, {"summary", e.summary}, {"source", e.source}});
-      for (const auto& f : filter_catalog()) {
-        JsonObject params = JsonObject::array();
-        for (const auto& p : f.params)
-          params.push_back({{"key", p.key}, {"default", p.default_text}, {"meaning", p.meaning}});
-        filters.push_back({{"name", f.name},
-                           {"summary", f.summary},
-                           {"source", f.source},
-                           {"parameters", params}});
+      for (const Section& s : sections()) {
+        JsonObject entries = JsonObject::array();
+        for (const SpecInfo& info : s.infos) entries.push_back(info_json(info));
+        doc[s.key] = std::move(entries);
       }
-      for (const auto& g : generator_catalog())
-        generators.push_back({{"spec", g.spec}, {"summary", g.summary}, {"source", g.source}});
-      for (const auto& a : acuity_catalog())
-        acuity.push_back({{"spec", a.spec}, {"summary", a.summary}});
-      for (const auto& s : scene_catalog())
-        scenes.push_back({{"name", s.name}, {"parameters", s.parameters}, {"summary", s.summary}});
-      doc.update(JsonObject{{"patterns", patterns},
-                            {"filters", filters},
-                            {"generators", generators},
-                            {"acuity_tables", acuity},
-                            {"scenes", scenes}});
       out << json_text(doc);
       return;
     }
-    out << "patterns:\n";
-    for (const auto& e : pattern_catalog()) {
-      const std::string fam = e.name == "grid-NxN" ? "P(1,1,N*N)" : family(catalog_pattern(e.name));
-      out << fmt::format("  {:<20} {:<13} {} [{}]\n", e.name, fam, e.summary, e.source);
+    for (const Section& s : sections()) {
+      out << s.heading << ":\n";
+      for (const SpecInfo& info : s.infos) out << entry_line(s, info);
     }
-    out << "filters:\n";
-    for (const auto& f : filter_catalog()) {
-      std::string params;
-      for (const auto& p : f.params)
-        params += fmt::format("{}{}={}", params.empty() ? ":" : ",", p.key, p.default_text);
-      out << fmt::format("  {:<34} {} [{}]\n", f.name + params, f.summary, f.source);
-    }
-    out << "point generators (aapat generate, spectrum, discrepancy):\n";
-    for (const auto& g : generator_catalog())
-      out << fmt::format("  {:<27} {} [{}]\n", g.spec, g.summary, g.source);
-    out << "acuity tables:\n";
-    for (const auto& a : acuity_catalog()) out << fmt::format("  {:<27} {}\n", a.spec, a.summary);
-    out << "scenes (aapat render; or a .json scene file, docs/renderer.md):\n";
-    for (const auto& s : scene_catalog())
-      out << fmt::format("  {:<27} {}\n",
-                         s.parameters.empty() ? s.name : s.name + ":" + s.parameters, s.summary);
   };
 }
 

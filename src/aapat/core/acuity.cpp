@@ -149,27 +149,30 @@ AcuityTable parse_acuity_csv(std::string_view text, std::string_view source) {
   return t;
 }
 
+const AcuityRegistry& acuity_registry() {
+  static const AcuityRegistry kRegistry(
+      "acuity",
+      {{{"laine-aila",
+         "4 edge angles: 0/90 deg weigh 3.93, 45/135 weigh 2.50 (default; data/README.md)",
+         "Laine & Aila 2006, Sec. 4",
+         {}},
+        [](const Spec&) { return laine_aila_acuity(); }},
+       {{"uniform",
+         "every S degrees in [0, 180), all weights W",
+         "aapat: an isotropic table",
+         {{"step", "", "the angle step in degrees"}, {"weight", "1", "every angle's weight"}}},
+        [](const Spec& s) { return uniform_acuity(s.number("step"), s.number("weight")); }},
+       {{"linear",
+         "every S degrees, laine-aila weights interpolated linearly between 45-degree nodes",
+         "aapat: Laine & Aila's 4 angles, densified",
+         {{"step", "", "the angle step in degrees"}}},
+        [](const Spec& s) { return linear_acuity(s.number("step")); }}});
+  return kRegistry;
+}
+
 AcuityTable make_acuity(std::string_view spec) {
-  if (spec == "laine-aila") return laine_aila_acuity();
-  const auto colon = spec.find(':');
-  const std::string_view kind = spec.substr(0, colon);
-  if ((kind == "uniform" || kind == "linear") && colon != std::string_view::npos) {
-    double step = 0, weight = 1;
-    bool has_step = false;
-    for (const std::string_view item : split(spec.substr(colon + 1))) {
-      const auto eq = item.find('=');
-      const std::string_view key = item.substr(0, eq);
-      if (eq == std::string_view::npos ||
-          !(key == "step" || (key == "weight" && kind == "uniform")))
-        throw Error(fmt::format("acuity {}: unknown parameter '{}' (it takes step{})", kind, item,
-                                kind == "uniform" ? " and weight" : ""));
-      (key == "step" ? step : weight) = parse_number(item.substr(eq + 1), key);
-      has_step = has_step || key == "step";
-    }
-    if (!has_step)
-      throw Error(fmt::format("acuity {}: give the angle step, e.g. {}:step=1", kind, kind));
-    return kind == "uniform" ? uniform_acuity(step, weight) : linear_acuity(step);
-  }
+  // A registered table by its spec, else a CSV file.
+  if (acuity_registry().contains(spec)) return acuity_registry().make(spec);
   std::error_code ec;
   if (std::filesystem::is_directory(std::string(spec), ec))
     throw Error(fmt::format("acuity table '{}': it is a folder, not a CSV file", spec));
@@ -187,18 +190,6 @@ AcuityTable make_acuity(std::string_view spec) {
   std::stringstream buffer;
   buffer << file.rdbuf();
   return parse_acuity_csv(buffer.str(), spec);
-}
-
-const std::vector<AcuityInfo>& acuity_catalog() {
-  static const std::vector<AcuityInfo> kInfo = {
-      {"laine-aila",
-       "4 edge angles: 0/90 deg weigh 3.93, 45/135 weigh 2.50 (default; data/README.md)"},
-      {"uniform:step=S[,weight=W]", "every S degrees in [0, 180), all weights W (default 1)"},
-      {"linear:step=S",
-       "every S degrees, laine-aila weights interpolated linearly between 45-degree nodes"},
-      {"FILE.csv", "rows 'edge_angle_deg,weight'; '#' starts a comment"},
-  };
-  return kInfo;
 }
 
 }  // namespace aapat

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "aapat/core/spec.h"
+
 namespace aapat {
 
 struct AcuityTable {
@@ -40,10 +42,9 @@ AcuityTable make_acuity(std::string_view spec);
 
 inline constexpr std::string_view kDefaultAcuity = "laine-aila";
 
-struct AcuityInfo {
-  std::string spec;
-  std::string summary;
-};
-const std::vector<AcuityInfo>& acuity_catalog();
+// laine-aila, uniform:step=S[,weight=W], linear:step=S (core/spec.h); any
+// other spec names a CSV file of rows 'edge_angle_deg,weight'.
+using AcuityRegistry = Registry<AcuityTable>;
+const AcuityRegistry& acuity_registry();
 
 }  // namespace aapat

@@ -86,7 +86,7 @@ TEST(Acuity, SpecErrors) {
       "uniform:step=0",
       "acuity step 0 is out of range [0.005, 90] degrees (at most 36000 angles in [0, 180))");
   expect_error("uniform:size=2",
-               "acuity uniform: unknown parameter 'size=2' (it takes step and weight)");
+               "acuity uniform: unknown parameter 'size=2' (it takes step, weight)");
   expect_error("linear:weight=2", "acuity linear: unknown parameter 'weight=2' (it takes step)");
   expect_error("no/such.csv",
                "unknown acuity table 'no/such.csv': not laine-aila, uniform:step=S, linear:step=S "

@@ -1,5 +1,5 @@
 // The named reference filters, their parameters with defaults and sources, in
-// one place that both `aapat list` and the docs read; and the parser for specs
+// one registry that `aapat list`, the docs and the Python module read; and the parser for specs
 // such as `mitchell:b=1/3,c=1/3`, `gaussian:sigma=0.5,radius=1.5`, `lanczos:lobes=3`.
 #pragma once
 
@@ -9,23 +9,13 @@
 #include <vector>
 
 #include "aapat/core/filter.h"
+#include "aapat/core/spec.h"
 
 namespace aapat {
 
-struct FilterParamInfo {
-  std::string key;
-  std::string default_text;
-  std::string meaning;
-};
-
-struct FilterInfo {
-  std::string name;
-  std::string summary;
-  std::string source;
-  std::vector<FilterParamInfo> params;
-};
-
-const std::vector<FilterInfo>& filter_catalog();
+// Every filter with its parameters, defaults and source (core/spec.h).
+using FilterRegistry = Registry<FilterShape>;
+const FilterRegistry& filter_registry();
 
 // Builds a filter from its spec; throws Error naming the unknown filter,
 // parameter or the out-of-range value.

@@ -17,7 +17,7 @@ using testing::integrate_pieces;
 // Every named filter with its defaults, and a few with parameters.
 std::vector<std::string> all_specs() {
   std::vector<std::string> specs;
-  for (const auto& f : filter_catalog()) specs.push_back(f.name);
+  for (const auto& f : filter_registry().entries()) specs.push_back(f.info.name);
   specs.insert(specs.end(), {"mitchell:b=3/2,c=-1/4", "gaussian:sigma=0.3,radius=2", "box:width=2",
                              "tent:radius=1.5", "lanczos:lobes=2", "keys:a=-3/4"});
   return specs;

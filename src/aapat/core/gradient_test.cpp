@@ -15,8 +15,8 @@ namespace {
 // on random 1D patterns with signed weights summing to 1. Samples keep apart
 // by more than the difference step, so no two cross (where E1 has a kink).
 RC_GTEST_PROP(E1Gradient, MatchesCentralDifferences, ()) {
-  const auto& catalog = filter_catalog();
-  const Filter f = make_filter(catalog[*rc::gen::inRange<size_t>(0, catalog.size())].name);
+  const auto& catalog = filter_registry().entries();
+  const Filter f = make_filter(catalog[*rc::gen::inRange<size_t>(0, catalog.size())].info.name);
   const int n = *rc::gen::inRange(1, 34);  // both sides of the pairwise/sorted switch
   std::vector<double> p(n), w(n);
   double sum = 0;

@@ -53,13 +53,19 @@ const std::vector<ApiProfile>& api_profiles() {
   return kProfiles;
 }
 
+const ProfileRegistry& profile_registry() {
+  static const ProfileRegistry kRegistry = [] {
+    std::vector<ProfileRegistry::Entry> list;
+    for (const ApiProfile& p : api_profiles())
+      list.push_back({{p.name, p.summary, "the API's programmable sample positions", {}},
+                      [&p](const Spec&) { return &p; }});
+    return ProfileRegistry("API profile", std::move(list));
+  }();
+  return kRegistry;
+}
+
 const ApiProfile& api_profile(std::string_view name) {
-  std::string known;
-  for (const ApiProfile& p : api_profiles()) {
-    if (p.name == name) return p;
-    known += (known.empty() ? "" : ", ") + p.name;
-  }
-  throw Error(fmt::format("unknown API profile '{}': known profiles are {}", name, known));
+  return *profile_registry().make(name);
 }
 
 double HardwareLayout::reads() const {

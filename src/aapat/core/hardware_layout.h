@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "aapat/core/pattern.h"
+#include "aapat/core/spec.h"
 
 namespace aapat {
 
@@ -29,6 +30,9 @@ struct ApiProfile {
 };
 
 const std::vector<ApiProfile>& api_profiles();
+// The profiles by name, for specs and listings (core/spec.h).
+using ProfileRegistry = Registry<const ApiProfile*>;
+const ProfileRegistry& profile_registry();
 const ApiProfile& api_profile(std::string_view name);  // throws Error naming the known ones
 
 struct LatticePoint {

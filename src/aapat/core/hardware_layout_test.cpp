@@ -37,7 +37,7 @@ TEST(HardwareLayout, FlipquadOnATier2Grid) {
 // layout reads back as the pattern (footprints 1 and 1+).
 TEST(HardwareLayout, EveryPhysicalSampleOnceAndTheRoundTrip) {
   int checked = 0;
-  for (const auto& e : pattern_catalog()) {
+  for (const auto& [e, build] : pattern_registry().entries()) {
     if (e.name == "grid-NxN") continue;
     Pattern p;
     try {
@@ -89,7 +89,7 @@ TEST(HardwareLayout, PatternsThatDoNotFitAreNamed) {
       error_message([&] { hardware_layout(catalog_pattern("msaa-16"), api_profile("metal")); }),
       "msaa-16: 16 samples per pixel (as 16x MSAA) is more than metal allows with a 1x1 grid "
       "(8)");
-  EXPECT_NE(error_message([] { api_profile("d3d9"); }).find("known profiles are d3d12-tier1"),
+  EXPECT_NE(error_message([] { api_profile("d3d9"); }).find("known API profiles are d3d12-tier1"),
             std::string::npos);
   // Vulkan takes a larger grid than the tile: the tile repeats in it.
   const HardwareLayout L = hardware_layout(catalog_pattern("msaa-4"), api_profile("vulkan"), 2, 2);

@@ -38,7 +38,7 @@ TEST(Lattice, BordersStayAndLatticePatternsDoNotMove) {
 
 // Snapping keeps every catalog pattern's family and cost n: borders stay shared.
 TEST(Lattice, SnappingKeepsFamilyAndCost) {
-  for (const auto& e : pattern_catalog()) {
+  for (const auto& [e, build] : pattern_registry().entries()) {
     if (e.name == "grid-NxN") continue;
     const Pattern p = catalog_pattern(e.name);
     Pattern q;

@@ -15,7 +15,7 @@ namespace {
 const std::vector<std::string>& filter_specs() {
   static const std::vector<std::string> specs = [] {
     std::vector<std::string> v;
-    for (const auto& f : filter_catalog()) v.push_back(f.name);
+    for (const auto& f : filter_registry().entries()) v.push_back(f.info.name);
     return v;
   }();
   return specs;

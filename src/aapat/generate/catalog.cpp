@@ -19,8 +19,13 @@ namespace {
 
 using Builder = std::function<Pattern()>;
 
+// Name, summary and the paper, table or figure it comes from.
+struct CatalogText {
+  std::string name, summary, source;
+};
+
 struct Entry {
-  CatalogEntry info;
+  CatalogText info;
   Builder build;
 };
 
@@ -203,13 +208,27 @@ const std::vector<Entry>& entries() {
 
 }  // namespace
 
-const std::vector<CatalogEntry>& pattern_catalog() {
-  static const std::vector<CatalogEntry> kInfo = [] {
-    std::vector<CatalogEntry> v;
-    for (const auto& e : entries()) v.push_back(e.info);
-    return v;
+const PatternRegistry& pattern_registry() {
+  static const PatternRegistry kRegistry = [] {
+    std::vector<PatternRegistry::Entry> list;
+    for (const auto& e : entries()) {
+      const SpecInfo info{e.info.name, e.info.summary, e.info.source, {}};
+      if (!e.build) {  // grid-NxN: a template, built by catalog_pattern from its name
+        list.push_back({info, [](const Spec&) -> Pattern {
+                          throw Error("pattern grid-NxN: name the grid, e.g. grid-4x4");
+                        }});
+        continue;
+      }
+      list.push_back({info, [&e](const Spec&) {
+                        Pattern p = e.build();
+                        p.description = e.info.summary;
+                        p.provenance = {{"catalog", e.info.name}, {"source", e.info.source}};
+                        return p;
+                      }});
+    }
+    return PatternRegistry("pattern", std::move(list));
   }();
-  return kInfo;
+  return kRegistry;
 }
 
 Pattern uniform_grid_pattern(int n) {
@@ -220,14 +239,8 @@ Pattern uniform_grid_pattern(int n) {
 }
 
 Pattern catalog_pattern(std::string_view name) {
-  for (const auto& e : entries()) {
-    if (e.info.name == name && e.build) {
-      Pattern p = e.build();
-      p.description = e.info.summary;
-      p.provenance = {{"catalog", e.info.name}, {"source", e.info.source}};
-      return p;
-    }
-  }
+  const PatternRegistry& registry = pattern_registry();
+  if (registry.find(name) && name != "grid-NxN") return registry.make(name);
   if (name.starts_with("grid-")) {
     const std::string_view dims = name.substr(5);
     const auto x = dims.find('x');
@@ -243,10 +256,8 @@ Pattern catalog_pattern(std::string_view name) {
     p.provenance = {{"catalog", "grid-NxN"}, {"source", "regular supersampling"}};
     return p;
   }
-  std::string known;
-  for (const auto& e : entries()) known += (known.empty() ? "" : ", ") + e.info.name;
-  throw Error(
-      fmt::format("unknown pattern '{}': not a catalog name ({}) nor a .json file", name, known));
+  throw Error(fmt::format("unknown pattern '{}': not a catalog name ({}) nor a .json file", name,
+                          registry.names()));
 }
 
 }  // namespace aapat

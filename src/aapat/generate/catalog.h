@@ -7,17 +7,14 @@
 #include <vector>
 
 #include "aapat/core/pattern.h"
+#include "aapat/core/spec.h"
 
 namespace aapat {
 
-struct CatalogEntry {
-  std::string name;
-  std::string summary;
-  std::string source;
-};
-
-// The fixed entries, in listing order (grid-NxN is listed once as a template).
-const std::vector<CatalogEntry>& pattern_catalog();
+// The fixed entries, in listing order (grid-NxN is listed once as a template;
+// catalog_pattern builds any grid-NxN). Catalog patterns take no parameters.
+using PatternRegistry = Registry<Pattern>;
+const PatternRegistry& pattern_registry();
 
 // Builds a catalog pattern by name; throws Error listing the known names.
 Pattern catalog_pattern(std::string_view name);

@@ -54,7 +54,7 @@ TEST(Catalog, StandardMsaa4IsARotatedGrid) {
 }
 
 TEST(Catalog, EveryEntryBuildsAndValidates) {
-  for (const auto& e : pattern_catalog()) {
+  for (const auto& [e, build] : pattern_registry().entries()) {
     const std::string name = e.name == "grid-NxN" ? "grid-5x5" : e.name;
     const Pattern p = catalog_pattern(name);
     EXPECT_NO_THROW(validate(p)) << name;

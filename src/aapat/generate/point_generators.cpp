@@ -202,8 +202,13 @@ std::vector<Vec2> best_n_queens(int n) {
   return it->second;
 }
 
+// The table the registry is built from: spec as listed ("halton:b1=2,b2=3"), summary, source.
+struct GeneratorText {
+  std::string spec, summary, source;
+};
+
 struct Entry {
-  GeneratorInfo info;
+  GeneratorText info;
   std::vector<std::pair<std::string, double>> params;  // name, default (NAN: derived from n)
   std::function<std::vector<Vec2>(int, const Params&, std::mt19937_64&)> make;
 };
@@ -366,15 +371,6 @@ std::string base_name(const std::string& spec) {
 
 }  // namespace
 
-const std::vector<GeneratorInfo>& generator_catalog() {
-  static const std::vector<GeneratorInfo> kInfo = [] {
-    std::vector<GeneratorInfo> v;
-    for (const auto& e : entries()) v.push_back(e.info);
-    return v;
-  }();
-  return kInfo;
-}
-
 double radical_inverse(uint64_t i, int base) {
   double inv = 1.0 / base, f = inv, r = 0;
   for (; i > 0; i /= base, f *= inv) r += f * static_cast<double>(i % base);
@@ -418,38 +414,51 @@ std::vector<std::vector<int>> n_queens_solutions(int n, size_t limit) {
   return out;
 }
 
+namespace {
+
+// What each parameter means, for the listing.
+std::string meaning_of(const std::string& key) {
+  if (key == "amount") return "side of the jittered part of each stratum (1: jittered)";
+  if (key == "radius") return "minimum distance (default: 0.75 of the densest packing's for n)";
+  if (key == "q") return "candidates per point, times the points placed so far";
+  if (key == "b") return "radical-inverse base, 2..64";
+  if (key == "b1") return "base of x, 2..64";
+  return "base of y, 2..64";
+}
+
+}  // namespace
+
+const GeneratorRegistry& generator_registry() {
+  static const GeneratorRegistry kRegistry = [] {
+    std::vector<GeneratorRegistry::Entry> list;
+    for (const Entry& e : entries()) {
+      SpecInfo info{base_name(e.info.spec), e.info.summary, e.info.source, {}};
+      for (const auto& [key, value] : e.params)
+        info.params.push_back(
+            {key, std::isnan(value) ? "" : fmt::format("{}", value), meaning_of(key)});
+      list.push_back({info, [&e](const Spec& spec) -> PointGenerator {
+                        Params prm;
+                        for (const auto& [key, value] : e.params)
+                          prm[key] = spec.optional_number(key).value_or(value);
+                        for (const char* base : {"b", "b1", "b2"})
+                          if (prm.contains(base)) spec.whole(base, 2, 64);
+                        const std::string name = spec.name();
+                        return [&e, prm, name](int n, uint64_t seed) {
+                          if (n < 1 || n > 1000000)
+                            throw Error(
+                                fmt::format("{}: n = {} is out of range 1..1000000", name, n));
+                          std::mt19937_64 rng(seed);
+                          return e.make(n, prm, rng);
+                        };
+                      }});
+    }
+    return GeneratorRegistry("generator", std::move(list));
+  }();
+  return kRegistry;
+}
+
 PointGenerator make_point_generator(std::string_view spec) {
-  const auto colon = spec.find(':');
-  const std::string name(spec.substr(0, colon));
-  const Entry* entry = nullptr;
-  for (const auto& e : entries())
-    if (base_name(e.info.spec) == name) entry = &e;
-  if (!entry) {
-    std::string known;
-    for (const auto& e : entries()) known += (known.empty() ? "" : ", ") + base_name(e.info.spec);
-    throw Error(fmt::format("unknown generator '{}': known generators are {}", name, known));
-  }
-  Params prm;
-  for (const auto& [k, v] : entry->params) prm[k] = v;
-  for (const std::string_view item :
-       split(colon == std::string_view::npos ? std::string_view{} : spec.substr(colon + 1))) {
-    const auto eq = item.find('=');
-    const std::string key(item.substr(0, eq));
-    if (eq == std::string_view::npos || !prm.contains(key))
-      throw Error(fmt::format("generator {}: unknown parameter '{}'", name, item));
-    prm[key] = parse_number(item.substr(eq + 1), fmt::format("generator {}: {}", name, key));
-  }
-  for (const char* base : {"b", "b1", "b2"})
-    if (prm.contains(base) &&
-        (prm[base] < 2 || prm[base] > 64 || prm[base] != std::floor(prm[base])))
-      throw Error(
-          fmt::format("generator {}: {} = {} must be a whole base 2..64", name, base, prm[base]));
-  return [entry, prm, name](int n, uint64_t seed) {
-    if (n < 1 || n > 1000000)
-      throw Error(fmt::format("{}: n = {} is out of range 1..1000000", name, n));
-    std::mt19937_64 rng(seed);
-    return entry->make(n, prm, rng);
-  };
+  return generator_registry().make(spec);
 }
 
 std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed) {

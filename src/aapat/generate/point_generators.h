@@ -13,6 +13,7 @@
 
 #include "aapat/core/geometry.h"
 #include "aapat/core/pattern.h"
+#include "aapat/core/spec.h"
 
 namespace aapat {
 
@@ -23,20 +24,17 @@ inline constexpr double kMaxBestCandidateQueries = 5e7;  // about 7 s on one cor
 // Dart throwing (poisson, poisson-maximal) past this many points is refused.
 inline constexpr int kMaxPoissonPoints = 200'000;  // about 8 s on one core
 
-struct GeneratorInfo {
-  std::string spec;  // with its parameters and defaults
-  std::string summary;
-  std::string source;
-};
-const std::vector<GeneratorInfo>& generator_catalog();
+// The point generator `spec` with its parameters parsed once, for drawing many
+// point sets (the renderer draws one per pixel).
+using PointGenerator = std::function<std::vector<Vec2>(int n, uint64_t seed)>;
+// Every generator with its parameters (core/spec.h).
+using GeneratorRegistry = Registry<PointGenerator>;
+const GeneratorRegistry& generator_registry();
 
 // n points in [0,1)^2 by the generator `spec`; throws Error naming the
 // generator, parameter or n that does not fit.
 std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed);
 
-// The generator `spec` with its parameters parsed once, for drawing many
-// point sets (the renderer draws one per pixel).
-using PointGenerator = std::function<std::vector<Vec2>(int n, uint64_t seed)>;
 PointGenerator make_point_generator(std::string_view spec);
 
 // The radical inverse g_b(i) of Pelikan's slides: the base-b digits of i

@@ -123,8 +123,8 @@ TEST(Generators, LarcherPillichshammerIsAZeroMTwoNet) {
 }
 
 TEST(Generators, EveryGeneratorStaysInTheSquareAndIsDeterministic) {
-  for (const auto& g : generator_catalog()) {
-    const std::string name = g.spec.substr(0, g.spec.find(':'));
+  for (const auto& g : generator_registry().entries()) {
+    const std::string& name = g.info.name;
     const int n = name == "n-queens" ? 8 : 64;
     const auto a = generate_points(name, n, 11), b = generate_points(name, n, 11);
     EXPECT_TRUE(in_unit_square(a)) << name;
@@ -139,9 +139,10 @@ TEST(Generators, BadSpecsAreNamed) {
   EXPECT_EQ(msg("jitter", 4).find("unknown generator 'jitter': known generators are regular, "),
             0u);
   EXPECT_EQ(msg("jittered", 5), "jittered: n = 5 must be a square number (k x k strata)");
-  EXPECT_EQ(msg("halton:b1=4.5", 5), "generator halton: b1 = 4.5 must be a whole base 2..64");
+  EXPECT_EQ(msg("halton:b1=4.5", 5), "generator halton: b1 = 4.5 must be a whole number in 2..64");
   EXPECT_EQ(msg("semi-jittered:amount=2", 4), "semi-jittered: amount = 2 is out of range [0, 1]");
-  EXPECT_EQ(msg("random:q=1", 4), "generator random: unknown parameter 'q=1'");
+  EXPECT_EQ(msg("random:q=1", 4),
+            "generator random: unknown parameter 'q=1' (it takes no parameters)");
   EXPECT_EQ(msg("random", 0), "random: n = 0 is out of range 1..1000000");
   EXPECT_NE(
       msg("poisson:radius=0.5", 50).find("of 50 points fit at radius 0.5; use a smaller radius"),

@@ -83,7 +83,7 @@ TEST(ApiExport, GoldenFilesAndRoundTrips) {
 // multiples of 1/16 in [0, 0.9375].
 TEST(ApiExport, EveryExportedCoordinateIsLegal) {
   int files = 0;
-  for (const auto& e : pattern_catalog()) {
+  for (const auto& [e, build] : pattern_registry().entries()) {
     if (e.name == "grid-NxN") continue;
     for (const ApiProfile& profile : api_profiles()) {
       std::string text;

@@ -13,7 +13,7 @@ namespace {
 
 std::vector<std::string> catalog_names() {
   std::vector<std::string> names;
-  for (const auto& e : pattern_catalog())
+  for (const auto& [e, build] : pattern_registry().entries())
     names.push_back(e.name == "grid-NxN" ? "grid-3x3" : e.name);
   return names;
 }

@@ -23,38 +23,6 @@ bool in_triangle(Vec2 p, Vec2 a, Vec2 b, Vec2 c) {
   return !(neg && pos);
 }
 
-// `name:key=value,...` where every key is one of `allowed`; get() falls back to the default.
-class SceneParameters {
- public:
-  SceneParameters(std::string_view name, std::string_view spec, std::string_view allowed)
-      : name_(name) {
-    if (spec.empty()) return;
-    for (std::string_view item : split(spec)) {
-      const auto eq = item.find('=');
-      const std::string key(trim(item.substr(0, eq)));
-      bool known = false;
-      for (std::string_view a : split(allowed)) known = known || a == key;
-      if (eq == std::string_view::npos || !known)
-        throw Error(
-            fmt::format("scene {}: unknown parameter '{}' ({})", name, item,
-                        allowed.empty() ? "it takes none" : fmt::format("it takes {}", allowed)));
-      values_[key] = parse_number(item.substr(eq + 1), fmt::format("scene {}: {}", name, key));
-    }
-  }
-  // The value of `key`, which must lie in [lo, hi].
-  double get(const std::string& key, double fallback, double lo, double hi) const {
-    const auto it = values_.find(key);
-    const double v = it == values_.end() ? fallback : it->second;
-    if (!(v >= lo && v <= hi))
-      throw Error(fmt::format("scene {}: {} = {} is outside [{}, {}]", name_, key, v, lo, hi));
-    return v;
-  }
-
- private:
-  std::string name_;
-  std::map<std::string, double> values_;
-};
-
 }  // namespace
 
 Vec2 View::to_scene(Vec2 q) const {
@@ -138,38 +106,96 @@ void index_shapes(ShapesScene& scene) {
   scene.index = std::make_shared<const ShapeIndex>(scene.shapes);
 }
 
+namespace {
+
+// Where a scene of a width x height image is centred and how large it is.
+struct Frame {
+  double w, h, side;
+  Vec2 centre;
+};
+Frame frame_of(int width, int height) {
+  const double w = width, h = height;
+  return {w, h, std::min(w, h), {(w - 1) / 2, (h - 1) / 2}};
+}
+
+}  // namespace
+
+const SceneRegistry& scene_registry() {
+  static const SceneRegistry kRegistry(
+      "scene",
+      {{{"checkerboard",
+         "infinite flat-shaded checkerboard in perspective",
+         "Goss & Wu 2000, Sec. 3.1",
+         {{"horizon", "0.8", "horizon row as a fraction of the height"},
+          {"focal", "1", "focal length in image widths"},
+          {"eye", "1", "eye height in squares"},
+          {"rotation", "20", "rotation of the board in degrees"}}},
+        [](const Spec& s, int width, int height) -> Scene {
+          const Frame f = frame_of(width, height);
+          return CheckerboardScene{f.w,
+                                   f.h,
+                                   s.in_range("horizon", 0.05, 2),
+                                   s.in_range("focal", 0.01, 100),
+                                   s.in_range("eye", 0.01, 1000),
+                                   s.in_range("rotation", -360, 360)};
+        }},
+       {{"circles",
+         "white discs from 0.3 pixel to large",
+         "Laine & Aila 2006, Fig. 7",
+         {{"count", "16", "discs"}}},
+        [](const Spec& s, int width, int height) -> Scene {
+          const Frame f = frame_of(width, height);
+          return CirclesScene{f.w, f.h, s.whole("count", 1, 4096)};
+        }},
+       {{"sliver", "a thin triangle, sub-pixel at its tip", "Hasselgren et al. 2005, Fig. 4", {}},
+        [](const Spec&, int width, int height) -> Scene {
+          const Frame f = frame_of(width, height);
+          return SliverScene{
+              {0.03 * f.w, 0.04 * f.h}, {0.97 * f.w, 0.16 * f.h}, {0.97 * f.w, 0.21 * f.h}};
+        }},
+       {{"spiral",
+         "a white spiral arm on black",
+         "Hasselgren et al. 2005, Fig. 5",
+         {{"turns", "6", "turns of the arm"}, {"arm", "0.35", "white fraction of a turn"}}},
+        [](const Spec& s, int width, int height) -> Scene {
+          const Frame f = frame_of(width, height);
+          return SpiralScene{f.centre, s.in_range("turns", 0.01, 1000), 0.47 * f.side,
+                             s.in_range("arm", 0.01, 0.99)};
+        }},
+       {{"zoneplate",
+         "0.5 + 0.5 cos(pi k r^2 / size): k = 1 reaches Nyquist at the edge",
+         "aapat: the classic zone plate",
+         {{"k", "1", "frequency scale"}}},
+        [](const Spec& s, int width, int height) -> Scene {
+          const Frame f = frame_of(width, height);
+          return ZonePlateScene{f.centre, s.in_range("k", 1e-6, 1e6) / std::max(f.w, f.h)};
+        }},
+       {{"disc",
+         "a white disc",
+         "Hasselgren et al. 2005, Sec. 6.1",
+         {{"radius", "0.3", "radius as a fraction of the smaller side"}}},
+        [](const Spec& s, int width, int height) -> Scene {
+          const Frame f = frame_of(width, height);
+          return DiscScene{f.centre, s.in_range("radius", 1e-6, 10) * f.side};
+        }},
+       {{"halfplane",
+         "white where (p - centre) . (cos a, sin a) <= offset",
+         "aapat: one straight edge",
+         {{"angle", "30", "edge normal in degrees"}, {"offset", "0", "distance from the centre"}}},
+        [](const Spec& s, int width, int height) -> Scene {
+          const Frame f = frame_of(width, height);
+          return HalfPlaneScene{f.centre, s.in_range("angle", -360, 360),
+                                s.in_range("offset", -1e6, 1e6)};
+        }}});
+  return kRegistry;
+}
+
 Scene make_scene(std::string_view spec, int width, int height) {
-  const auto colon = spec.find(':');
-  const std::string_view name = spec.substr(0, colon);
-  const std::string_view rest = colon == std::string_view::npos ? "" : spec.substr(colon + 1);
-  const double w = width, h = height, side = std::min(w, h);
-  const Vec2 centre{(w - 1) / 2, (h - 1) / 2};
-  for (const SceneInfo& info : scene_catalog()) {
-    if (info.name != name) continue;
-    const SceneParameters q(name, rest, info.parameters);
-    if (name == "halfplane")
-      return HalfPlaneScene{centre, q.get("angle", 30, -360, 360), q.get("offset", 0, -1e6, 1e6)};
-    if (name == "checkerboard")
-      return CheckerboardScene{w,
-                               h,
-                               q.get("horizon", 0.8, 0.05, 2),
-                               q.get("focal", 1, 0.01, 100),
-                               q.get("eye", 1, 0.01, 1000),
-                               q.get("rotation", 20, -360, 360)};
-    if (name == "circles") return CirclesScene{w, h, static_cast<int>(q.get("count", 16, 1, 4096))};
-    if (name == "sliver")
-      return SliverScene{{0.03 * w, 0.04 * h}, {0.97 * w, 0.16 * h}, {0.97 * w, 0.21 * h}};
-    if (name == "spiral")
-      return SpiralScene{centre, q.get("turns", 6, 0.01, 1000), 0.47 * side,
-                         q.get("arm", 0.35, 0.01, 0.99)};
-    if (name == "zoneplate")
-      return ZonePlateScene{centre, q.get("k", 1, 1e-6, 1e6) / std::max(w, h)};
-    if (name == "disc") return DiscScene{centre, q.get("radius", 0.3, 1e-6, 10) * side};
-  }
-  std::string known;
-  for (const auto& s : scene_catalog()) known += (known.empty() ? "" : ", ") + s.name;
-  throw Error(
-      fmt::format("unknown scene '{}': known scenes are {} (or a .json scene file)", name, known));
+  const SceneRegistry& registry = scene_registry();
+  if (!registry.contains(spec))
+    throw Error(fmt::format("unknown scene '{}': known scenes are {} (or a .json scene file)",
+                            split_spec(spec).first, registry.names()));
+  return registry.make(spec, width, height);
 }
 
 Scene animation_frame(std::string_view animation, int width, int height, int frame, int frames) {
@@ -188,24 +214,6 @@ Scene animation_frame(std::string_view animation, int width, int height, int fra
   }
   throw Error(
       fmt::format("unknown animation '{}': known animations are circle, triangle", animation));
-}
-
-const std::vector<SceneInfo>& scene_catalog() {
-  static const std::vector<SceneInfo> kInfo = {
-      {"checkerboard", "horizon,focal,eye,rotation",
-       "infinite flat-shaded checkerboard in perspective (Goss & Wu Sec. 3.1); horizon row as a "
-       "fraction of the height (0.8), focal length in widths (1), eye height in squares (1), "
-       "rotation in degrees (20)"},
-      {"circles", "count", "white discs from 0.3 pixel to large (Laine & Aila Fig. 7); count (16)"},
-      {"sliver", "", "a thin triangle, sub-pixel at its tip (Hasselgren Fig. 4)"},
-      {"spiral", "turns,arm", "a spiral arm (Hasselgren Fig. 5); turns (6), white fraction (0.35)"},
-      {"zoneplate", "k",
-       "0.5 + 0.5 cos(pi k r^2 / size): k = 1 reaches Nyquist at the edge (k = 1)"},
-      {"disc", "radius", "a white disc; radius as a fraction of the smaller side (0.3)"},
-      {"halfplane", "angle,offset",
-       "white where (p - centre) . (cos a, sin a) <= offset; angle (30), offset (0)"},
-  };
-  return kInfo;
 }
 
 std::string canonical_text(const Scene& scene) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "aapat/core/geometry.h"
+#include "aapat/core/spec.h"
 
 namespace aapat {
 
@@ -98,7 +99,7 @@ std::string canonical_text(const Scene& scene);
 
 // `checkerboard`, `circles`, `sliver`, `spiral`, `zoneplate`, `disc` or
 // `halfplane`, with optional parameters (`checkerboard:horizon=0.7,rotation=35`),
-// laid out for a width x height image. scene_catalog() lists the parameters.
+// laid out for a width x height image. scene_registry() lists the parameters.
 Scene make_scene(std::string_view spec, int width, int height);
 
 // Frame f of `frames` of an animation: `circle` (a disc of radius 0.3 x the
@@ -106,9 +107,8 @@ Scene make_scene(std::string_view spec, int width, int height);
 // `triangle` (a triangle rotating a full turn about the image centre).
 Scene animation_frame(std::string_view animation, int width, int height, int frame, int frames);
 
-struct SceneInfo {
-  std::string name, parameters, summary;
-};
-const std::vector<SceneInfo>& scene_catalog();
+// Every built-in scene with its parameters (core/spec.h), built for a width x height image.
+using SceneRegistry = Registry<Scene, int, int>;
+const SceneRegistry& scene_registry();
 
 }  // namespace aapat

@@ -61,9 +61,10 @@ TEST(Scene, ParametersAreReadCheckedAndNamed) {
     return testing::error_message([&] { make_scene(spec, 64, 64); });
   };
   EXPECT_EQ(message("spiral:twist=3"),
-            "scene spiral: unknown parameter 'twist=3' (it takes turns,arm)");
-  EXPECT_EQ(message("sliver:width=3"), "scene sliver: unknown parameter 'width=3' (it takes none)");
-  EXPECT_EQ(message("spiral:arm=1.5"), "scene spiral: arm = 1.5 is outside [0.01, 0.99]");
+            "scene spiral: unknown parameter 'twist=3' (it takes turns, arm)");
+  EXPECT_EQ(message("sliver:width=3"),
+            "scene sliver: unknown parameter 'width=3' (it takes no parameters)");
+  EXPECT_EQ(message("spiral:arm=1.5"), "scene spiral: arm = 1.5 is out of range [0.01, 0.99]");
   EXPECT_NE(message("teapot").find("unknown scene 'teapot'"), std::string::npos);
 }
 
