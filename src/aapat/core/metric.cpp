@@ -97,55 +97,61 @@ double Metric::e1_squared_at(const Kernel& k, int angle, double* proj) const {
   return e1_squared(filter_, {proj, n}, k.w);
 }
 
-template <class Visit>
-void Metric::for_each_angle(const Kernel& k, Visit&& visit) const {
-  const size_t n = k.w.size();
-  // Projections on the edge normal: on the stack for ordinary kernel sizes.
-  constexpr size_t kStack = 256;
-  std::array<double, kStack> stack;
-  std::vector<double> heap(n > kStack ? n : 0);
-  double* proj = n > kStack ? heap.data() : stack.data();
-  for (int a = 0; a < angle_count(); ++a) visit(a, e1_squared_at(k, a, proj));
+KernelMaximum combine_over_kernels(std::span<const double> kernel_e2) {
+  KernelMaximum m{-1, 0};
+  for (size_t k = 0; k < kernel_e2.size(); ++k)
+    if (kernel_e2[k] > m.e2) m = {kernel_e2[k], static_cast<int>(k)};
+  return m;
+}
+
+double Metric::kernel_terms(const Kernel& k, std::span<double> proj,
+                            std::span<double> values) const {
+  // W^2 E1^2 per angle: one square root per kernel, not one per angle.
+  for (int a = 0; a < angle_count(); ++a)
+    values[a] = weight_sq_[a] * e1_squared_at(k, a, proj.data());
+  return combine_over_angles(values.first(angle_count()), norm_);
+}
+
+int Metric::worst_term(std::span<const double> values) {
+  int worst = 0;
+  for (size_t a = 1; a < values.size(); ++a)
+    if (values[a] > values[worst] * (1 + 1e-12)) worst = static_cast<int>(a);
+  return worst;
 }
 
 std::vector<double> Metric::profile(const Kernel& k) const {
-  std::vector<double> out(angle_count());
-  for_each_angle(k, [&](int a, double e1sq) { out[a] = acuity_.weights[a] * std::sqrt(e1sq); });
-  return out;
+  std::vector<double> proj(k.w.size()), values(angle_count());
+  kernel_terms(k, proj, values);
+  for (double& v : values) v = std::sqrt(v);  // W E1, W >= 0
+  return values;
 }
 
 KernelError Metric::kernel_error(const Kernel& k) const {
-  // Compare W^2 E1^2: one square root per kernel, not one per angle.
-  KernelError r;
-  thread_local std::vector<double> values;
+  // Scratch kept per thread: no allocation once warm.
+  thread_local std::vector<double> proj, values;
+  proj.resize(std::max(proj.size(), k.w.size()));
   values.resize(angle_count());
-  double worst = -1;
-  for_each_angle(k, [&](int a, double e1sq) {
-    values[a] = weight_sq_[a] * e1sq;
-    if (values[a] > worst * (1 + 1e-12)) {  // ties (symmetric patterns) go to the first angle
-      worst = values[a];
-      r.worst_angle = a;
-    }
-  });
-  r.e2 = combine_over_angles(values, norm_);
+  KernelError r;
+  r.e2 = kernel_terms(k, proj, values);
+  r.worst_angle = worst_term(values);
   return r;
 }
 
 PatternError Metric::evaluate(const Pattern& p) const {
   PatternError r;
-  r.e2 = -1;
+  std::vector<int> worst_angle;
   for (int k = 0; k < p.set_count(); ++k) {
     const KernelError e = kernel_error(make_kernel(p, k));
     if (!std::isfinite(e.e2))
       throw Error(
           fmt::format("pattern {}: E2 of kernel {} is {}, not a finite number", p.name, k, e.e2));
     r.kernel_e2.push_back(e.e2);
-    if (e.e2 > r.e2) {
-      r.e2 = e.e2;
-      r.worst_kernel = k;
-      r.worst_angle_deg = acuity_.angles_deg[e.worst_angle];
-    }
+    worst_angle.push_back(e.worst_angle);
   }
+  const KernelMaximum m = combine_over_kernels(r.kernel_e2);
+  r.e2 = m.e2;
+  r.worst_kernel = m.kernel;
+  if (!worst_angle.empty()) r.worst_angle_deg = acuity_.angles_deg[worst_angle[m.kernel]];
   return r;
 }
 

@@ -48,6 +48,14 @@ std::string format_norm(double norm);
 // Reads "inf" / "infinity" or a number in [1, kMaxFiniteNorm]; `what` names the input in errors.
 double parse_norm(std::string_view text, std::string_view what);
 
+// The combination over kernels: the largest kernel E2 (ties: the first
+// kernel). The one place the metric and the optimizer combine kernels.
+struct KernelMaximum {
+  double e2 = 0;
+  int kernel = 0;
+};
+KernelMaximum combine_over_kernels(std::span<const double> kernel_e2);
+
 struct KernelError {
   double e2 = 0;        // the combined weighted error over angles
   int worst_angle = 0;  // index into the acuity table of the largest W E1
@@ -77,6 +85,14 @@ class Metric {
   double sin(int angle) const { return sin_[angle]; }
   double weight_sq(int angle) const { return weight_sq_[angle]; }
 
+  // The one per-kernel evaluation, used by evaluate() and by the optimizer:
+  // W^2 E1^2 at every angle into `values` (angle_count() of them), with
+  // `proj` as room for the kernel's projections (its size at least); returns
+  // the kernel's E2, combine_over_angles of the values. Allocates nothing.
+  double kernel_terms(const Kernel& k, std::span<double> proj, std::span<double> values) const;
+  // The angle of the largest term (ties, as in symmetric patterns: the first).
+  static int worst_term(std::span<const double> values);
+
   // The per-angle profile W(theta) E1(theta).
   std::vector<double> profile(const Kernel& k) const;
   KernelError kernel_error(const Kernel& k) const;
@@ -85,9 +101,6 @@ class Metric {
  private:
   // E1^2 at one angle; proj has room for the kernel's projections.
   double e1_squared_at(const Kernel& k, int angle, double* proj) const;
-  // Calls visit(angle index, E1^2) for every angle of the table.
-  template <class Visit>
-  void for_each_angle(const Kernel& k, Visit&& visit) const;
 
   Filter filter_;
   AcuityTable acuity_;

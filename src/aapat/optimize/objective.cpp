@@ -36,21 +36,10 @@ double Objective::e2(const Problem& pr, Workspace& ws) const {
   const int angles = metric_.angle_count();
   ws.values.resize(ws.kernels.size() * angles);
   ws.kernel_e2.resize(ws.kernels.size());
-  double e2 = 0;
-  for (size_t k = 0; k < ws.kernels.size(); ++k) {
-    const Kernel& ker = ws.kernels[k];
-    for (int a = 0; a < angles; ++a) {
-      const double c = metric_.cos(a), s = metric_.sin(a);
-      for (int j = 0; j < ker.size(); ++j) ws.proj[j] = c * ker.y[j] - s * ker.x[j];
-      ws.values[k * angles + a] =
-          metric_.weight_sq(a) *
-          e1_squared(metric_.filter(), {ws.proj.data(), ker.w.size()}, ker.w);
-    }
-    ws.kernel_e2[k] = combine_over_angles(
-        {ws.values.data() + k * angles, static_cast<size_t>(angles)}, metric_.norm());
-    e2 = std::max(e2, ws.kernel_e2[k]);
-  }
-  return e2;
+  for (size_t k = 0; k < ws.kernels.size(); ++k)
+    ws.kernel_e2[k] = metric_.kernel_terms(
+        ws.kernels[k], ws.proj, {ws.values.data() + k * angles, static_cast<size_t>(angles)});
+  return combine_over_kernels(ws.kernel_e2).e2;
 }
 
 void Objective::add_term_gradient(const Problem& pr, Workspace& ws, int k, int a, double scale,

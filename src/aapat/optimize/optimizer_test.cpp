@@ -11,6 +11,7 @@
 #include "aapat/optimize/descent.h"
 #include "aapat/optimize/family.h"
 #include "aapat/optimize/multistart.h"
+#include "aapat/optimize/objective.h"
 #include "testing/error_message.h"
 
 namespace aapat {
@@ -245,6 +246,34 @@ TEST(Family, SeedPatternsAreValidAndCostN) {
       EXPECT_EQ(family(p), name) << placement;
     }
   }
+}
+
+// One E2 evaluation: the optimizer's objective of a problem and the metric's
+// E2 of the same pattern agree, for random patterns of every kind of family,
+// filters and norms. Both run Metric::kernel_terms and combine_over_kernels;
+// they differ only in how a kernel's inputs are assembled (the problem shifts
+// generators by whole pixels, the pattern its samples, and the metric divides
+// the weights by their sum), so they agree to rounding: 1e-12 relative.
+RC_GTEST_PROP(Objective, E2EqualsTheMetricsE2OfTheSamePattern, ()) {
+  const char* families[] = {"P(1,1,4)", "P(1,1+,2)", "P(4,1+,2)",
+                            "P(4,4,3)", "P(1,4,5)",  "P(9,1,2)"};
+  const char* placements[] = {
+      "", "inside,bottom-left,bottom-right,top-left,top-right", "left,right,bottom,top", "", "",
+      ""};
+  const size_t f = *rc::gen::inRange<size_t>(0, std::size(families));
+  const char* filters[] = {"mitchell", "gaussian", "box", "lanczos:lobes=2"};
+  const Filter filter = make_filter(filters[*rc::gen::inRange<size_t>(0, std::size(filters))]);
+  const double norms[] = {Metric::kMaxNorm, 1, 2, 8};
+  const Metric metric(filter, laine_aila_acuity(), norms[*rc::gen::inRange(0, 4)]);
+  auto rng = start_rng(*rc::gen::arbitrary<uint64_t>(), 0);
+  const FamilySpec spec = parse_family(families[f], placements[f]);
+  const SeedKind kinds[] = {SeedKind::kJittered, SeedKind::kPoisson, SeedKind::kUniform};
+  const Pattern p = seed_pattern(spec, kinds[*rc::gen::inRange(0, 3)], rng, filter);
+  const Problem problem = problem_from_pattern(p);
+  Workspace ws;
+  const double objective = Objective(metric).e2(problem, ws);
+  RC_ASSERT(std::abs(objective - metric.evaluate(pattern_of(problem)).e2) <= 1e-12 * objective);
+  RC_ASSERT(std::abs(objective - metric.evaluate(p).e2) <= 1e-12 * objective);
 }
 
 }  // namespace
