@@ -42,8 +42,8 @@ Action add_snap_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "write the snapped pattern (.json)");
   cmd->add_flag("--json", o->json, "print JSON");
   return [o](std::ostream& out) {
-    if (!o->output.empty() && !o->output.ends_with(".json"))
-      throw Error(fmt::format("--output: '{}' must end in .json", o->output));
+    if (!o->output.empty() && !is_pattern_path(o->output))
+      throw Error(fmt::format("--output: '{}' must end in .json or .xyw", o->output));
     if (o->nonnegative && !o->weights)
       throw Error("--nonnegative constrains the weights --optimize-weights finds: add it");
     const Metric metric = o->metric.make();
@@ -150,8 +150,8 @@ Action add_import_command(CLI::App& app) {
     if (o->output.empty()) {
       out << pattern_to_json(p);
     } else {
-      if (!o->output.ends_with(".json"))
-        throw Error(fmt::format("--output: '{}' must end in .json", o->output));
+      if (!is_pattern_path(o->output))
+        throw Error(fmt::format("--output: '{}' must end in .json or .xyw", o->output));
       save_pattern_file(p, o->output);
       out << "wrote " << o->output << "\n";
     }

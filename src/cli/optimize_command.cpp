@@ -110,8 +110,8 @@ struct OptimizeOptions {
 void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ostream& out) {
   if (o.pattern.empty() == o.family.empty())
     throw Error("optimize: give either --family (a search) or a PATTERN to polish");
-  if (!o.output.empty() && !o.output.ends_with(".json"))
-    throw Error(fmt::format("--output: '{}' must end in .json", o.output));
+  if (!o.output.empty() && !is_pattern_path(o.output))
+    throw Error(fmt::format("--output: '{}' must end in .json or .xyw", o.output));
   const Metric metric = o.metric.make();
   OptimizeRunSettings s;
   s.family = o.family;

@@ -13,6 +13,7 @@
 #include "aapat/io/line_plot.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/png_image.h"
+#include "aapat/io/point_formats.h"
 #include "aapat/io/point_set_file.h"
 #include "aapat/study/point_set_study.h"
 #include "cli/commands.h"
@@ -22,20 +23,29 @@ namespace aapat {
 namespace {
 
 struct PointOptions {
-  std::string source;
+  std::string source, format;
   int n = 16;
   uint64_t seed = 1;
 
   void add_to(CLI::App* cmd) {
-    cmd->add_option("source", source, "generator spec (see `aapat list`) or a .csv / .json file")
+    cmd->add_option("source", source,
+                    "generator spec (see `aapat list`) or a point file (.csv, .dat, .bin, .psa, "
+                    ".f32, .json; docs/formats.md)")
         ->required();
+    add_common(cmd);
+  }
+  void add_common(CLI::App* cmd) {
     cmd->add_option("--n", n, "points")->capture_default_str()->check(CLI::Range(1, 1000000));
     add_seed_option(cmd, seed, "random seed");
+    cmd->add_option("--format", format,
+                    "point file format: csv, safari, utk, utk-bin, psa, pspec, json (default: by "
+                    "extension)");
   }
-  bool is_file() const { return source.ends_with(".csv") || source.ends_with(".json"); }
-  // Realization r of the source (a file has only one).
+  bool is_file() const { return is_point_file(source); }
+  // Every set of a file (UTK files hold several), or realization r of a generator.
+  PointSets file_sets() const { return load_point_sets(source, format); }
   std::vector<Vec2> points(int realization = 0) const {
-    if (is_file()) return load_point_set(source);
+    if (is_file()) return file_sets().front();
     return generate_points(source, n, seed + static_cast<uint64_t>(realization));
   }
 };
@@ -139,6 +149,31 @@ void run_line_spectra(const SpectrumOptions& o, std::ostream& out) {
                        o.max_frequency);
 }
 
+// Writes the points (or, with --sets K, K realizations) of `src` to a point
+// file or, for .json / .xyw, a one-pixel pattern.
+void write_generated(const PointOptions& src, const std::string& output, int sets,
+                     std::ostream& out) {
+  if (is_pattern_path(output)) {
+    if (sets > 1)
+      throw Error("--sets: a pattern file holds one pixel's points; write a .dat or .bin");
+    const auto points = src.points();
+    Pattern p = points_to_pattern(
+        points, fmt::format("{}-{}", src.source.substr(0, src.source.find(':')), points.size()));
+    p.description = fmt::format("{} points from {}", points.size(), src.source);
+    p.provenance = {{"generator", src.source},
+                    {"n", std::to_string(points.size())},
+                    {"seed", std::to_string(src.seed)}};
+    save_pattern_file(p, output);
+    out << fmt::format("wrote {} ({} points, {})\n", output, points.size(), family(p));
+    return;
+  }
+  PointSets all;
+  for (int r = 0; r < sets; ++r) all.push_back(src.points(r));
+  save_point_sets(all, output, src.format);
+  out << fmt::format("wrote {} ({} points{})\n", output, all[0].size(),
+                     sets > 1 ? fmt::format(" in each of {} sets", sets) : "");
+}
+
 }  // namespace
 
 Action add_generate_command(CLI::App& app) {
@@ -146,15 +181,20 @@ Action add_generate_command(CLI::App& app) {
   auto src = std::make_shared<PointOptions>();
   auto output = std::make_shared<std::string>();
   auto tile = std::make_shared<int>(0);
+  auto sets = std::make_shared<int>(1);
   auto json = std::make_shared<bool>(false);
   src->add_to(cmd);
   cmd->add_flag("--json", *json, "print the points as JSON (docs/json.md) instead of CSV");
   cmd->add_option("-o,--output", *output,
-                  "a .csv point set or a .json pattern (P(1,1,n)); default: CSV on stdout");
+                  "a point file (.csv, .dat, .bin, .psa, .f32 or --format) or a pattern (.json, "
+                  ".xyw: P(1,1,n)); default: CSV on stdout");
+  cmd->add_option("--sets", *sets, "realizations (seeds seed, seed+1, ...) into a .dat or .bin")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
   cmd->add_option(
       "--tile", *tile,
       "with a .json output: a K x K tile of pixel sets, each generated anew: P(K^2,1,n)");
-  return [src, output, tile, json](std::ostream& out) {
+  return [src, output, tile, sets, json](std::ostream& out) {
     if (src->is_file()) throw Error("generate: give a generator, not a file");
     if (*json && !output->empty())
       throw Error("--json prints the points; it does not go with -o (the file has them)");
@@ -172,32 +212,19 @@ Action add_generate_command(CLI::App& app) {
       out << fmt::format("wrote {} ({})\n", *output, family(p));
       return;
     }
+    if (!output->empty() && *output != "-") return write_generated(*src, *output, *sets, out);
     const auto points = src->points();
-    if (*json) {
-      JsonObject doc = json_report("generate");
-      doc.update(JsonObject{{"source", src->source}, {"n", points.size()}, {"seed", src->seed}});
-      JsonObject rows = JsonObject::array();
-      for (const Vec2& v : points) rows.push_back({{"x", v.x}, {"y", v.y}});
-      doc["rows"] = std::move(rows);
-      out << json_text(doc);
-    } else if (output->empty() || *output == "-") {
-      out << point_csv(points);
-    } else if (output->ends_with(".json")) {
-      Pattern p = points_to_pattern(
-          points,
-          fmt::format("{}-{}", src->source.substr(0, src->source.find(':')), points.size()));
-      p.description = fmt::format("{} points from {}", points.size(), src->source);
-      p.provenance = {{"generator", src->source},
-                      {"n", std::to_string(points.size())},
-                      {"seed", std::to_string(src->seed)}};
-      save_pattern_file(p, *output);
-      out << fmt::format("wrote {} ({} points, {})\n", *output, points.size(), family(p));
-    } else if (output->ends_with(".csv")) {
-      write_output(*output, point_csv(points), out);
-      out << fmt::format("wrote {} ({} points)\n", *output, points.size());
-    } else {
-      throw Error(fmt::format("--output: '{}' must end in .csv or .json", *output));
+    if (!*json) {
+      out << format_point_sets({points}, src->format.empty() ? PointFormat::kCsv
+                                                             : point_format("", src->format));
+      return;
     }
+    JsonObject doc = json_report("generate");
+    doc.update(JsonObject{{"source", src->source}, {"n", points.size()}, {"seed", src->seed}});
+    JsonObject rows = JsonObject::array();
+    for (const Vec2& v : points) rows.push_back({{"x", v.x}, {"y", v.y}});
+    doc["rows"] = std::move(rows);
+    out << json_text(doc);
   };
 }
 
@@ -243,9 +270,8 @@ Action add_spectrum_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("spectrum", "Fourier power spectrum of a point set (2D, or 1D with --1d)");
   auto o = std::make_shared<SpectrumOptions>();
-  cmd->add_option("source", o->src.source, "generator spec or a .csv / .json file (2D)");
-  cmd->add_option("--n", o->src.n, "points")->capture_default_str()->check(CLI::Range(1, 1000000));
-  add_seed_option(cmd, o->src.seed, "random seed");
+  cmd->add_option("source", o->src.source, "generator spec or a point file (2D; docs/formats.md)");
+  o->src.add_common(cmd);
   cmd->add_option("--size", o->size, "frequencies per axis, -size/2 .. size/2-1")
       ->capture_default_str()
       ->check(CLI::Range(8, 2048));
@@ -265,12 +291,15 @@ Action add_spectrum_command(CLI::App& app) {
     if (!o->png.empty() && !o->png.ends_with(".png"))
       throw Error(fmt::format("--output: '{}' must end in .png", o->png));
     const PointOptions& src = o->src;
-    SpectrumSettings s{o->size, src.is_file() ? 1 : o->realizations,
+    // A file's sets are its realizations (UTK files hold several).
+    const PointSets sets = src.is_file() ? src.file_sets() : PointSets{};
+    SpectrumSettings s{o->size, src.is_file() ? static_cast<int>(sets.size()) : o->realizations,
                        src.is_file() ? 0 : static_cast<size_t>(src.n)};
     SpectrumStudy st;
     {
       Progress bar("spectrum");
-      st = spectrum_study([&](int r) { return src.points(r); }, s, bar.callback());
+      st = spectrum_study([&](int r) { return src.is_file() ? sets[r] : src.points(r); }, s,
+                          bar.callback());
     }
     const RadialProfile& radial = st.radial;
     if (!o->png.empty()) write_png_gray(o->png, o->size, o->size, spectrum_grey_pixels(st.mean));
@@ -279,7 +308,7 @@ Action add_spectrum_command(CLI::App& app) {
       csv += fmt::format("{},{:.6g},{:.4g}\n", radial.radius[i], radial.power[i],
                          radial.anisotropy_db[i]);
     if (!o->csv.empty()) write_output(o->csv, csv, out);
-    if (!o->svg.empty()) write_output(o->svg, radial_svg(st, src.source, o->realizations), out);
+    if (!o->svg.empty()) write_output(o->svg, radial_svg(st, src.source, s.realizations), out);
     if (o->json) {
       JsonObject doc = json_report("spectrum");
       doc.update(JsonObject{{"dimensions", 2},
@@ -300,7 +329,7 @@ Action add_spectrum_command(CLI::App& app) {
     }
     out << fmt::format(
         "{}: {} points, {}x{} frequencies, {} realization(s); mean power {:.4f} past |f| = {}\n",
-        src.source, st.points, o->size, o->size, o->realizations, st.tail_power, st.tail_radius);
+        src.source, st.points, o->size, o->size, s.realizations, st.tail_power, st.tail_radius);
   };
 }
 

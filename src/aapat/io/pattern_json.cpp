@@ -7,6 +7,7 @@
 
 #include "aapat/generate/catalog.h"
 #include "aapat/io/atomic_file.h"
+#include "aapat/io/pattern_text.h"
 
 namespace aapat {
 namespace {
@@ -178,20 +179,25 @@ Pattern pattern_from_json(std::string_view text, std::string_view source) {
   return p;
 }
 
+bool is_pattern_path(std::string_view path) {
+  return path.ends_with(".json") || path.ends_with(".xyw");
+}
+
 Pattern load_pattern_file(const std::string& path) {
-  return pattern_from_json(read_file(path, "pattern file"), path);
+  const std::string text = read_file(path, "pattern file");
+  return path.ends_with(".xyw") ? pattern_from_text(text, path) : pattern_from_json(text, path);
 }
 
 void save_pattern_file(const Pattern& p, const std::string& path) {
   validate(p);
-  write_file_atomically(path, pattern_to_json(p));
+  write_file_atomically(path, path.ends_with(".xyw") ? pattern_to_text(p) : pattern_to_json(p));
 }
 
 Pattern resolve_pattern(const std::string& name_or_path) {
   std::error_code ec;
   if (std::filesystem::is_directory(name_or_path, ec))
     throw Error(fmt::format("pattern '{}': it is a folder, not a pattern file", name_or_path));
-  if (name_or_path.ends_with(".json") || std::filesystem::is_regular_file(name_or_path, ec))
+  if (is_pattern_path(name_or_path) || std::filesystem::is_regular_file(name_or_path, ec))
     return load_pattern_file(name_or_path);
   return catalog_pattern(name_or_path);
 }

@@ -13,6 +13,9 @@ std::string pattern_to_json(const Pattern& p);
 // `source` names the text in error messages (a file name). Validates.
 Pattern pattern_from_json(std::string_view text, std::string_view source);
 
+// A pattern file: .xyw is Laine's "x y weight" text (io/pattern_text.h), any
+// other name aapat's JSON.
+bool is_pattern_path(std::string_view path);  // .json or .xyw
 Pattern load_pattern_file(const std::string& path);
 void save_pattern_file(const Pattern& p, const std::string& path);
 
