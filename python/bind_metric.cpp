@@ -1,0 +1,152 @@
+// Filters and acuity tables by spec, E2 (one pattern, many, or an (m, n, 2)
+// array of one-pixel patterns in one vectorized call) and the per-angle profile.
+#include <fmt/format.h>
+
+#include <deque>
+
+#include "aapat/core/acuity.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/study/batch_e2.h"
+#include "bindings.h"
+
+namespace aapat::python {
+
+const char* with_metric_args(const char* text) {
+  static std::deque<std::string> kept;
+  return kept.emplace_back(std::string(text) + kMetricArgs).c_str();
+}
+
+Metric make_metric(const py::object& filter, const py::object& acuity, double norm) {
+  Filter f = py::isinstance<Filter>(filter) ? filter.cast<Filter>()
+                                            : make_filter(filter.cast<std::string>());
+  AcuityTable a = py::isinstance<AcuityTable>(acuity) ? acuity.cast<AcuityTable>()
+                                                      : make_acuity(acuity.cast<std::string>());
+  return Metric(std::move(f), std::move(a), norm);
+}
+
+namespace {
+
+// E2 of every one-pixel pattern of an (m, n, 2) array, weights (m, n), (n,) or None.
+Array batch_eval(const Metric& metric, const Array& xy, const py::object& weights) {
+  if (xy.ndim() != 3 || xy.shape(2) != 2)
+    throw Error("eval: expected an (m, n, 2) array of m patterns of n samples");
+  const size_t m = static_cast<size_t>(xy.shape(0)), n = static_cast<size_t>(xy.shape(1));
+  std::vector<double> w;
+  if (!weights.is_none()) {
+    const Array a = weights.cast<Array>();
+    if (a.ndim() == 1 && static_cast<size_t>(a.shape(0)) == n) {
+      for (size_t p = 0; p < m; ++p) w.insert(w.end(), a.data(), a.data() + n);
+    } else if (a.ndim() == 2 && static_cast<size_t>(a.shape(0)) == m &&
+               static_cast<size_t>(a.shape(1)) == n) {
+      w.assign(a.data(), a.data() + m * n);
+    } else {
+      throw Error(fmt::format("eval: weights must be ({}, {}) or ({},)", m, n, n));
+    }
+  }
+  Array out(static_cast<py::ssize_t>(m));
+  std::span<double> e2(out.mutable_data(), m);
+  const std::span<const double> coords(xy.data(), m * n * 2);
+  {
+    py::gil_scoped_release release;
+    batch_e2(metric, coords, w, m, n, e2);
+  }
+  return out;
+}
+
+}  // namespace
+
+void bind_metric(py::module_& m) {
+  py::class_<Filter>(m, "Filter", "A reference filter h(x), separable in 2D: h(x) h(y).")
+      .def(py::init([](const std::string& spec) { return make_filter(spec); }), py::arg("spec"))
+      .def_property_readonly("name", &Filter::name,
+                             "the canonical spec, e.g. 'mitchell:b=1/3,c=1/3'")
+      .def_property_readonly("radius", &Filter::radius, "the support's half width in pixels")
+      .def(
+          "__call__",
+          [](const Filter& f, const Array& x) {
+            Array out(x.request().shape);
+            for (py::ssize_t i = 0; i < x.size(); ++i) out.mutable_data()[i] = f.value(x.data()[i]);
+            return out;
+          },
+          py::arg("x"), "h at every x of an array (1D, unnormalized)")
+      .def("__repr__", [](const Filter& f) { return "<aapat.Filter " + f.name() + ">"; });
+  m.def(
+      "filter", [](const std::string& spec) { return make_filter(spec); }, py::arg("spec"),
+      "a filter by spec, e.g. aapat.filter('gaussian:sigma=0.5,radius=1.5')");
+
+  py::class_<AcuityTable>(m, "AcuityTable", "Edge angles and their weights W(theta).")
+      .def(py::init([](const std::string& spec) { return make_acuity(spec); }), py::arg("spec"))
+      .def_readonly("name", &AcuityTable::name)
+      .def_property_readonly("angles_deg",
+                             [](const AcuityTable& a) { return from_vector(a.angles_deg); })
+      .def_property_readonly("weights",
+                             [](const AcuityTable& a) { return from_vector(a.weights); });
+  m.def(
+      "acuity", [](const std::string& spec) { return make_acuity(spec); }, py::arg("spec"),
+      "an acuity table: 'laine-aila', 'uniform:step=S', 'linear:step=S' or a CSV file");
+
+  m.def(
+      "eval",
+      [](const py::object& patterns, const py::object& weights, const py::object& filter,
+         const py::object& acuity, double norm) -> py::object {
+        const Metric metric = make_metric(filter, acuity, norm);
+        if (py::isinstance<py::array>(patterns)) {
+          const Array xy = patterns.cast<Array>();
+          if (xy.ndim() == 2) {  // one pattern
+            Array batch = Array(xy).reshape({py::ssize_t{1}, xy.shape(0), xy.shape(1)});
+            return py::float_(batch_eval(metric, batch, weights).at(0));
+          }
+          return batch_eval(metric, xy, weights);
+        }
+        if (py::isinstance<py::list>(patterns) || py::isinstance<py::tuple>(patterns)) {
+          std::vector<Pattern> list;
+          for (const py::handle& h : patterns) list.push_back(to_pattern(h));
+          std::vector<double> e2(list.size());
+          {
+            py::gil_scoped_release release;
+            for (size_t i = 0; i < list.size(); ++i) e2[i] = metric.evaluate(list[i]).e2;
+          }
+          return from_vector(e2);
+        }
+        return py::float_(metric.evaluate(to_pattern(patterns)).e2);
+      },
+      py::arg("patterns"), py::arg("weights") = py::none(), py::arg("filter") = "mitchell",
+      py::arg("acuity") = "laine-aila", py::arg("norm") = Metric::kMaxNorm,
+      with_metric_args(R"doc(E2 of patterns under the Laine-Aila weighted error metric.
+
+    patterns: a catalog name or pattern file, an aapat.Pattern, a list of those
+        (returns an array), an (n, 2) array of one pixel's samples (returns a
+        float), or an (m, n, 2) array of m such patterns, evaluated in one
+        vectorized call in parallel (returns an (m,) array). Coordinates in
+        pixels from the pixel centre.
+    weights: for arrays, (n,) or (m, n) resolve weights (normalized per
+        pattern); None: equal weights.)doc"));
+
+  m.def(
+      "profile",
+      [](const py::object& pattern, const py::object& filter, const py::object& acuity,
+         double norm) {
+        const Metric metric = make_metric(filter, acuity, norm);
+        const Pattern p = to_pattern(pattern);
+        const PatternError e = metric.evaluate(p);
+        Array values({static_cast<py::ssize_t>(p.set_count()),
+                      static_cast<py::ssize_t>(metric.angle_count())});
+        for (int k = 0; k < p.set_count(); ++k) {
+          const std::vector<double> v = metric.profile(make_kernel(p, k));
+          std::copy(v.begin(), v.end(), values.mutable_data() + k * metric.angle_count());
+        }
+        return py::dict(py::arg("angles_deg") = from_vector(metric.acuity().angles_deg),
+                        py::arg("values") = values, py::arg("e2") = e.e2,
+                        py::arg("kernel_e2") = from_vector(e.kernel_e2),
+                        py::arg("worst_kernel") = e.worst_kernel,
+                        py::arg("worst_angle_deg") = e.worst_angle_deg);
+      },
+      py::arg("pattern"), py::arg("filter") = "mitchell", py::arg("acuity") = "laine-aila",
+      py::arg("norm") = Metric::kMaxNorm,
+      with_metric_args(R"doc(The per-angle profile W(theta) E1(theta) of every kernel of a pattern.
+
+Returns a dict: angles_deg (the acuity table's angles), values (kernels x
+angles), e2, kernel_e2, worst_kernel, worst_angle_deg.)doc"));
+}
+
+}  // namespace aapat::python

@@ -1,0 +1,148 @@
+// Point sets: the generators, the peers' file formats, discrepancies and spectra.
+#include <fmt/format.h>
+
+#include "aapat/generate/point_generators.h"
+#include "aapat/io/point_formats.h"
+#include "aapat/study/point_set_study.h"
+#include "bindings.h"
+
+namespace aapat::python {
+namespace {
+
+// An (n, 2) array or a list of them.
+PointSets to_sets(const py::object& points) {
+  PointSets sets;
+  if (py::isinstance<py::list>(points) || py::isinstance<py::tuple>(points)) {
+    for (const py::handle& h : points) sets.push_back(to_points(h.cast<Array>(), "points"));
+  } else {
+    sets.push_back(to_points(points.cast<Array>(), "points"));
+  }
+  return sets;
+}
+
+py::dict discrepancy_dict(const DiscrepancyReport& d) {
+  return py::dict(py::arg("points") = d.points, py::arg("l2_star") = d.l2_star,
+                  py::arg("star_lower") = d.star.lower, py::arg("star_upper") = d.star.upper,
+                  py::arg("star_exact") = d.star.exact, py::arg("edge") = d.edge.value,
+                  py::arg("edge_normal_deg") = d.edge.normal_deg);
+}
+
+}  // namespace
+
+void bind_points(py::module_& m) {
+  m.def(
+      "generate",
+      [](const std::string& spec, int n, uint64_t seed) {
+        std::vector<Vec2> points;
+        {
+          py::gil_scoped_release release;
+          points = generate_points(spec, n, seed);
+        }
+        return from_points(points);
+      },
+      py::arg("spec"), py::arg("n"), py::arg("seed") = 1,
+      R"doc(n points in [0,1)^2 from a generator spec, as an (n, 2) array.
+
+    spec: "jittered", "poisson:radius=R", "best-candidate:q=10", "halton:b1=2,b2=3",
+        "n-queens", ... (aapat.registry()["generators"]).
+    seed: random seed (the deterministic generators ignore it).)doc");
+
+  m.def(
+      "read_points",
+      [](const std::string& path, const std::string& format) {
+        py::list l;
+        for (const auto& set : load_point_sets(path, format)) l.append(from_points(set));
+        return l;
+      },
+      py::arg("path"), py::arg("format") = "",
+      R"doc(Every point set of a file, as a list of (n, 2) arrays.
+
+    format: "csv" (aapat), "safari" (Samplin' Safari CSV), "utk" (UTK text .dat,
+        sets separated by '#'), "utk-bin" (UTK .bin), "psa" (PSA text), "pspec"
+        (pbrt-v4 pspec float32 pairs), "json" (a pattern file); default: by extension.)doc");
+  m.def(
+      "write_points",
+      [](const std::string& path, const py::object& points, const std::string& format) {
+        save_point_sets(to_sets(points), path, format);
+      },
+      py::arg("path"), py::arg("points"), py::arg("format") = "",
+      "write an (n, 2) array, or a list of them (utk, utk-bin), in a format of read_points");
+
+  m.def(
+      "discrepancy",
+      [](const Array& points) {
+        const std::vector<Vec2> p = to_points(points, "points");
+        DiscrepancyReport d;
+        {
+          py::gil_scoped_release release;
+          d = discrepancy_report(p);
+        }
+        return discrepancy_dict(d);
+      },
+      py::arg("points"),
+      R"doc(L2-star (Warnock), star (exact up to 2048 points, else grid bounds) and edge
+discrepancy of an (n, 2) array in [0, 1]^2. Returns a dict: points, l2_star,
+star_lower, star_upper, star_exact, edge, edge_normal_deg.)doc");
+
+  m.def(
+      "spectrum",
+      [](const py::object& source, int n, int size, int realizations, uint64_t seed) {
+        PointSets sets;
+        std::string spec;
+        if (py::isinstance<py::str>(source))
+          spec = source.cast<std::string>();
+        else
+          sets = to_sets(source);
+        if (spec.empty() && realizations != 1 && static_cast<size_t>(realizations) != sets.size())
+          throw Error("spectrum: the sets given are the realizations; leave realizations at 1");
+        SpectrumSettings s{size, spec.empty() ? static_cast<int>(sets.size()) : realizations,
+                           spec.empty() ? 0 : static_cast<size_t>(n)};
+        SpectrumStudy st;
+        {
+          py::gil_scoped_release release;
+          st = spectrum_study(
+              [&](int r) { return spec.empty() ? sets[r] : generate_points(spec, n, seed + r); },
+              s);
+        }
+        Array power({static_cast<py::ssize_t>(size), static_cast<py::ssize_t>(size)});
+        std::copy(st.mean.power.begin(), st.mean.power.end(), power.mutable_data());
+        return py::dict(py::arg("power") = power, py::arg("radius") = from_vector(st.radial.radius),
+                        py::arg("radial_power") = from_vector(st.radial.power),
+                        py::arg("anisotropy_db") = from_vector(st.radial.anisotropy_db),
+                        py::arg("points") = st.points, py::arg("realizations") = s.realizations);
+      },
+      py::arg("source"), py::arg("n") = 1024, py::arg("size") = 256, py::arg("realizations") = 1,
+      py::arg("seed") = 1,
+      R"doc(The exact power spectrum P(f) = |sum exp(-2 pi i f.p)|^2 / N of points on the torus.
+
+    source: a generator spec (drawn `realizations` times with seeds seed,
+        seed+1, ...), an (n, 2) array, or a list of arrays (averaged).
+    n: points per realization of a generator. size: frequencies -size/2 ..
+        size/2-1 per axis.
+Returns a dict: power (size x size, row v from -size/2, column u), radius,
+radial_power, anisotropy_db (the radial average), points, realizations.)doc");
+
+  m.def(
+      "spectrum_1d",
+      [](const std::vector<std::string>& kinds, int n, uint64_t seed, int frequencies,
+         double max_frequency) {
+        std::vector<LineSpectrum> spectra;
+        {
+          py::gil_scoped_release release;
+          spectra = line_spectra(kinds, n, seed, frequencies, max_frequency);
+        }
+        std::vector<double> f(static_cast<size_t>(frequencies));
+        for (int k = 0; k < frequencies; ++k) f[k] = k * max_frequency / frequencies;
+        py::dict d(py::arg("frequency") = from_vector(f));
+        for (const LineSpectrum& s : spectra) d[py::str(s.kind)] = from_vector(s.power);
+        return d;
+      },
+      py::arg("kinds"), py::arg("n") = 7488, py::arg("seed") = 1, py::arg("frequencies") = 131072,
+      py::arg("max_frequency") = 4.0,
+      R"doc(Goss & Wu Fig. 8: 1D power spectra of n points with unit mean spacing.
+
+    kinds: a list of "poisson" and/or "jittered". Returns a dict: frequency
+        (cycles per mean spacing) and one power array per kind.)doc");
+}
+
+}  // namespace aapat::python

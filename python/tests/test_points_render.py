@@ -1,0 +1,74 @@
+"""Generators, discrepancy and spectra as arrays; the renderer's images."""
+import numpy as np
+import pytest
+
+import aapat
+
+
+def test_generators_are_deterministic_and_in_the_square():
+    a = aapat.generate("jittered", 64, seed=9)
+    assert a.shape == (64, 2)
+    np.testing.assert_array_equal(a, aapat.generate("jittered", 64, seed=9))
+    assert ((a >= 0) & (a <= 1)).all()
+
+
+def test_one_point_has_the_star_discrepancy_of_its_box():
+    # One point at (1/2, 1/2): the worst anchored box is [0,1)^2 minus it, 3/4.
+    d = aapat.discrepancy(np.array([[0.5, 0.5]]))
+    assert d["star_exact"] and d["star_upper"] == pytest.approx(0.75)
+
+
+def test_a_utk_file_gives_the_discrepancy_of_the_same_points_in_csv(tmp_path):
+    points = aapat.generate("halton", 200)
+    aapat.write_points(str(tmp_path / "h.dat"), points)
+    aapat.write_points(str(tmp_path / "h.csv"), points)
+    a = aapat.discrepancy(aapat.read_points(str(tmp_path / "h.dat"))[0])
+    b = aapat.discrepancy(aapat.read_points(str(tmp_path / "h.csv"))[0])
+    assert a == b
+
+
+def test_the_spectrum_of_white_noise_averages_one():
+    s = aapat.spectrum("random", n=256, size=32, realizations=8)
+    assert s["power"].shape == (32, 32)
+    assert s["radial_power"][4:].mean() == pytest.approx(1.0, abs=0.15)
+    one = aapat.spectrum(aapat.generate("random", 256), size=32)
+    assert one["realizations"] == 1
+
+
+def test_the_1d_jittered_spectrum_follows_one_minus_sinc_squared():
+    # One uniform point per unit interval: expected power 1 - sinc^2(f) away from 0.
+    s = aapat.spectrum_1d(["jittered"], n=8192, seed=4, frequencies=4096, max_frequency=4)
+    f, p = s["frequency"], s["jittered"]
+    for lo, hi in [(0.2, 0.4), (1.3, 1.7), (3.2, 3.8)]:  # (near whole f the strata line up)
+        band = (f >= lo) & (f < hi)
+        expected = 1 - np.sinc(f[band]) ** 2
+        assert p[band].mean() == pytest.approx(expected.mean(), abs=0.1), (lo, hi)
+
+
+def test_render_gives_an_image_array_and_the_error_figures():
+    r = aapat.render("disc", pattern="rgss", size=(48, 32), reference=True, reference_samples=64)
+    assert r["image"].shape == (32, 48)
+    assert 0 <= r["image"].min() and r["image"].max() <= 1
+    assert r["rmse"] > 0 and r["max_deviation"] >= 1
+    assert r["reference"].shape == (32, 48)
+    with pytest.raises(aapat.Error, match="give either pattern= or generator="):
+        aapat.render("disc")
+
+
+def test_every_function_has_a_docstring():
+    import inspect
+    for name in dir(aapat):
+        obj = getattr(aapat, name)
+        if name.startswith("_") or not callable(obj):
+            continue
+        assert obj.__doc__ and len(obj.__doc__.strip()) > 20, name
+    assert "family: the family to search" in aapat.optimize.__doc__
+    assert "progress" in aapat.optimize.__doc__
+
+
+def test_the_registry_lists_what_the_cli_lists():
+    reg = aapat.registry()
+    assert "mitchell" in [f["name"] for f in reg["filters"]]
+    assert {"key": "b", "default": "1/3", "meaning": "B parameter"} in next(
+        f for f in reg["filters"] if f["name"] == "mitchell")["parameters"]
+    assert "spiral" in [s["name"] for s in reg["scenes"]]
