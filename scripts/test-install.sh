@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the release build into build/install and builds the example in
 # examples/ against it twice, with find_package(aapat) and with pkg-config,
-# then runs both: the check that the installed package is usable on its own.
+# then runs both, and imports the installed Python module: the check that the
+# installed package is usable on its own.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 prefix=$PWD/build/install
@@ -18,3 +19,6 @@ export PKG_CONFIG_PATH
 g++ -O2 examples/evaluate_and_optimize.cpp $(pkg-config --cflags --libs aapat) \
   -o build/example/evaluate_and_optimize_pc
 build/example/evaluate_and_optimize_pc >/dev/null && echo "pkg-config build runs and finds the optimum"
+echo "== Python module (installed)"
+PYTHONPATH=$(dirname "$(find "$prefix" -name 'aapat.cpython-*.so' | head -1)") /usr/bin/python3 -c \
+  'import aapat; e = aapat.eval("rgss"); assert abs(e - 0.439) < 0.001, e; print("import aapat:", aapat.__version__, "rgss E2", round(e, 4))'

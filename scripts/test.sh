@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs what is needed, builds the optimized and the ASan+UBSan builds, runs
-# every test in both, then fuzzes each parser for a fixed budget under ASan +
-# UBSan (scripts/fuzz.sh; AAPAT_FUZZ_SECONDS per target, default 20). This is
-# what CI runs (.ci/run).
+# every test in both (the Python suite in the optimized one), checks that the
+# committed docs/ tables and figures regenerate byte for byte and that the
+# installed package builds and runs the example in examples/, then fuzzes each
+# parser for a fixed budget under ASan + UBSan (scripts/fuzz.sh;
+# AAPAT_FUZZ_SECONDS per target, default 20). This is what CI runs (.ci/run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -15,6 +17,12 @@ for preset in release asan; do
   echo "== ${preset}: tests"
   # Each test's line, the output of any that fails, and ctest's summary.
   ctest --preset "$preset" -j "$jobs" --output-on-failure || status=1
+  if [ "$preset" = release ]; then
+    echo "== docs: every committed table and figure regenerates byte for byte"
+    scripts/check-docs.sh || status=1
+    echo "== the installed package"
+    scripts/test-install.sh || status=1
+  fi
 done
 echo "== fuzz: every parser under ASan + UBSan"
 scripts/fuzz.sh build/asan || status=1

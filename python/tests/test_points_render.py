@@ -72,3 +72,15 @@ def test_the_registry_lists_what_the_cli_lists():
     assert {"key": "b", "default": "1/3", "meaning": "B parameter"} in next(
         f for f in reg["filters"] if f["name"] == "mitchell")["parameters"]
     assert "spiral" in [s["name"] for s in reg["scenes"]]
+
+
+def test_the_worked_example_of_the_docs_runs(tmp_path):
+    import os
+    import subprocess
+    import sys
+    script = os.path.join(os.path.dirname(__file__), "..", "examples", "worked_example.py")
+    r = subprocess.run([sys.executable, script, str(tmp_path)], capture_output=True, text=True,
+                       env={**os.environ, "MPLBACKEND": "Agg"})
+    assert r.returncode == 0, r.stderr
+    assert "rgss           P(1,1,4)    E2 0.4390" in r.stdout
+    assert "optimized: P(1,1,4) from 16 jittered starts, E2 0.3587" in r.stdout
