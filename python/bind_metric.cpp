@@ -2,6 +2,8 @@
 // array of one-pixel patterns in one vectorized call) and the per-angle profile.
 #include <fmt/format.h>
 
+#include <tbb/task_arena.h>
+
 #include <deque>
 
 #include "aapat/core/acuity.h"
@@ -27,7 +29,7 @@ Metric make_metric(const py::object& filter, const py::object& acuity, double no
 namespace {
 
 // E2 of every one-pixel pattern of an (m, n, 2) array, weights (m, n), (n,) or None.
-Array batch_eval(const Metric& metric, const Array& xy, const py::object& weights) {
+Array batch_eval(const Metric& metric, const Array& xy, const py::object& weights, int threads) {
   if (xy.ndim() != 3 || xy.shape(2) != 2)
     throw Error("eval: expected an (m, n, 2) array of m patterns of n samples");
   const size_t m = static_cast<size_t>(xy.shape(0)), n = static_cast<size_t>(xy.shape(1));
@@ -46,9 +48,16 @@ Array batch_eval(const Metric& metric, const Array& xy, const py::object& weight
   Array out(static_cast<py::ssize_t>(m));
   std::span<double> e2(out.mutable_data(), m);
   const std::span<const double> coords(xy.data(), m * n * 2);
+  if (threads < 0)
+    throw Error(fmt::format("eval: threads {} must be 0 (all cores) or more", threads));
   {
     py::gil_scoped_release release;
-    batch_e2(metric, coords, w, m, n, e2);
+    if (threads == 0) {
+      batch_e2(metric, coords, w, m, n, e2);
+    } else {
+      tbb::task_arena arena(threads);
+      arena.execute([&] { batch_e2(metric, coords, w, m, n, e2); });
+    }
   }
   return out;
 }
@@ -88,15 +97,15 @@ void bind_metric(py::module_& m) {
   m.def(
       "eval",
       [](const py::object& patterns, const py::object& weights, const py::object& filter,
-         const py::object& acuity, double norm) -> py::object {
+         const py::object& acuity, double norm, int threads) -> py::object {
         const Metric metric = make_metric(filter, acuity, norm);
         if (py::isinstance<py::array>(patterns)) {
           const Array xy = patterns.cast<Array>();
           if (xy.ndim() == 2) {  // one pattern
             Array batch = Array(xy).reshape({py::ssize_t{1}, xy.shape(0), xy.shape(1)});
-            return py::float_(batch_eval(metric, batch, weights).at(0));
+            return py::float_(batch_eval(metric, batch, weights, threads).at(0));
           }
-          return batch_eval(metric, xy, weights);
+          return batch_eval(metric, xy, weights, threads);
         }
         if (py::isinstance<py::list>(patterns) || py::isinstance<py::tuple>(patterns)) {
           std::vector<Pattern> list;
@@ -111,7 +120,7 @@ void bind_metric(py::module_& m) {
         return py::float_(metric.evaluate(to_pattern(patterns)).e2);
       },
       py::arg("patterns"), py::arg("weights") = py::none(), py::arg("filter") = "mitchell",
-      py::arg("acuity") = "laine-aila", py::arg("norm") = Metric::kMaxNorm,
+      py::arg("acuity") = "laine-aila", py::arg("norm") = Metric::kMaxNorm, py::arg("threads") = 0,
       with_metric_args(R"doc(E2 of patterns under the Laine-Aila weighted error metric.
 
     patterns: a catalog name or pattern file, an aapat.Pattern, a list of those
@@ -120,7 +129,9 @@ void bind_metric(py::module_& m) {
         vectorized call in parallel (returns an (m,) array). Coordinates in
         pixels from the pixel centre.
     weights: for arrays, (n,) or (m, n) resolve weights (normalized per
-        pattern); None: equal weights.)doc"));
+        pattern); None: equal weights.
+    threads: for arrays, the threads to use (0: all cores); the result is the
+        same for any count.)doc"));
 
   m.def(
       "profile",

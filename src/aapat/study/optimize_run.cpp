@@ -82,34 +82,38 @@ void check_settings(const OptimizeRunSettings& s) {
 
 }  // namespace
 
+namespace {
+
+// Each method: the name parse_method reads, and what the provenance calls it.
+struct MethodText {
+  Method method;
+  const char* key;
+  const char* name;
+};
+constexpr MethodText kMethods[] = {
+    {Method::kDescent, "descent", "Laine-Aila heuristic (t 0.99, c1 = 100 c0)"},
+    {Method::kMinimax, "minimax", "eps-active minimum-norm descent"},
+    {Method::kAnneal, "anneal", "simulated annealing"}};
+
+const MethodText& text_of(Method m) {
+  for (const MethodText& t : kMethods)
+    if (t.method == m) return t;
+  return kMethods[0];
+}
+
+}  // namespace
+
 std::string method_name(Method m) {
-  switch (m) {
-    case Method::kAnneal:
-      return "simulated annealing";
-    case Method::kMinimax:
-      return "eps-active minimum-norm descent";
-    case Method::kDescent:
-      break;
-  }
-  return "Laine-Aila heuristic (t 0.99, c1 = 100 c0)";
+  return text_of(m).name;
 }
 
 std::string method_key(Method m) {
-  switch (m) {
-    case Method::kAnneal:
-      return "anneal";
-    case Method::kMinimax:
-      return "minimax";
-    case Method::kDescent:
-      break;
-  }
-  return "descent";
+  return text_of(m).key;
 }
 
 Method parse_method(std::string_view name) {
-  if (name == "descent") return Method::kDescent;
-  if (name == "minimax") return Method::kMinimax;
-  if (name == "anneal") return Method::kAnneal;
+  for (const MethodText& t : kMethods)
+    if (name == t.key) return t.method;
   throw Error(fmt::format("method '{}': known methods are descent, minimax, anneal", name));
 }
 
