@@ -9,7 +9,7 @@
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/profile_plot.h"
-#include "aapat/optimize/descent.h"
+#include "aapat/study/eval_study.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 
@@ -39,27 +39,28 @@ void run_eval(EvalOptions& o, std::ostream& out) {
         metric.filter().name(), metric.acuity().name, metric.angle_count(), o.metric.norm,
         "pattern", "family", "n", "E2", "worst angle", "kernel",
         o.optimized_weights ? "  E2 opt. W" : "");
-  for (const Pattern& p : patterns) {
-    const PatternError e = metric.evaluate(p);
-    const double n = samples_per_pixel(p);
-    const double e2_w =
-        o.optimized_weights ? metric.evaluate(with_optimized_weights(metric, p, false)).e2 : 0;
+  const std::vector<PatternEvaluation> evaluations =
+      evaluate_patterns(metric, patterns, o.optimized_weights, !o.profile.empty());
+  for (size_t i = 0; i < patterns.size(); ++i) {
+    const Pattern& p = patterns[i];
+    const PatternEvaluation& v = evaluations[i];
+    const PatternError& e = v.error;
     if (o.json) {
       rows.push_back({{"pattern", p.name},
                       {"family", family(p)},
-                      {"n", n},
+                      {"n", v.samples_per_pixel},
                       {"e2", e.e2},
                       {"worst_angle_deg", e.worst_angle_deg},
                       {"worst_kernel", e.worst_kernel},
                       {"kernel_e2", e.kernel_e2}});
-      if (o.optimized_weights) rows.back()["e2_optimized_weights"] = e2_w;
+      if (v.e2_optimized_weights) rows.back()["e2_optimized_weights"] = *v.e2_optimized_weights;
     } else {
-      out << fmt::format("{:<22} {:<14} {:>6} {:>8.4f} {:>12g} {:>7}{}\n", p.name, family(p),
-                         format_cost(n), e.e2, e.worst_angle_deg, e.worst_kernel,
-                         o.optimized_weights ? fmt::format("  {:>10.4f}", e2_w) : "");
+      out << fmt::format(
+          "{:<22} {:<14} {:>6} {:>8.4f} {:>12g} {:>7}{}\n", p.name, family(p),
+          format_cost(v.samples_per_pixel), e.e2, e.worst_angle_deg, e.worst_kernel,
+          v.e2_optimized_weights ? fmt::format("  {:>10.4f}", *v.e2_optimized_weights) : "");
     }
-    if (!o.profile.empty())
-      series.push_back({p.name, metric.profile(make_kernel(p, e.worst_kernel))});
+    if (!o.profile.empty()) series.push_back({p.name, v.worst_profile});
   }
   if (o.json) {
     JsonObject doc = json_report("eval");

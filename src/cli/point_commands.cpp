@@ -167,8 +167,7 @@ void write_generated(const PointOptions& src, const std::string& output, int set
     out << fmt::format("wrote {} ({} points, {})\n", output, points.size(), family(p));
     return;
   }
-  PointSets all;
-  for (int r = 0; r < sets; ++r) all.push_back(src.points(r));
+  const PointSets all = generate_point_sets(src.source, src.n, src.seed, sets);
   save_point_sets(all, output, src.format);
   out << fmt::format("wrote {} ({} points{})\n", output, all[0].size(),
                      sets > 1 ? fmt::format(" in each of {} sets", sets) : "");
@@ -215,8 +214,8 @@ Action add_generate_command(CLI::App& app) {
     if (!output->empty() && *output != "-") return write_generated(*src, *output, *sets, out);
     const auto points = src->points();
     if (!*json) {
-      out << format_point_sets({points}, src->format.empty() ? PointFormat::kCsv
-                                                             : point_format("", src->format));
+      out << format_point_sets(
+          {points}, src->format.empty() ? PointFormat::kCsv : point_format("", src->format));
       return;
     }
     JsonObject doc = json_report("generate");

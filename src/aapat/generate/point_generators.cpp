@@ -465,6 +465,16 @@ std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed) {
   return make_point_generator(spec)(n, seed);
 }
 
+std::vector<std::vector<Vec2>> generate_point_sets(std::string_view spec, int n, uint64_t seed,
+                                                   int sets) {
+  if (!(sets >= 1 && sets <= 100000))
+    throw ParameterError("sets", fmt::format(" {}: expected 1 to 100000", sets));
+  const PointGenerator generator = make_point_generator(spec);
+  std::vector<std::vector<Vec2>> out;
+  for (int r = 0; r < sets; ++r) out.push_back(generator(n, seed + static_cast<uint64_t>(r)));
+  return out;
+}
+
 Pattern points_to_pattern(const std::vector<Vec2>& unit_points, std::string name) {
   std::vector<Vec2> local;
   for (const Vec2& p : unit_points) local.push_back({p.x - 0.5, p.y - 0.5});

@@ -34,6 +34,9 @@ const GeneratorRegistry& generator_registry();
 // n points in [0,1)^2 by the generator `spec`; throws Error naming the
 // generator, parameter or n that does not fit.
 std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed);
+// `sets` realizations, with seeds seed, seed + 1, ... (as `aapat generate --sets`).
+std::vector<std::vector<Vec2>> generate_point_sets(std::string_view spec, int n, uint64_t seed,
+                                                   int sets);
 
 PointGenerator make_point_generator(std::string_view spec);
 

@@ -23,8 +23,8 @@ void batch_e2(const Metric& metric, std::span<const double> xy, std::span<const 
       throw Error(fmt::format("batch E2: coordinate {} is not a finite position", v));
   for (double w : weights)
     if (!std::isfinite(w) || std::abs(w) > kMaxWeightMagnitude)
-      throw Error(fmt::format("batch E2: weight {} is not finite or exceeds {}", w,
-                              kMaxWeightMagnitude));
+      throw Error(
+          fmt::format("batch E2: weight {} is not finite or exceeds {}", w, kMaxWeightMagnitude));
   tbb::parallel_for(tbb::blocked_range<size_t>(0, patterns, 64), [&](const auto& range) {
     // Per task: one kernel and the scratch of kernel_terms, reused.
     Kernel k;
@@ -38,8 +38,7 @@ void batch_e2(const Metric& metric, std::span<const double> xy, std::span<const 
         k.w[i] = weights.empty() ? 1.0 : weights[p * samples + i];
         sum += k.w[i];
       }
-      if (sum == 0)
-        throw Error(fmt::format("batch E2: the weights of pattern {} sum to zero", p));
+      if (sum == 0) throw Error(fmt::format("batch E2: the weights of pattern {} sum to zero", p));
       for (double& w : k.w) w /= sum;
       e2[p] = metric.kernel_terms(k, proj, values);
     }
