@@ -62,6 +62,24 @@ Array batch_eval(const Metric& metric, const Array& xy, const py::object& weight
   return out;
 }
 
+// The profiles of every one-pixel pattern of an (m, n, 2) array, equal weights.
+py::dict batch_profiles(const Metric& metric, const Array& xy) {
+  if (xy.ndim() != 3 || xy.shape(2) != 2)
+    throw Error("profile: expected an (m, n, 2) array of m patterns of n samples");
+  const size_t m = static_cast<size_t>(xy.shape(0)), n = static_cast<size_t>(xy.shape(1));
+  const size_t angles = static_cast<size_t>(metric.angle_count());
+  Array values({static_cast<py::ssize_t>(m), static_cast<py::ssize_t>(angles)});
+  Array e2(static_cast<py::ssize_t>(m));
+  const std::span<const double> coords(xy.data(), m * n * 2);
+  {
+    py::gil_scoped_release release;
+    batch_profile(metric, coords, {}, m, n, {values.mutable_data(), m * angles});
+    batch_e2(metric, coords, {}, m, n, {e2.mutable_data(), m});
+  }
+  return py::dict(py::arg("angles_deg") = from_vector(metric.acuity().angles_deg),
+                  py::arg("values") = values, py::arg("e2") = e2);
+}
+
 }  // namespace
 
 void bind_metric(py::module_& m) {
@@ -136,8 +154,10 @@ void bind_metric(py::module_& m) {
   m.def(
       "profile",
       [](const py::object& pattern, const py::object& filter, const py::object& acuity,
-         double norm) {
+         double norm) -> py::dict {
         const Metric metric = make_metric(filter, acuity, norm);
+        if (py::isinstance<py::array>(pattern))
+          return batch_profiles(metric, pattern.cast<Array>());
         const Pattern p = to_pattern(pattern);
         const PatternError e = metric.evaluate(p);
         Array values({static_cast<py::ssize_t>(p.set_count()),
@@ -157,7 +177,9 @@ void bind_metric(py::module_& m) {
       with_metric_args(R"doc(The per-angle profile W(theta) E1(theta) of every kernel of a pattern.
 
 Returns a dict: angles_deg (the acuity table's angles), values (kernels x
-angles), e2, kernel_e2, worst_kernel, worst_angle_deg.)doc"));
+angles), e2, kernel_e2, worst_kernel, worst_angle_deg. For an (m, n, 2) array
+of m one-pixel patterns (equal weights), in one vectorized call: angles_deg,
+values (m x angles) and e2 (m,).)doc"));
 }
 
 }  // namespace aapat::python

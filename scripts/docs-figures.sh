@@ -34,4 +34,6 @@ done
   hasselgren-f --columns weights tent -o "$img/sheet-hasselgren-spiral.png" \
   --table docs/sheet-hasselgren-spiral.md >/dev/null
 "$aapat" hardware-table > docs/hardware-table.md
+# Every registry of specs, as aapat list prints it (the same entries the parsers use).
+"$aapat" list > docs/registry.txt
 echo "figures written under docs/"

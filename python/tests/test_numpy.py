@@ -75,3 +75,12 @@ def test_point_sets_round_trip_through_every_format(tmp_path):
     assert len(back) == 3
     for a, b in zip(sets, back):
         np.testing.assert_array_equal(a, b)
+
+
+def test_the_vectorized_profile_matches_each_patterns_profile():
+    xy = np.random.default_rng(5).random((30, 3, 2)) - 0.5
+    batch = aapat.profile(xy, acuity="uniform:step=10")
+    assert batch["values"].shape == (30, 18)
+    np.testing.assert_array_equal(batch["values"].max(axis=1), batch["e2"])
+    one = aapat.profile(aapat.Pattern(xy[7]), acuity="uniform:step=10")
+    np.testing.assert_allclose(one["values"][0], batch["values"][7], rtol=1e-12)

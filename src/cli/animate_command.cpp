@@ -1,6 +1,6 @@
-// `aapat animate` and `aapat table2`: animations rendered with a pattern
-// against a dense reference (Hasselgren et al. Sec. 6.1), and Hasselgren
-// Table 2's RMSE and max-deviation columns re-measured on the translating circle.
+// `aapat animate`: an animation rendered with a pattern against a dense
+// reference (Hasselgren et al. Sec. 6.1): RMSE and max deviation over all
+// frames; the frames as PNGs, a GIF or an MP4.
 #include <fmt/format.h>
 
 #include <unistd.h>
@@ -11,45 +11,17 @@
 #include <ostream>
 
 #include "aapat/core/filter_catalog.h"
-#include "aapat/core/metric.h"
 #include "aapat/io/atomic_file.h"
 #include "aapat/io/gif_animation.h"
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/png_image.h"
-#include "aapat/render/animation.h"
-#include "aapat/study/pattern_studies.h"
+#include "cli/animation_options.h"
 #include "cli/commands.h"
 #include "cli/progress.h"
-#include "cli/reference_options.h"
 
 namespace aapat {
 namespace {
-
-struct AnimationOptions {
-  AnimationSettings a;
-  ReferenceOptions reference;
-  // The settings with the reference's options applied.
-  AnimationSettings settings() const {
-    AnimationSettings s = a;
-    s.height = s.width;
-    s.reference = reference.settings;
-    return s;
-  }
-};
-
-void add_animation_options(CLI::App* cmd, AnimationOptions& o) {
-  AnimationSettings& a = o.a;
-  cmd->add_option("--size", a.width, "width and height in pixels")
-      ->capture_default_str()
-      ->check(CLI::Range(8, 4096));
-  cmd->add_option("--frames", a.frames, "frames")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
-  o.reference.settings = a.reference;
-  add_reference_options(cmd, o.reference, a.reference.samples);
-  add_seed_option(cmd, o.reference.settings.seed, "random seed of the reference");
-}
 
 // --mp4 needs ffmpeg: asked before any frame is rendered.
 void check_ffmpeg(const std::string& path) {
@@ -164,56 +136,6 @@ Action add_animate_command(CLI::App& app) {
   cmd->add_option("--histogram", o->histogram, "squared-error histogram of all frames (.csv)");
   cmd->add_flag("--json", o->json, "print JSON");
   return [o](std::ostream& out) { run_animate(*o, out); };
-}
-
-Action add_table2_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "table2",
-      "re-measure Hasselgren Table 2 (E2, RMSE, max deviation) on the translating circle");
-  struct Options : AnimationOptions {
-    bool json = false;
-  };
-  auto o = std::make_shared<AnimateOptions>();
-  add_animation_options(cmd, *o);
-  cmd->add_flag("--json", o->json, "print the table as JSON (docs/json.md)");
-  return [o](std::ostream& out) {
-    const AnimationSettings a = o->settings();
-    std::vector<Table2Row> rows;
-    {
-      Progress bar("table2");
-      rows = table2(a, o->reference.source(), bar.callback());
-    }
-    if (o->json) {
-      JsonObject js = JsonObject::array();
-      for (const Table2Row& r : rows)
-        js.push_back({{"pattern", r.pattern},
-                      {"label", r.label},
-                      {"e2", r.e2},
-                      {"rmse", r.rmse},
-                      {"max_deviation", r.max_deviation},
-                      {"paper",
-                       {{"e2", r.paper_e2},
-                        {"rmse", r.paper_rmse},
-                        {"max_deviation", r.paper_max_deviation}}}});
-      JsonObject doc = json_report("table2");
-      doc.update(JsonObject{{"animation", "circle"},
-                            {"frames", a.frames},
-                            {"width", a.width},
-                            {"height", a.height},
-                            {"reference", describe_reference(a.reference)},
-                            {"rows", js}});
-      out << json_text(doc);
-      return;
-    }
-    out << fmt::format(
-        "Hasselgren Table 2 re-measured: translating circle, {} frames of {}x{}, reference {} "
-        "jittered samples per pixel with {}\naapat (paper)         E2               RMSE           "
-        "   max dev.\n",
-        a.frames, a.width, a.width, a.reference.samples, make_filter(a.reference.filter).name());
-    for (const Table2Row& r : rows)
-      out << fmt::format("{:<21} {:>6.3f} ({:.3f})  {:>6.3f} ({:.3f})  {:>4} ({})\n", r.label, r.e2,
-                         r.paper_e2, r.rmse, r.paper_rmse, r.max_deviation, r.paper_max_deviation);
-  };
 }
 
 }  // namespace aapat

@@ -19,4 +19,11 @@ namespace aapat {
 void batch_e2(const Metric& metric, std::span<const double> xy, std::span<const double> weights,
               size_t patterns, size_t samples, std::span<double> e2);
 
+// The same patterns' per-angle profiles W(theta) E1(theta): patterns *
+// angle_count() values, pattern-major, into `profile` (E2 is each row's
+// combination over angles).
+void batch_profile(const Metric& metric, std::span<const double> xy,
+                   std::span<const double> weights, size_t patterns, size_t samples,
+                   std::span<double> profile);
+
 }  // namespace aapat

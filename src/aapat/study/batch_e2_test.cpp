@@ -37,6 +37,17 @@ RC_GTEST_PROP(BatchE2, EqualsTheMetricOfEachPatternAnyThreadCount, ()) {
   }
 }
 
+TEST(BatchE2, TheProfilesPeakAtEachPatternsE2) {
+  const Metric metric(make_filter("gaussian"), uniform_acuity(1, 1));
+  std::vector<double> xy(50 * 5 * 2);
+  for (size_t i = 0; i < xy.size(); ++i) xy[i] = std::sin(1.7 * i) / 2;  // in [-1/2, 1/2]
+  std::vector<double> e2(50), profile(50 * 180);
+  batch_e2(metric, xy, {}, 50, 5, e2);
+  batch_profile(metric, xy, {}, 50, 5, profile);
+  for (size_t p = 0; p < 50; ++p)
+    EXPECT_EQ(*std::max_element(profile.begin() + p * 180, profile.begin() + (p + 1) * 180), e2[p]);
+}
+
 TEST(BatchE2, RefusesMismatchedSizesAndNonFiniteInput) {
   const Metric metric(make_filter("mitchell"), laine_aila_acuity());
   std::vector<double> xy(8, 0.1), out(1);

@@ -1,54 +1,21 @@
-// `aapat generate`, `aapat discrepancy` and `aapat spectrum`: point sets,
-// their discrepancies and their Fourier power spectra.
+// `aapat spectrum`: the Fourier power spectrum of a point set (2D, averaged
+// over realizations or a file's sets), or Goss & Wu's 1D spectra (--1d).
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cmath>
 #include <memory>
 #include <ostream>
 
 #include "aapat/core/text.h"
-#include "aapat/generate/point_generators.h"
 #include "aapat/io/json_report.h"
 #include "aapat/io/line_plot.h"
-#include "aapat/io/pattern_json.h"
 #include "aapat/io/png_image.h"
-#include "aapat/io/point_formats.h"
-#include "aapat/io/point_set_file.h"
 #include "aapat/study/point_set_study.h"
 #include "cli/commands.h"
+#include "cli/point_options.h"
 #include "cli/progress.h"
 
 namespace aapat {
 namespace {
-
-struct PointOptions {
-  std::string source, format;
-  int n = 16;
-  uint64_t seed = 1;
-
-  void add_to(CLI::App* cmd) {
-    cmd->add_option("source", source,
-                    "generator spec (see `aapat list`) or a point file (.csv, .dat, .bin, .psa, "
-                    ".f32, .json; docs/formats.md)")
-        ->required();
-    add_common(cmd);
-  }
-  void add_common(CLI::App* cmd) {
-    cmd->add_option("--n", n, "points")->capture_default_str()->check(CLI::Range(1, 1000000));
-    add_seed_option(cmd, seed, "random seed");
-    cmd->add_option("--format", format,
-                    "point file format: csv, safari, utk, utk-bin, psa, pspec, json (default: by "
-                    "extension)");
-  }
-  bool is_file() const { return is_point_file(source); }
-  // Every set of a file (UTK files hold several), or realization r of a generator.
-  PointSets file_sets() const { return load_point_sets(source, format); }
-  std::vector<Vec2> points(int realization = 0) const {
-    if (is_file()) return file_sets().front();
-    return generate_points(source, n, seed + static_cast<uint64_t>(realization));
-  }
-};
 
 struct SpectrumOptions {
   PointOptions src;
@@ -149,121 +116,7 @@ void run_line_spectra(const SpectrumOptions& o, std::ostream& out) {
                        o.max_frequency);
 }
 
-// Writes the points (or, with --sets K, K realizations) of `src` to a point
-// file or, for .json / .xyw, a one-pixel pattern.
-void write_generated(const PointOptions& src, const std::string& output, int sets,
-                     std::ostream& out) {
-  if (is_pattern_path(output)) {
-    if (sets > 1)
-      throw Error("--sets: a pattern file holds one pixel's points; write a .dat or .bin");
-    const auto points = src.points();
-    Pattern p = points_to_pattern(
-        points, fmt::format("{}-{}", src.source.substr(0, src.source.find(':')), points.size()));
-    p.description = fmt::format("{} points from {}", points.size(), src.source);
-    p.provenance = {{"generator", src.source},
-                    {"n", std::to_string(points.size())},
-                    {"seed", std::to_string(src.seed)}};
-    save_pattern_file(p, output);
-    out << fmt::format("wrote {} ({} points, {})\n", output, points.size(), family(p));
-    return;
-  }
-  const PointSets all = generate_point_sets(src.source, src.n, src.seed, sets);
-  save_point_sets(all, output, src.format);
-  out << fmt::format("wrote {} ({} points{})\n", output, all[0].size(),
-                     sets > 1 ? fmt::format(" in each of {} sets", sets) : "");
-}
-
 }  // namespace
-
-Action add_generate_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("generate", "generate a point set or a pixel pattern");
-  auto src = std::make_shared<PointOptions>();
-  auto output = std::make_shared<std::string>();
-  auto tile = std::make_shared<int>(0);
-  auto sets = std::make_shared<int>(1);
-  auto json = std::make_shared<bool>(false);
-  src->add_to(cmd);
-  cmd->add_flag("--json", *json, "print the points as JSON (docs/json.md) instead of CSV");
-  cmd->add_option("-o,--output", *output,
-                  "a point file (.csv, .dat, .bin, .psa, .f32 or --format) or a pattern (.json, "
-                  ".xyw: P(1,1,n)); default: CSV on stdout");
-  cmd->add_option("--sets", *sets, "realizations (seeds seed, seed+1, ...) into a .dat or .bin")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
-  cmd->add_option(
-      "--tile", *tile,
-      "with a .json output: a K x K tile of pixel sets, each generated anew: P(K^2,1,n)");
-  return [src, output, tile, sets, json](std::ostream& out) {
-    if (src->is_file()) throw Error("generate: give a generator, not a file");
-    if (*json && !output->empty())
-      throw Error("--json prints the points; it does not go with -o (the file has them)");
-    if (*tile > 0) {
-      if (!output->ends_with(".json"))
-        throw Error("--tile: write the tile as a pattern file (-o file.json)");
-      Pattern p = tile_pattern(src->source, src->n, src->seed, *tile);
-      p.description = fmt::format("{} x {} tile of {} points per pixel from {}", *tile, *tile,
-                                  src->n, src->source);
-      p.provenance = {{"generator", src->source},
-                      {"n", std::to_string(src->n)},
-                      {"seed", std::to_string(src->seed)},
-                      {"tile", std::to_string(*tile)}};
-      save_pattern_file(p, *output);
-      out << fmt::format("wrote {} ({})\n", *output, family(p));
-      return;
-    }
-    if (!output->empty() && *output != "-") return write_generated(*src, *output, *sets, out);
-    const auto points = src->points();
-    if (!*json) {
-      out << format_point_sets(
-          {points}, src->format.empty() ? PointFormat::kCsv : point_format("", src->format));
-      return;
-    }
-    JsonObject doc = json_report("generate");
-    doc.update(JsonObject{{"source", src->source}, {"n", points.size()}, {"seed", src->seed}});
-    JsonObject rows = JsonObject::array();
-    for (const Vec2& v : points) rows.push_back({{"x", v.x}, {"y", v.y}});
-    doc["rows"] = std::move(rows);
-    out << json_text(doc);
-  };
-}
-
-Action add_discrepancy_command(CLI::App& app) {
-  auto* cmd =
-      app.add_subcommand("discrepancy", "L2-star, star and edge discrepancy of a point set");
-  auto src = std::make_shared<PointOptions>();
-  auto json = std::make_shared<bool>(false);
-  src->add_to(cmd);
-  cmd->add_flag("--json", *json, "print JSON");
-  return [src, json](std::ostream& out) {
-    DiscrepancyReport d;
-    {
-      Progress bar("discrepancy");
-      d = discrepancy_report(src->points(), bar.callback());
-    }
-    if (*json) {
-      JsonObject doc = json_report("discrepancy");
-      doc.update(JsonObject{{"source", src->source},
-                            {"points", d.points},
-                            {"l2_star", d.l2_star},
-                            {"star_lower", d.star.lower},
-                            {"star_upper", d.star.upper},
-                            {"star_exact", d.star.exact},
-                            {"edge", d.edge.value},
-                            {"edge_normal_deg", d.edge.normal_deg}});
-      out << json_text(doc);
-      return;
-    }
-    out << fmt::format("{} ({} points)\n  L2-star discrepancy  {:.6f}\n", src->source, d.points,
-                       d.l2_star);
-    if (d.star.exact)
-      out << fmt::format("  star discrepancy     {:.6f} (exact)\n", d.star.upper);
-    else
-      out << fmt::format("  star discrepancy     in [{:.6f}, {:.6f}] (grid bounds)\n", d.star.lower,
-                         d.star.upper);
-    out << fmt::format("  edge discrepancy     {:.6f} (worst half-plane normal at {:g} degrees)\n",
-                       d.edge.value, d.edge.normal_deg);
-  };
-}
 
 Action add_spectrum_command(CLI::App& app) {
   auto* cmd =
