@@ -84,3 +84,10 @@ def test_the_worked_example_of_the_docs_runs(tmp_path):
     assert r.returncode == 0, r.stderr
     assert "rgss           P(1,1,4)    E2 0.4390" in r.stdout
     assert "optimized: P(1,1,4) from 16 jittered starts, E2 0.3587" in r.stdout
+
+
+def test_discrepancy_computes_only_the_measures_asked():
+    d = aapat.discrepancy(aapat.generate("halton", 100000), measures="l2-star")
+    assert set(d) == {"points", "l2_star"}
+    with pytest.raises(aapat.Error, match="measure 'x'"):
+        aapat.discrepancy(aapat.generate("halton", 10), measures="x")

@@ -4,7 +4,6 @@
 
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
@@ -18,24 +17,6 @@ namespace {
 
 std::ostream* g_warnings = nullptr;
 
-// The flags that give the library's named parameters.
-const std::map<std::string, std::string> kFlagOfParameter = {{"family", "--family"},
-                                                             {"placement", "--placement"},
-                                                             {"seeds", "--seeds"},
-                                                             {"lock", "--lock"},
-                                                             {"lattice", "--lattice"},
-                                                             {"cost", "--cost"},
-                                                             {"tile", "--tile"},
-                                                             {"size", "--size"},
-                                                             {"norm", "--norm"},
-                                                             {"1d", "--1d"},
-                                                             {"rows", "--rows"},
-                                                             {"columns", "--columns"},
-                                                             {"translate", "--translate"},
-                                                             {"starts", "--starts"},
-                                                             {"patterns", "--patterns"},
-                                                             {"iterations", "--iterations"},
-                                                             {"realizations", "--realizations"}};
 
 // The message of the exception in flight, whatever its type: library errors
 // as they are, the rest named for what they mean to a user.
@@ -43,9 +24,9 @@ std::string describe_current_exception() {
   try {
     throw;
   } catch (const ParameterError& e) {
-    // The library names its parameter; here it is reported under its flag.
-    const auto flag = kFlagOfParameter.find(e.parameter());
-    return flag == kFlagOfParameter.end() ? e.what() : flag->second + e.detail();
+    // The library names its parameter as the flag that gives it is named
+    // (family, placement, size, measure, ...): here it is reported as that flag.
+    return "--" + e.parameter() + e.detail();
   } catch (const Error& e) {
     return e.what();
   } catch (const std::bad_alloc&) {

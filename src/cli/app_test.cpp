@@ -338,6 +338,24 @@ TEST(CliPoints, DiscrepancyReportsAllThree) {
       << e.err;
 }
 
+TEST(CliPoints, DiscrepancyComputesOnlyTheMeasuresAsked) {
+  // 200,000 points: past the star and edge limit, within the L2-star one.
+  const CliRun r = run({"discrepancy", "halton", "--n", "200000", "--measure", "l2-star", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto d = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(d.contains("l2_star"));
+  EXPECT_FALSE(d.contains("star_upper") || d.contains("edge"));
+  const CliRun t = run({"discrepancy", "regular", "--n", "16", "--measure", "edge,star"});
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_EQ(t.out.find("L2-star"), std::string::npos);
+  EXPECT_NE(t.out.find("edge discrepancy"), std::string::npos);
+  const CliRun bad = run({"discrepancy", "regular", "--measure", "l3"});
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("--measure 'l3': the measures are l2-star, star and edge"),
+            std::string::npos)
+      << bad.err;
+}
+
 TEST(CliPoints, SpectrumWritesImageRadialProfileAndOneDimensionalPlot) {
   const std::string png = temp_path("s.png"), csv = temp_path("s.csv"), svg = temp_path("s1d.svg");
   CliRun r = run({"spectrum", "jittered", "--n", "64", "--size", "32", "--realizations", "2", "-o",

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "aapat/core/text.h"
 #include "aapat/generate/point_processes.h"
 
 namespace aapat {
@@ -21,21 +22,54 @@ void check_spectrum_work(size_t points, int size, int realizations) {
 
 }  // namespace
 
+DiscrepancyMeasures parse_measures(std::string_view list) {
+  DiscrepancyMeasures m{false, false, false};
+  for (std::string_view item : split(list)) {
+    item = trim(item);
+    if (item == "l2-star")
+      m.l2_star = true;
+    else if (item == "star")
+      m.star = true;
+    else if (item == "edge")
+      m.edge = true;
+    else
+      throw ParameterError("measure",
+                           fmt::format(" '{}': the measures are l2-star, star and edge", item));
+  }
+  if (!m.l2_star && !m.star && !m.edge)
+    throw ParameterError("measure", ": name at least one of l2-star, star, edge");
+  return m;
+}
+
 DiscrepancyReport discrepancy_report(const std::vector<Vec2>& points,
+                                     const DiscrepancyMeasures& measures,
                                      const StudyProgress& progress) {
-  auto report = [&](int done, const std::string& note) {
-    if (progress) progress(done, 3, note);
+  // Every size limit first, before any work.
+  if (measures.l2_star) check_l2_star_size(points.size());
+  if (measures.star || measures.edge) check_discrepancy_size(points.size());
+  const int total = measures.l2_star + measures.star + measures.edge;
+  int done = 0;
+  auto report = [&](const std::string& note) {
+    if (progress) progress(done, total, note);
   };
   DiscrepancyReport r;
   r.points = points.size();
-  report(0, "L2-star");
-  r.l2_star = l2_star_discrepancy(points);  // refuses too many points before any work
-  report(1, "star");
-  r.star = star_discrepancy(points);
-  report(2, "edge");
-  r.edge = edge_discrepancy(points, 720, [&](int done, int total) {
-    if (done % 16 == 0) report(2, fmt::format("edge {}/{}", done, total));
-  });
+  if (measures.l2_star) {
+    report("L2-star");
+    r.l2_star = l2_star_discrepancy(points);
+    ++done;
+  }
+  if (measures.star) {
+    report("star");
+    r.star = star_discrepancy(points);
+    ++done;
+  }
+  if (measures.edge) {
+    report("edge");
+    r.edge = edge_discrepancy(points, 720, [&](int finished, int directions) {
+      if (finished % 16 == 0) report(fmt::format("edge {}/{}", finished, directions));
+    });
+  }
   return r;
 }
 

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "aapat/analyze/discrepancy.h"
@@ -14,13 +16,22 @@
 
 namespace aapat {
 
+// Which discrepancies to compute: "l2-star,star,edge" (any of them, any order).
+struct DiscrepancyMeasures {
+  bool l2_star = true, star = true, edge = true;
+};
+DiscrepancyMeasures parse_measures(std::string_view list);  // ParameterError("measure")
+
 struct DiscrepancyReport {
   size_t points = 0;
-  double l2_star = 0;
-  StarDiscrepancy star;
-  EdgeDiscrepancy edge;
+  std::optional<double> l2_star;
+  std::optional<StarDiscrepancy> star;
+  std::optional<EdgeDiscrepancy> edge;
 };
+// Only the measures asked; the size limits are those of the measures asked
+// (the L2-star discrepancy alone takes up to kMaxL2StarPoints).
 DiscrepancyReport discrepancy_report(const std::vector<Vec2>& points,
+                                     const DiscrepancyMeasures& measures = {},
                                      const StudyProgress& progress = {});
 
 // The exact 2D spectrum's work: points x frequencies x realizations.
