@@ -36,6 +36,27 @@ double e1_squared(const Filter& filter, std::span<const double> p, std::span<con
   return std::max(0.0, moment - spread - filter.half_mean_distance());
 }
 
+double e1_squared_in_order(const Filter& filter, std::span<const double> p,
+                           std::span<const double> w, std::span<const size_t> order) {
+  double moment = 0, spread = 0, below = 0;
+  for (const size_t j : order) {
+    moment += w[j] * filter.abs_moment(p[j]);
+    spread += w[j] * p[j] * (2 * below + w[j] - 1);
+    below += w[j];
+  }
+  return std::max(0.0, moment - spread - filter.half_mean_distance());
+}
+
+void sort_by_projection(std::span<size_t> order, std::span<const double> p) {
+  // Insertion: the order of a neighbouring angle is nearly right already.
+  for (size_t i = 1; i < order.size(); ++i) {
+    const size_t v = order[i];
+    size_t j = i;
+    for (; j > 0 && p[order[j - 1]] > p[v]; --j) order[j] = order[j - 1];
+    order[j] = v;
+  }
+}
+
 double e1_squared_piecewise(const Filter& filter, std::span<const double> p,
                             std::span<const double> w) {
   std::vector<size_t> order(p.size());
@@ -107,6 +128,26 @@ KernelMaximum combine_over_kernels(std::span<const double> kernel_e2) {
 double Metric::kernel_terms(const Kernel& k, std::span<double> proj,
                             std::span<double> values) const {
   // W^2 E1^2 per angle: one square root per kernel, not one per angle.
+  const size_t n = k.w.size();
+  if (n > kPairwiseLimit && angle_count() >= kDenseAngles) {
+    // Large kernels, dense tables: the sorted order of the projections
+    // carries over from one angle to the next, where few samples swap, so an
+    // insertion pass re-sorts it in about O(N). (Sparse tables sort afresh.)
+    thread_local std::vector<size_t> order;
+    order.resize(n);
+    std::iota(order.begin(), order.end(), 0);
+    for (int a = 0; a < angle_count(); ++a) {
+      const double c = cos_[a], s = sin_[a];
+      for (size_t j = 0; j < n; ++j) proj[j] = c * k.y[j] - s * k.x[j];
+      if (a == 0)
+        std::sort(order.begin(), order.end(),
+                  [&](size_t i, size_t j) { return proj[i] < proj[j]; });
+      else
+        sort_by_projection(order, proj.first(n));
+      values[a] = weight_sq_[a] * e1_squared_in_order(filter_, proj.first(n), k.w, order);
+    }
+    return combine_over_angles(values.first(angle_count()), norm_);
+  }
   for (int a = 0; a < angle_count(); ++a)
     values[a] = weight_sq_[a] * e1_squared_at(k, a, proj.data());
   return combine_over_angles(values.first(angle_count()), norm_);

@@ -29,9 +29,19 @@ namespace aapat {
 
 // Kernels up to this size sum over pairs; larger ones sort, O(N log N).
 inline constexpr size_t kPairwiseLimit = 24;
+// With at least this many angles the table is dense enough that a large
+// kernel's sorted order carries over from angle to angle.
+inline constexpr int kDenseAngles = 32;
 
 // E1^2 of a 1D pattern whose weights sum to 1, in closed form.
 double e1_squared(const Filter& filter, std::span<const double> p, std::span<const double> w);
+// The closed form with the samples in the given order, sorted by p: the
+// large-kernel path, whose order carries over between angles.
+double e1_squared_in_order(const Filter& filter, std::span<const double> p,
+                           std::span<const double> w, std::span<const size_t> order);
+// Re-sorts `order` by p with an insertion pass: about O(N) when the order
+// was nearly right (the projections at a neighbouring angle).
+void sort_by_projection(std::span<size_t> order, std::span<const double> p);
 // The same integral, sorted and integrated piece by piece with the filter's
 // exact antiderivatives; slower, used to check the closed form.
 double e1_squared_piecewise(const Filter& filter, std::span<const double> p,
