@@ -12,6 +12,7 @@
 #include <numeric>
 
 #include "aapat/analyze/double_double.h"
+#include "aapat/analyze/radix_sort.h"
 
 namespace aapat {
 
@@ -206,11 +207,12 @@ EdgeDiscrepancy edge_discrepancy(const std::vector<Vec2>& p, int directions,
   std::mutex report;
   tbb::parallel_for(tbb::blocked_range<int>(0, directions), [&](const auto& range) {
     std::vector<double> s(p.size());
+    std::vector<uint64_t> scratch;
     for (int k = range.begin(); k != range.end(); ++k) {
       // Normals over [0, pi): a half-plane and its complement deviate equally.
       const double phi = kPi * k / directions, c = std::cos(phi), sn = std::sin(phi);
       for (size_t i = 0; i < p.size(); ++i) s[i] = p[i].x * c + p[i].y * sn;
-      std::sort(s.begin(), s.end());
+      radix_sort(s, scratch);
       // Between consecutive projections the count is fixed and the area
       // grows, so the extremes sit at the projections: a sweep over groups
       // of equal ones, counting the points below the group and up to its end.
