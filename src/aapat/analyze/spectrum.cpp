@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <tuple>
 
 namespace aapat {
 
@@ -21,21 +22,60 @@ Spectrum2D power_spectrum(const std::vector<Vec2>& points, int size) {
     }
   });
   Spectrum2D s{size, std::vector<double>(m * m)};
-  // Column u of the output: sum_j exp(-2 pi i u x_j) exp(-2 pi i v y_j) over v.
-  tbb::parallel_for(size_t{0}, m, [&](size_t col) {
-    std::vector<double> re(m, 0.0), im(m, 0.0);
-    const double u = static_cast<double>(col) - half;
+  // Column u of the output: sum_j exp(-2 pi i u x_j) exp(-2 pi i v y_j) over
+  // v, for u <= 0 only. The points are real, so P(-u, -v) = P(u, v): the
+  // columns u > 0 are the mirror of those (bit for bit: cos is even and sin
+  // odd, so the mirrored sums are the same products), all but the row whose
+  // mirror -v lies outside the grid (v = -size/2 for an even size), summed
+  // directly.
+  const size_t computed = static_cast<size_t>(half) + 1;  // columns u = -half .. 0
+  auto column_term = [&](size_t j, double u) {
+    return std::pair{std::cos(-2 * kPi * u * points[j].x), std::sin(-2 * kPi * u * points[j].x)};
+  };
+  // Blocks of kBlock columns: each point's row of exp(-2 pi i v y) is read
+  // once per block instead of once per column (the table is n x size, far
+  // larger than the caches); each column's sums are as before, term by term.
+  constexpr size_t kBlock = 8;
+  const size_t columns = std::min(computed, m);
+  tbb::parallel_for(size_t{0}, (columns + kBlock - 1) / kBlock, [&](size_t block) {
+    const size_t first = block * kBlock, count = std::min(kBlock, columns - first);
+    std::vector<double> re(kBlock * m, 0.0), im(kBlock * m, 0.0);
+    double ar[kBlock], ai[kBlock];
     for (size_t j = 0; j < n; ++j) {
-      const double ar = std::cos(-2 * kPi * u * points[j].x),
-                   ai = std::sin(-2 * kPi * u * points[j].x);
+      for (size_t c = 0; c < count; ++c)
+        std::tie(ar[c], ai[c]) = column_term(j, static_cast<double>(first + c) - half);
       const double* br = &ey_re[j * m];
       const double* bi = &ey_im[j * m];
-      for (size_t v = 0; v < m; ++v) {
-        re[v] += ar * br[v] - ai * bi[v];
-        im[v] += ar * bi[v] + ai * br[v];
+      for (size_t c = 0; c < count; ++c) {
+        double* r = &re[c * m];
+        double* i = &im[c * m];
+        for (size_t v = 0; v < m; ++v) {
+          r[v] += ar[c] * br[v] - ai[c] * bi[v];
+          i[v] += ar[c] * bi[v] + ai[c] * br[v];
+        }
       }
     }
-    for (size_t v = 0; v < m; ++v) s.power[v * m + col] = (re[v] * re[v] + im[v] * im[v]) / n;
+    for (size_t c = 0; c < count; ++c)
+      for (size_t v = 0; v < m; ++v)
+        s.power[v * m + first + c] =
+            (re[c * m + v] * re[c * m + v] + im[c * m + v] * im[c * m + v]) / n;
+  });
+  tbb::parallel_for(computed, m, [&](size_t col) {
+    const size_t mirror_col = 2 * static_cast<size_t>(half) - col;
+    for (size_t row = 0; row < m; ++row) {
+      const size_t mirror_row = 2 * static_cast<size_t>(half) - row;  // wraps past m for row 0
+      if (mirror_row < m) {
+        s.power[row * m + col] = s.power[mirror_row * m + mirror_col];
+        continue;
+      }
+      double re = 0, im = 0;
+      for (size_t j = 0; j < n; ++j) {
+        const auto [ar, ai] = column_term(j, static_cast<double>(col) - half);
+        re += ar * ey_re[j * m + row] - ai * ey_im[j * m + row];
+        im += ar * ey_im[j * m + row] + ai * ey_re[j * m + row];
+      }
+      s.power[row * m + col] = (re * re + im * im) / n;
+    }
   });
   return s;
 }

@@ -1,6 +1,7 @@
 #include "aapat/analyze/spectrum.h"
 
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
 #include <cmath>
 #include <random>
@@ -66,6 +67,32 @@ TEST(Spectrum, OneDimensionalMatchesDirectSum) {
       re += std::cos(-2 * kPi * k * 3.0 / 2000 * x), im += std::sin(-2 * kPi * k * 3.0 / 2000 * x);
     EXPECT_NEAR(p[k], (re * re + im * im) / xs.size(), 1e-8) << k;
   }
+}
+
+}  // namespace
+}  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// The half computed and the half mirrored (P(-u, -v) = P(u, v)) against the
+// direct sum at every frequency, for even and odd sizes.
+RC_GTEST_PROP(Spectrum, EveryFrequencyEqualsTheDirectSum, ()) {
+  const int n = *rc::gen::inRange(1, 40), size = *rc::gen::inRange(8, 21);
+  std::vector<Vec2> p;
+  for (int i = 0; i < n; ++i)
+    p.push_back({*rc::gen::inRange(0, 1000) / 1000.0, *rc::gen::inRange(0, 1000) / 1000.0});
+  const Spectrum2D s = power_spectrum(p, size);
+  const int half = size / 2;
+  for (int v = -half; v < size - half; ++v)
+    for (int u = -half; u < size - half; ++u) {
+      double re = 0, im = 0;
+      for (const Vec2& q : p) {
+        re += std::cos(-2 * kPi * (u * q.x + v * q.y));
+        im += std::sin(-2 * kPi * (u * q.x + v * q.y));
+      }
+      RC_ASSERT(std::abs(s.at(u, v) - (re * re + im * im) / n) <= 1e-10);
+    }
 }
 
 }  // namespace
