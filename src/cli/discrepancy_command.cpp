@@ -21,7 +21,8 @@ JsonObject discrepancy_json(const std::string& source, const DiscrepancyReport& 
   if (d.star)
     doc.update(JsonObject{{"star_lower", d.star->lower},
                           {"star_upper", d.star->upper},
-                          {"star_exact", d.star->exact}});
+                          {"star_exact", d.star->exact},
+                          {"star_gap", d.star->upper - d.star->lower}});
   if (d.edge)
     doc.update(JsonObject{{"edge", d.edge->value}, {"edge_normal_deg", d.edge->normal_deg}});
   return doc;
@@ -33,8 +34,8 @@ std::string discrepancy_text(const std::string& source, const DiscrepancyReport&
   if (d.star && d.star->exact)
     text += fmt::format("  star discrepancy     {:.6f} (exact)\n", d.star->upper);
   else if (d.star)
-    text += fmt::format("  star discrepancy     in [{:.6f}, {:.6f}] (grid bounds)\n", d.star->lower,
-                        d.star->upper);
+    text += fmt::format("  star discrepancy     in [{:.6f}, {:.6f}] (grid bounds; gap {:.6f})\n",
+                        d.star->lower, d.star->upper, d.star->upper - d.star->lower);
   if (d.edge)
     text += fmt::format("  edge discrepancy     {:.6f} (worst half-plane normal at {:g} degrees)\n",
                         d.edge->value, d.edge->normal_deg);

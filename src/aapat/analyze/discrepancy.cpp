@@ -97,7 +97,9 @@ void check_l2_star_size(size_t points) {
 namespace {
 
 // Largest deviation over anchored boxes whose corners take the given x and
-// y values, counting points strictly inside (x < a, y < b) and on or inside.
+// y values (both sorted), counting points strictly inside (x < a, y < b) and
+// on or inside. For each a the points left of it are kept sorted by y, and
+// the b run upward with two pointers: O(N^2) in all.
 double boxes_deviation(const std::vector<Vec2>& p, const std::vector<double>& xs,
                        const std::vector<double>& ys) {
   std::vector<size_t> by_x(p.size());
@@ -107,18 +109,18 @@ double boxes_deviation(const std::vector<Vec2>& p, const std::vector<double>& xs
   std::vector<double> open_y, closed_y;  // y of the points left of a, kept sorted
   size_t next_open = 0, next_closed = 0;
   double worst = 0;
+  auto insert = [](std::vector<double>& v, double y) {
+    v.insert(std::upper_bound(v.begin(), v.end(), y), y);
+  };
   for (double a : xs) {
-    auto insert = [&](std::vector<double>& v, double y) {
-      v.insert(std::upper_bound(v.begin(), v.end(), y), y);
-    };
     while (next_open < by_x.size() && p[by_x[next_open]].x < a)
       insert(open_y, p[by_x[next_open++]].y);
     while (next_closed < by_x.size() && p[by_x[next_closed]].x <= a)
       insert(closed_y, p[by_x[next_closed++]].y);
+    size_t inside = 0, with_border = 0;
     for (double b : ys) {
-      const double inside = std::lower_bound(open_y.begin(), open_y.end(), b) - open_y.begin();
-      const double with_border =
-          std::upper_bound(closed_y.begin(), closed_y.end(), b) - closed_y.begin();
+      while (inside < open_y.size() && open_y[inside] < b) ++inside;
+      while (with_border < closed_y.size() && closed_y[with_border] <= b) ++with_border;
       worst = std::max({worst, a * b - inside / n, with_border / n - a * b});
     }
   }
@@ -140,31 +142,36 @@ StarDiscrepancy star_discrepancy(const std::vector<Vec2>& p, size_t exact_limit,
   }
   // A box between grid lines holds at least the points of the smaller grid
   // box and at most those of the larger: the deviation is bounded by the
-  // worse of the two mixed comparisons (upper), and the grid boxes give a lower bound.
-  std::vector<double> g(grid + 1);
-  for (int i = 0; i <= grid; ++i) g[i] = static_cast<double>(i) / grid;
-  std::vector<int> counts((grid + 1) * (grid + 1), 0);  // points with x < g[i], y < g[j]
-  for (const Vec2& v : p) {
-    const int i = std::min(grid, static_cast<int>(std::floor(v.x * grid)) + 1);
-    const int j = std::min(grid, static_cast<int>(std::floor(v.y * grid)) + 1);
-    ++counts[i * (grid + 1) + j];
+  // worse of the two mixed comparisons (upper), and the grid boxes give a
+  // lower bound. The counts of the boxes [0, g_i) x [0, g_j) are built one
+  // grid column at a time, so memory is O(grid), not O(grid^2).
+  const size_t g = static_cast<size_t>(grid);
+  auto line = [&](size_t i) { return static_cast<double>(i) / grid; };
+  // Point k lies left of line i (x < g_i) from i = its column on.
+  std::vector<std::vector<size_t>> by_column(g + 1);
+  std::vector<size_t> cy(p.size());
+  for (size_t k = 0; k < p.size(); ++k) {
+    const size_t cx = std::min(g, static_cast<size_t>(std::floor(p[k].x * grid)) + 1);
+    cy[k] = std::min(g, static_cast<size_t>(std::floor(p[k].y * grid)) + 1);
+    by_column[cx].push_back(k);
   }
-  for (int i = 0; i <= grid; ++i)
-    for (int j = 0; j <= grid; ++j) {
-      int& c = counts[i * (grid + 1) + j];
-      if (i > 0) c += counts[(i - 1) * (grid + 1) + j];
-      if (j > 0) c += counts[i * (grid + 1) + j - 1];
-      if (i > 0 && j > 0) c -= counts[(i - 1) * (grid + 1) + j - 1];
-    }
   const double n = static_cast<double>(p.size());
-  for (int i = 0; i < grid; ++i)
-    for (int j = 0; j < grid; ++j) {
-      const double lo = counts[i * (grid + 1) + j] / n;
-      const double hi = counts[(i + 1) * (grid + 1) + j + 1] / n;
-      d.upper = std::max({d.upper, hi - g[i] * g[j], g[i + 1] * g[j + 1] - lo});
-      d.lower = std::max(d.lower,
-                         std::abs(g[i + 1] * g[j + 1] - counts[(i + 1) * (grid + 1) + j + 1] / n));
+  std::vector<size_t> column(g + 1, 0);                // points left of the line, by y cell
+  std::vector<size_t> prev(g + 1, 0), next(g + 1, 0);  // and below each y line
+  for (size_t i = 0; i < g; ++i) {
+    for (size_t k : by_column[i + 1]) ++column[cy[k]];
+    size_t running = 0;
+    for (size_t j = 0; j <= g; ++j) {
+      running += column[j];
+      next[j] = running;  // points with x < g_{i+1}, y < g_j
     }
+    for (size_t j = 0; j < g; ++j) {
+      const double lo = prev[j] / n, hi = next[j + 1] / n;
+      d.upper = std::max({d.upper, hi - line(i) * line(j), line(i + 1) * line(j + 1) - lo});
+      d.lower = std::max(d.lower, std::abs(line(i + 1) * line(j + 1) - hi));
+    }
+    std::swap(prev, next);
+  }
   return d;
 }
 

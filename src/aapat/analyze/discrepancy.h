@@ -4,7 +4,7 @@
 //    in O(N log N);
 //  - star: the supremum of the same, exact for small sets (every box whose
 //    corner coordinates come from the points), bounded above and below on a
-//    grid for larger ones;
+//    fine grid for larger ones;
 //  - edge: the supremum over half-planes H of |area(H cut with the square) -
 //    fraction of points in H|, in the spirit of Dobkin & Mitchell: exact for
 //    each direction, over `directions` directions of the edge normal.
@@ -35,9 +35,11 @@ struct StarDiscrepancy {
   double lower = 0, upper = 0;  // equal when exact
   bool exact = false;
 };
-// Exact when points.size() <= exact_limit; else bounds from an m x m grid.
-StarDiscrepancy star_discrepancy(const std::vector<Vec2>& points, size_t exact_limit = 2048,
-                                 int grid = 512);
+// Exact in O(N^2) when points.size() <= exact_limit; else bounds from a
+// grid x grid lattice of boxes in O(grid^2 + N) time and O(grid + N) memory
+// (the upper bound cannot go below about 2 / grid).
+StarDiscrepancy star_discrepancy(const std::vector<Vec2>& points, size_t exact_limit = 4096,
+                                 int grid = 8192);
 
 struct EdgeDiscrepancy {
   double value = 0;
