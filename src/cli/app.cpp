@@ -17,7 +17,6 @@ namespace {
 
 std::ostream* g_warnings = nullptr;
 
-
 // The message of the exception in flight, whatever its type: library errors
 // as they are, the rest named for what they mean to a user.
 std::string describe_current_exception() {

@@ -340,7 +340,8 @@ TEST(CliPoints, DiscrepancyReportsAllThree) {
 
 TEST(CliPoints, DiscrepancyComputesOnlyTheMeasuresAsked) {
   // 200,000 points: past the star and edge limit, within the L2-star one.
-  const CliRun r = run({"discrepancy", "halton", "--n", "200000", "--measure", "l2-star", "--json"});
+  const CliRun r =
+      run({"discrepancy", "halton", "--n", "200000", "--measure", "l2-star", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto d = nlohmann::json::parse(r.out);
   EXPECT_TRUE(d.contains("l2_star"));

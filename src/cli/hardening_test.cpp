@@ -286,3 +286,24 @@ TEST(Hardening, AFailedCommandLeavesNoOutputFile) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+using testing::CliRun;
+using testing::run;
+
+// A pattern the chosen file format cannot hold fails the command before any
+// of its report is printed, and leaves no file.
+TEST(Hardening, AnOutputFormatThatCannotHoldTheResultFailsBeforeTheReport) {
+  const std::string xyw = testing::temp_path("tile.xyw");
+  const CliRun r = run({"optimize", "--family", "P(4,1+,2)", "--placement", "left,right,bottom,top",
+                        "--starts", "2", "-o", xyw});
+  EXPECT_EQ(r.code, kExitError);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("write it as .json"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(xyw));
+}
+
+}  // namespace
+}  // namespace aapat

@@ -145,19 +145,22 @@ void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ost
   // With --json the document alone goes to stdout.
   std::ostream discard(nullptr);
   std::ostream& text = o.json ? discard : out;
-  text << optimize_text(r, metric);
+  // The files first: one that cannot be written (a tile as .xyw) fails the
+  // command before any of its report is printed.
+  std::string wrote;
   if (!o.output.empty()) {
     save_pattern_file(r.best, o.output);
-    text << "wrote " << o.output << "\n";
+    wrote += "wrote " + o.output + "\n";
   }
   if (!o.svg.empty()) {
     write_output(o.svg, pattern_svg(r.best), out);
-    text << "wrote " << o.svg << "\n";
+    wrote += "wrote " + o.svg + "\n";
   }
   if (!o.csv.empty()) {
     write_output(o.csv, starts_csv(r.search), out);
-    text << "wrote " << o.csv << "\n";
+    wrote += "wrote " + o.csv + "\n";
   }
+  text << optimize_text(r, metric) << wrote;
   if (o.json) out << json_text(optimize_json(r, metric));
 }
 
