@@ -13,9 +13,12 @@
 namespace aapat::python {
 
 std::vector<Vec2> to_points(const Array& a, const char* what) {
-  if (a.ndim() != 2 || a.shape(1) != 2)
-    throw Error(
-        fmt::format("{}: expected an (n, 2) array of x, y, got {} dimensions", what, a.ndim()));
+  if (a.ndim() != 2 || a.shape(1) != 2) {
+    std::string shape;
+    for (py::ssize_t d = 0; d < a.ndim(); ++d)
+      shape += (d ? ", " : "") + std::to_string(a.shape(d));
+    throw Error(fmt::format("{}: expected an (n, 2) array of x, y, not shape ({})", what, shape));
+  }
   std::vector<Vec2> points(static_cast<size_t>(a.shape(0)));
   const auto r = a.unchecked<2>();
   for (py::ssize_t i = 0; i < a.shape(0); ++i) points[i] = {r(i, 0), r(i, 1)};

@@ -106,6 +106,7 @@ star_lower, star_upper, star_exact, edge, edge_normal_deg (of the measures asked
           spec = source.cast<std::string>();
         else
           sets = to_sets(source);
+        if (spec.empty() && sets.empty()) throw Error("spectrum: no point set given");
         if (spec.empty() && realizations != 1 && static_cast<size_t>(realizations) != sets.size())
           throw Error("spectrum: the sets given are the realizations; leave realizations at 1");
         SpectrumSettings s{size, spec.empty() ? static_cast<int>(sets.size()) : realizations,

@@ -84,3 +84,10 @@ def test_the_vectorized_profile_matches_each_patterns_profile():
     np.testing.assert_array_equal(batch["values"].max(axis=1), batch["e2"])
     one = aapat.profile(aapat.Pattern(xy[7]), acuity="uniform:step=10")
     np.testing.assert_allclose(one["values"][0], batch["values"][7], rtol=1e-12)
+
+
+def test_arrays_of_the_wrong_shape_are_named_with_their_shape():
+    with pytest.raises(aapat.Error, match=r"expected an \(n, 2\) array of x, y, not shape \(3, 3\)"):
+        aapat.Pattern(np.zeros((3, 3)))
+    with pytest.raises(aapat.Error, match="no point set given"):
+        aapat.spectrum([], size=16)
