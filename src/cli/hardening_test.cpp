@@ -284,19 +284,10 @@ TEST(Hardening, AFailedCommandLeavesNoOutputFile) {
     EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << e.path();
 }
 
-}  // namespace
-}  // namespace aapat
-
-namespace aapat {
-namespace {
-
-using testing::CliRun;
-using testing::run;
-
 // A pattern the chosen file format cannot hold fails the command before any
 // of its report is printed, and leaves no file.
 TEST(Hardening, AnOutputFormatThatCannotHoldTheResultFailsBeforeTheReport) {
-  const std::string xyw = testing::temp_path("tile.xyw");
+  const std::string xyw = temp_path("tile.xyw");
   const CliRun r = run({"optimize", "--family", "P(4,1+,2)", "--placement", "left,right,bottom,top",
                         "--starts", "2", "-o", xyw});
   EXPECT_EQ(r.code, kExitError);

@@ -18,9 +18,7 @@ void MetricOptions::add_to(CLI::App* cmd) {
 }
 
 Metric MetricOptions::make() const {
-  const double p =
-      norm == "inf" || norm == "infinity" ? Metric::kMaxNorm : parse_number(norm, "--norm");
-  return Metric(make_filter(filter), make_acuity(acuity), p);
+  return Metric(make_filter(filter), make_acuity(acuity), parse_norm(norm, "--norm"));
 }
 
 }  // namespace aapat

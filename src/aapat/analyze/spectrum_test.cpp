@@ -69,12 +69,6 @@ TEST(Spectrum, OneDimensionalMatchesDirectSum) {
   }
 }
 
-}  // namespace
-}  // namespace aapat
-
-namespace aapat {
-namespace {
-
 // The half computed and the half mirrored (P(-u, -v) = P(u, v)) against the
 // direct sum at every frequency, for even and odd sizes.
 RC_GTEST_PROP(Spectrum, EveryFrequencyEqualsTheDirectSum, ()) {

@@ -10,6 +10,20 @@
 #include <numeric>
 
 namespace aapat {
+namespace {
+
+// The spread sum over pairs j < k of w_j w_k |p_j - p_k|, with the samples
+// added in ascending p: each sample's p times (weight below - weight above).
+struct SortedSpread {
+  double spread = 0, below = 0;
+  void add(double p, double w) {
+    spread += w * p * (2 * below + w - 1);
+    below += w;
+  }
+};
+
+}  // namespace
+
 double e1_squared(const Filter& filter, std::span<const double> p, std::span<const double> w) {
   const size_t n = p.size();
   double moment = 0;
@@ -22,29 +36,26 @@ double e1_squared(const Filter& filter, std::span<const double> p, std::span<con
       spread += w[j] * s;
     }
   } else {
-    // Sorted: each sample's p times (weight below - weight above).
     thread_local std::vector<std::pair<double, double>> sorted;
     sorted.resize(n);
     for (size_t j = 0; j < n; ++j) sorted[j] = {p[j], w[j]};
     std::sort(sorted.begin(), sorted.end());
-    double below = 0;
-    for (const auto& [pj, wj] : sorted) {
-      spread += wj * pj * (2 * below + wj - 1);
-      below += wj;
-    }
+    SortedSpread sum;
+    for (const auto& [pj, wj] : sorted) sum.add(pj, wj);
+    spread = sum.spread;
   }
   return std::max(0.0, moment - spread - filter.half_mean_distance());
 }
 
 double e1_squared_in_order(const Filter& filter, std::span<const double> p,
                            std::span<const double> w, std::span<const size_t> order) {
-  double moment = 0, spread = 0, below = 0;
+  double moment = 0;
+  SortedSpread sum;
   for (const size_t j : order) {
     moment += w[j] * filter.abs_moment(p[j]);
-    spread += w[j] * p[j] * (2 * below + w[j] - 1);
-    below += w[j];
+    sum.add(p[j], w[j]);
   }
-  return std::max(0.0, moment - spread - filter.half_mean_distance());
+  return std::max(0.0, moment - sum.spread - filter.half_mean_distance());
 }
 
 void sort_by_projection(std::span<size_t> order, std::span<const double> p) {
@@ -111,11 +122,15 @@ Metric::Metric(Filter filter, AcuityTable acuity, double norm)
   for (double w : acuity_.weights) weight_sq_.push_back(w * w);
 }
 
-double Metric::e1_squared_at(const Kernel& k, int angle, double* proj) const {
+std::span<const double> Metric::project(const Kernel& k, int angle, double* proj) const {
   const size_t n = k.w.size();
   const double c = cos_[angle], s = sin_[angle];
   for (size_t j = 0; j < n; ++j) proj[j] = c * k.y[j] - s * k.x[j];
-  return e1_squared(filter_, {proj, n}, k.w);
+  return {proj, n};
+}
+
+double Metric::e1_squared_at(const Kernel& k, int angle, double* proj) const {
+  return e1_squared(filter_, project(k, angle, proj), k.w);
 }
 
 KernelMaximum combine_over_kernels(std::span<const double> kernel_e2) {
@@ -137,14 +152,12 @@ double Metric::kernel_terms(const Kernel& k, std::span<double> proj,
     order.resize(n);
     std::iota(order.begin(), order.end(), 0);
     for (int a = 0; a < angle_count(); ++a) {
-      const double c = cos_[a], s = sin_[a];
-      for (size_t j = 0; j < n; ++j) proj[j] = c * k.y[j] - s * k.x[j];
+      const std::span<const double> p = project(k, a, proj.data());
       if (a == 0)
-        std::sort(order.begin(), order.end(),
-                  [&](size_t i, size_t j) { return proj[i] < proj[j]; });
+        std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return p[i] < p[j]; });
       else
-        sort_by_projection(order, proj.first(n));
-      values[a] = weight_sq_[a] * e1_squared_in_order(filter_, proj.first(n), k.w, order);
+        sort_by_projection(order, p);
+      values[a] = weight_sq_[a] * e1_squared_in_order(filter_, p, k.w, order);
     }
     return combine_over_angles(values.first(angle_count()), norm_);
   }

@@ -55,7 +55,8 @@ double combine_over_angles(std::span<const double> weighted_e1_squared, double n
 
 // "inf" for the maximum, else p as written shortest ("2", "2.5").
 std::string format_norm(double norm);
-// Reads "inf" / "infinity" or a number in [1, kMaxFiniteNorm]; `what` names the input in errors.
+// Reads "inf" / "infinity" or a number; `what` names the input in errors (the
+// Metric checks the range, [1, kMaxFiniteNorm]).
 double parse_norm(std::string_view text, std::string_view what);
 
 // The combination over kernels: the largest kernel E2 (ties: the first
@@ -109,6 +110,9 @@ class Metric {
   PatternError evaluate(const Pattern& p) const;
 
  private:
+  // The kernel's samples projected on the normal of `angle`, into proj (room
+  // for the kernel's samples).
+  std::span<const double> project(const Kernel& k, int angle, double* proj) const;
   // E1^2 at one angle; proj has room for the kernel's projections.
   double e1_squared_at(const Kernel& k, int angle, double* proj) const;
 
