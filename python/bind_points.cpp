@@ -22,11 +22,12 @@ PointSets to_sets(const py::object& points) {
 
 py::dict discrepancy_dict(const DiscrepancyReport& d) {
   py::dict out(py::arg("points") = d.points);
-  if (d.l2_star) out["l2_star"] = *d.l2_star;
+  for (const L2Value& v : d.l2) out[py::str(std::string(l2_kind_info(v.kind).key))] = v.value;
   if (d.star) {
     out["star_lower"] = d.star->lower;
     out["star_upper"] = d.star->upper;
     out["star_exact"] = d.star->exact;
+    out["star_gap"] = d.star->upper - d.star->lower;
   }
   if (d.edge) {
     out["edge"] = d.edge->value;
@@ -89,13 +90,17 @@ void bind_points(py::module_& m) {
         return discrepancy_dict(d);
       },
       py::arg("points"), py::arg("measures") = "l2-star,star,edge",
-      R"doc(L2-star (Warnock, O(N log N)), star (exact up to 4096 points, else bounds on an 8192^2 grid) and edge
-discrepancy of an (n, 2) array in [0, 1]^2. Returns a dict: points, l2_star,
-star_lower, star_upper, star_exact, edge, edge_normal_deg (of the measures asked).
+      R"doc(Discrepancies of an (n, 2) array in [0, 1]^2: the L2 kinds (star, Warnock;
+generalized, centred, wrap-around, symmetric, Hickernell; unanchored), each
+O(N log N) in double-double; star (exact up to 4096 points, else bounds with
+their gap); edge (720 directions). Returns a dict: points, then l2_star,
+l2_generalized, l2_centred, l2_wrap_around, l2_unanchored, l2_symmetric,
+star_lower, star_upper, star_exact, star_gap, edge, edge_normal_deg (of the
+measures asked).
 
-    measures: a comma list of "l2-star", "star", "edge". The L2-star
-        discrepancy (O(N log N), double-double sums) takes up to 10^7 points,
-        the others 65,536.)doc");
+    measures: a comma list of "l2-star", "l2-generalized", "l2-centred",
+        "l2-wrap-around", "l2-unanchored", "l2-symmetric", "star", "edge", or
+        "all". The L2 discrepancies take up to 10^7 points, the others 65,536.)doc");
 
   m.def(
       "spectrum",

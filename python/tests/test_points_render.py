@@ -91,3 +91,12 @@ def test_discrepancy_computes_only_the_measures_asked():
     assert set(d) == {"points", "l2_star"}
     with pytest.raises(aapat.Error, match="measure 'x'"):
         aapat.discrepancy(aapat.generate("halton", 10), measures="x")
+
+
+def test_discrepancy_every_l2_kind():
+    d = aapat.discrepancy(aapat.generate("halton", 1000), measures="all")
+    assert {"l2_star", "l2_generalized", "l2_centred", "l2_wrap_around", "l2_unanchored",
+            "l2_symmetric", "star_lower", "star_gap", "edge"} <= set(d)
+    # One point at the centre: the centred discrepancy is sqrt((13/12)^2 - 1) = 5/12.
+    centre = aapat.discrepancy(np.array([[0.5, 0.5]]), measures="l2-centered")
+    assert centre["l2_centred"] == pytest.approx(5 / 12, rel=1e-15)

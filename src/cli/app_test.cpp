@@ -352,9 +352,19 @@ TEST(CliPoints, DiscrepancyComputesOnlyTheMeasuresAsked) {
   EXPECT_NE(t.out.find("edge discrepancy"), std::string::npos);
   const CliRun bad = run({"discrepancy", "regular", "--measure", "l3"});
   EXPECT_EQ(bad.code, 1);
-  EXPECT_NE(bad.err.find("--measure 'l3': the measures are l2-star, star and edge"),
+  EXPECT_NE(bad.err.find("--measure 'l3': the measures are l2-star, l2-generalized, l2-centred, "
+                         "l2-wrap-around, l2-unanchored, l2-symmetric, star, edge or all"),
             std::string::npos)
       << bad.err;
+  // Every L2 kind, in the JSON and in the text, one line each.
+  const CliRun all = run({"discrepancy", "halton", "--n", "256", "--measure", "all", "--json"});
+  ASSERT_EQ(all.code, 0) << all.err;
+  const auto j = nlohmann::json::parse(all.out);
+  for (const char* key : {"l2_star", "l2_generalized", "l2_centred", "l2_wrap_around",
+                          "l2_unanchored", "l2_symmetric", "star_upper", "edge"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  const CliRun text = run({"discrepancy", "halton", "--n", "256", "--measure", "l2-wrap-around"});
+  EXPECT_NE(text.out.find("  L2-wrap-around discrepancy  0."), std::string::npos) << text.out;
 }
 
 TEST(CliPoints, SpectrumWritesImageRadialProfileAndOneDimensionalPlot) {

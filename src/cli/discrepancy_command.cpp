@@ -1,4 +1,4 @@
-// `aapat discrepancy`: L2-star, star and edge discrepancy of a point set.
+// `aapat discrepancy`: the L2 discrepancies, star and edge discrepancy of a point set.
 #include <fmt/format.h>
 
 #include <memory>
@@ -17,7 +17,7 @@ namespace {
 JsonObject discrepancy_json(const std::string& source, const DiscrepancyReport& d) {
   JsonObject doc = json_report("discrepancy");
   doc.update(JsonObject{{"source", source}, {"points", d.points}});
-  if (d.l2_star) doc["l2_star"] = *d.l2_star;
+  for (const L2Value& v : d.l2) doc[std::string(l2_kind_info(v.kind).key)] = v.value;
   if (d.star)
     doc.update(JsonObject{{"star_lower", d.star->lower},
                           {"star_upper", d.star->upper},
@@ -28,30 +28,37 @@ JsonObject discrepancy_json(const std::string& source, const DiscrepancyReport& 
   return doc;
 }
 
+// Six significant digits: the discrepancies of large sets are 1e-6 and less.
 std::string discrepancy_text(const std::string& source, const DiscrepancyReport& d) {
   std::string text = fmt::format("{} ({} points)\n", source, d.points);
-  if (d.l2_star) text += fmt::format("  L2-star discrepancy  {:.6f}\n", *d.l2_star);
+  auto line = [&](const std::string& label, const std::string& value) {
+    text += fmt::format("  {:<28}{}\n", label + " discrepancy", value);
+  };
+  for (const L2Value& v : d.l2)
+    line(std::string(l2_kind_info(v.kind).label), fmt::format("{:.6g}", v.value));
   if (d.star && d.star->exact)
-    text += fmt::format("  star discrepancy     {:.6f} (exact)\n", d.star->upper);
+    line("star", fmt::format("{:.6g} (exact)", d.star->upper));
   else if (d.star)
-    text += fmt::format("  star discrepancy     in [{:.6f}, {:.6f}] (grid bounds; gap {:.6f})\n",
-                        d.star->lower, d.star->upper, d.star->upper - d.star->lower);
+    line("star", fmt::format("in [{:.6g}, {:.6g}] (bounds; gap {:.3g})", d.star->lower,
+                             d.star->upper, d.star->upper - d.star->lower));
   if (d.edge)
-    text += fmt::format("  edge discrepancy     {:.6f} (worst half-plane normal at {:g} degrees)\n",
-                        d.edge->value, d.edge->normal_deg);
+    line("edge", fmt::format("{:.6g} (worst half-plane normal at {:g} degrees)", d.edge->value,
+                             d.edge->normal_deg));
   return text;
 }
 
 }  // namespace
 
 Action add_discrepancy_command(CLI::App& app) {
-  auto* cmd =
-      app.add_subcommand("discrepancy", "L2-star, star and edge discrepancy of a point set");
+  auto* cmd = app.add_subcommand(
+      "discrepancy", "L2 (star, centred, ...), star and edge discrepancy of a point set");
   auto src = std::make_shared<PointOptions>();
   auto json = std::make_shared<bool>(false);
   auto measures = std::make_shared<std::string>("l2-star,star,edge");
   src->add_to(cmd);
-  cmd->add_option("--measure", *measures, "the discrepancies to compute, a comma list")
+  cmd->add_option("--measure", *measures,
+                  "the discrepancies to compute, a comma list of l2-star, l2-generalized, "
+                  "l2-centred, l2-wrap-around, l2-unanchored, l2-symmetric, star, edge, or all")
       ->capture_default_str();
   cmd->add_flag("--json", *json, "print JSON (the measures computed)");
   return [src, json, measures](std::ostream& out) {

@@ -1,10 +1,8 @@
 // Discrepancy of a point set in the unit square (docs/analysis.md):
 //  - L2-star: the L2 norm over anchored boxes [0,a) x [0,b) of
 //    (fraction of points inside - area), by Warnock's closed form, summed
-//    in O(N log N);
-//  - star: the supremum of the same, exact for small sets (every box whose
-//    corner coordinates come from the points), bounded above and below on a
-//    fine grid for larger ones;
+//    in O(N log N); the other L2 kinds in l2_discrepancy.h;
+//  - star: the supremum of the same (star_discrepancy.h);
 //  - edge: the supremum over half-planes H of |area(H cut with the square) -
 //    fraction of points in H|, in the spirit of Dobkin & Mitchell: exact for
 //    each direction, over `directions` directions of the edge normal.
@@ -13,6 +11,7 @@
 #include <functional>
 #include <vector>
 
+#include "aapat/analyze/star_discrepancy.h"
 #include "aapat/core/geometry.h"
 
 namespace aapat {
@@ -30,16 +29,6 @@ void check_l2_star_size(size_t points);
 // Warnock's closed form in O(N log N) with double-double sums: correct to
 // about 1e-12 relative at any size up to kMaxL2StarPoints.
 double l2_star_discrepancy(const std::vector<Vec2>& points);
-
-struct StarDiscrepancy {
-  double lower = 0, upper = 0;  // equal when exact
-  bool exact = false;
-};
-// Exact in O(N^2) when points.size() <= exact_limit; else bounds from a
-// grid x grid lattice of boxes in O(grid^2 + N) time and O(grid + N) memory
-// (the upper bound cannot go below about 2 / grid).
-StarDiscrepancy star_discrepancy(const std::vector<Vec2>& points, size_t exact_limit = 4096,
-                                 int grid = 8192);
 
 struct EdgeDiscrepancy {
   double value = 0;

@@ -1,5 +1,5 @@
 // Double-double numbers: an unevaluated sum hi + lo of two doubles, about 106
-// bits of significand (Dekker; Knuth's TwoSum; TwoProd with an FMA). Sums of
+// bits of significand (Dekker; Knuth's TwoSum; TwoProd). Sums of
 // millions of terms near 0.1 whose difference is 1e-8 (the L2-star
 // discrepancy) keep about 1e-30 of absolute accuracy, where one double keeps
 // 1e-17 per term and loses the result.
@@ -24,10 +24,22 @@ inline DoubleDouble two_sum(double a, double b) {
   return {s, (a - (s - bb)) + (b - bb)};
 }
 
-// a * b exactly, as a double-double (the FMA gives the rounding error).
+// a * b exactly, as a double-double. With a hardware FMA the error is one
+// fma; without one (baseline x86-64), std::fma is a library call that costs
+// more than the rest of the sum, so Dekker's split computes the same exact
+// error inline: each half has at most 27 bits, so every partial product is
+// exact (and stays so if the compiler contracts it into an FMA). |a|, |b|
+// below 2^995, far above any value here.
 inline DoubleDouble two_prod(double a, double b) {
   const double p = a * b;
+#if defined(__FMA__) || defined(__aarch64__)
   return {p, std::fma(a, b, -p)};
+#else
+  constexpr double kSplit = 134217729.0;  // 2^27 + 1
+  const double ta = kSplit * a, tb = kSplit * b;
+  const double ah = ta - (ta - a), al = a - ah, bh = tb - (tb - b), bl = b - bh;
+  return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
+#endif
 }
 
 inline DoubleDouble renormalized(double hi, double lo) {

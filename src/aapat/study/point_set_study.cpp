@@ -23,21 +23,26 @@ void check_spectrum_work(size_t points, int size, int realizations) {
 }  // namespace
 
 DiscrepancyMeasures parse_measures(std::string_view list) {
-  DiscrepancyMeasures m{false, false, false};
+  std::string names;
+  for (const L2KindInfo& k : l2_kinds()) names += std::string(k.name) + ", ";
+  names += "star, edge or all";
+  DiscrepancyMeasures m{{}, false, false};
+  std::vector<bool> l2(l2_kinds().size(), false);
   for (std::string_view item : split(list)) {
     item = trim(item);
-    if (item == "l2-star")
-      m.l2_star = true;
-    else if (item == "star")
-      m.star = true;
-    else if (item == "edge")
-      m.edge = true;
-    else
-      throw ParameterError("measure",
-                           fmt::format(" '{}': the measures are l2-star, star and edge", item));
+    if (item == "l2-centered") item = "l2-centred";
+    bool known = item == "star" || item == "edge" || item == "all";
+    m.star = m.star || item == "star" || item == "all";
+    m.edge = m.edge || item == "edge" || item == "all";
+    for (size_t k = 0; k < l2.size(); ++k)
+      if (item == l2_kinds()[k].name || item == "all") l2[k] = known = true;
+    if (!known)
+      throw ParameterError("measure", fmt::format(" '{}': the measures are {}", item, names));
   }
-  if (!m.l2_star && !m.star && !m.edge)
-    throw ParameterError("measure", ": name at least one of l2-star, star, edge");
+  for (size_t k = 0; k < l2.size(); ++k)
+    if (l2[k]) m.l2.push_back(l2_kinds()[k].kind);
+  if (m.l2.empty() && !m.star && !m.edge)
+    throw ParameterError("measure", fmt::format(": name at least one of {}", names));
   return m;
 }
 
@@ -45,18 +50,18 @@ DiscrepancyReport discrepancy_report(const std::vector<Vec2>& points,
                                      const DiscrepancyMeasures& measures,
                                      const StudyProgress& progress) {
   // Every size limit first, before any work.
-  if (measures.l2_star) check_l2_star_size(points.size());
+  if (!measures.l2.empty()) check_l2_star_size(points.size());
   if (measures.star || measures.edge) check_discrepancy_size(points.size());
-  const int total = measures.l2_star + measures.star + measures.edge;
+  const int total = static_cast<int>(measures.l2.size()) + measures.star + measures.edge;
   int done = 0;
   auto report = [&](const std::string& note) {
     if (progress) progress(done, total, note);
   };
   DiscrepancyReport r;
   r.points = points.size();
-  if (measures.l2_star) {
-    report("L2-star");
-    r.l2_star = l2_star_discrepancy(points);
+  for (const L2Kind kind : measures.l2) {
+    report(std::string(l2_kind_info(kind).label));
+    r.l2.push_back({kind, l2_discrepancy(points, kind)});
     ++done;
   }
   if (measures.star) {

@@ -1,5 +1,5 @@
 // What `aapat discrepancy` and `aapat spectrum` measure of a point set: the
-// three discrepancies at once, the 2D power spectrum averaged over
+// discrepancies asked, the 2D power spectrum averaged over
 // realizations with its radial profile, and the 1D spectra of Goss & Wu's
 // Figure 8 with the binned curves a plot can show.
 #pragma once
@@ -11,25 +11,32 @@
 #include <vector>
 
 #include "aapat/analyze/discrepancy.h"
+#include "aapat/analyze/l2_discrepancy.h"
 #include "aapat/analyze/spectrum.h"
 #include "aapat/study/progress.h"
 
 namespace aapat {
 
-// Which discrepancies to compute: "l2-star,star,edge" (any of them, any order).
+// Which discrepancies to compute: "l2-star,star,edge" by default; any of
+// those, the other L2 kinds (l2-centred, ...), or "all", in any order.
 struct DiscrepancyMeasures {
-  bool l2_star = true, star = true, edge = true;
+  std::vector<L2Kind> l2{L2Kind::star};  // in the order of l2_kinds()
+  bool star = true, edge = true;
 };
 DiscrepancyMeasures parse_measures(std::string_view list);  // ParameterError("measure")
 
+struct L2Value {
+  L2Kind kind;
+  double value = 0;
+};
 struct DiscrepancyReport {
   size_t points = 0;
-  std::optional<double> l2_star;
+  std::vector<L2Value> l2;  // the L2 kinds asked, in the order of l2_kinds()
   std::optional<StarDiscrepancy> star;
   std::optional<EdgeDiscrepancy> edge;
 };
 // Only the measures asked; the size limits are those of the measures asked
-// (the L2-star discrepancy alone takes up to kMaxL2StarPoints).
+// (the L2 discrepancies alone take up to kMaxL2StarPoints).
 DiscrepancyReport discrepancy_report(const std::vector<Vec2>& points,
                                      const DiscrepancyMeasures& measures = {},
                                      const StudyProgress& progress = {});
