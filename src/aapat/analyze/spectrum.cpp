@@ -7,6 +7,8 @@
 #include <complex>
 #include <tuple>
 
+#include "aapat/analyze/spectrum_simd.h"
+
 namespace aapat {
 
 Spectrum2D power_spectrum(const std::vector<Vec2>& points, int size) {
@@ -40,20 +42,15 @@ Spectrum2D power_spectrum(const std::vector<Vec2>& points, int size) {
   tbb::parallel_for(size_t{0}, (columns + kBlock - 1) / kBlock, [&](size_t block) {
     const size_t first = block * kBlock, count = std::min(kBlock, columns - first);
     std::vector<double> re(kBlock * m, 0.0), im(kBlock * m, 0.0);
-    double ar[kBlock], ai[kBlock];
-    for (size_t j = 0; j < n; ++j) {
-      for (size_t c = 0; c < count; ++c)
-        std::tie(ar[c], ai[c]) = column_term(j, static_cast<double>(first + c) - half);
-      const double* br = &ey_re[j * m];
-      const double* bi = &ey_im[j * m];
-      for (size_t c = 0; c < count; ++c) {
-        double* r = &re[c * m];
-        double* i = &im[c * m];
-        for (size_t v = 0; v < m; ++v) {
-          r[v] += ar[c] * br[v] - ai[c] * bi[v];
-          i[v] += ar[c] * bi[v] + ai[c] * br[v];
-        }
-      }
+    double ar[kPointsAtOnce * kBlock], ai[kPointsAtOnce * kBlock];
+    for (size_t j = 0; j < n; j += kPointsAtOnce) {
+      const size_t points = std::min(kPointsAtOnce, n - j);
+      for (size_t q = 0; q < points; ++q)
+        for (size_t c = 0; c < count; ++c)
+          std::tie(ar[q * count + c], ai[q * count + c]) =
+              column_term(j + q, static_cast<double>(first + c) - half);
+      add_points_to_columns(points, ar, ai, count, &ey_re[j * m], &ey_im[j * m], m, m, re.data(),
+                            im.data());
     }
     for (size_t c = 0; c < count; ++c)
       for (size_t v = 0; v < m; ++v)

@@ -77,6 +77,18 @@ class Filter {
     for (int i = coefs_ - 2; i >= 0; --i) r = r * t + c[i];
     return r;
   }
+  // J's pieces, for evaluating many J at once (core/metric_simd.h) with the
+  // arithmetic of abs_moment: for |p| < radius, k = min(floor(|p| / width),
+  // segments - 1), t = (|p| - k width) (2 / width) - 1, and J = sum_i
+  // coef[k coefs + i] t^i by Horner; |p| itself past the radius.
+  struct AbsMomentTable {
+    const double* coef;
+    int segments, coefs;
+    double width, inv_width, radius;
+  };
+  AbsMomentTable abs_moment_table() const {
+    return {abs_moment_coef_.data(), segments_, coefs_, width_, inv_width_, radius_};
+  }
   // Half the mean distance of two independent draws from h: (1/2) E|S - T|.
   double half_mean_distance() const { return half_mean_distance_; }
 

@@ -1,6 +1,7 @@
 #include "aapat/core/metric.h"
 
 #include "aapat/core/filter_catalog.h"
+#include "aapat/core/metric_simd.h"
 
 #include <fmt/format.h>
 
@@ -22,12 +23,15 @@ struct SortedSpread {
   }
 };
 
-}  // namespace
-
-double e1_squared(const Filter& filter, std::span<const double> p, std::span<const double> w) {
+// The closed form's sum over samples, with J(p_j) from `j_of(j)`: one filter
+// evaluation at a time (the scalar reference) or all at once (metric_simd.h).
+// The moment is summed in index order, the spread over the samples sorted.
+template <class JOf>
+double closed_form(const Filter& filter, std::span<const double> p, std::span<const double> w,
+                   JOf j_of) {
   const size_t n = p.size();
   double moment = 0;
-  for (size_t j = 0; j < n; ++j) moment += w[j] * filter.abs_moment(p[j]);
+  for (size_t j = 0; j < n; ++j) moment += w[j] * j_of(j);
   double spread = 0;  // sum over pairs j < k of w_j w_k |p_j - p_k|
   if (n <= kPairwiseLimit) {
     for (size_t j = 0; j < n; ++j) {
@@ -47,15 +51,30 @@ double e1_squared(const Filter& filter, std::span<const double> p, std::span<con
   return std::max(0.0, moment - spread - filter.half_mean_distance());
 }
 
-double e1_squared_in_order(const Filter& filter, std::span<const double> p,
-                           std::span<const double> w, std::span<const size_t> order) {
+// The same with the samples visited in `order` (sorted by p): moment and
+// spread both summed in that order.
+template <class JOf>
+double closed_form_in_order(const Filter& filter, std::span<const double> p,
+                            std::span<const double> w, std::span<const size_t> order, JOf j_of) {
   double moment = 0;
   SortedSpread sum;
   for (const size_t j : order) {
-    moment += w[j] * filter.abs_moment(p[j]);
+    moment += w[j] * j_of(j);
     sum.add(p[j], w[j]);
   }
   return std::max(0.0, moment - sum.spread - filter.half_mean_distance());
+}
+
+}  // namespace
+
+double e1_squared(const Filter& filter, std::span<const double> p, std::span<const double> w) {
+  return closed_form(filter, p, w, [&](size_t j) { return filter.abs_moment(p[j]); });
+}
+
+double e1_squared_in_order(const Filter& filter, std::span<const double> p,
+                           std::span<const double> w, std::span<const size_t> order) {
+  return closed_form_in_order(filter, p, w, order,
+                              [&](size_t j) { return filter.abs_moment(p[j]); });
 }
 
 void sort_by_projection(std::span<size_t> order, std::span<const double> p) {
@@ -92,8 +111,14 @@ double e1_squared_piecewise(const Filter& filter, std::span<const double> p,
 }
 
 double combine_over_angles(std::span<const double> values, double norm) {
-  double largest = 0;
-  for (double v : values) largest = std::max(largest, v);
+  // The largest in four independent runs (the same value as one run: max is
+  // exact and order-free), so the loop is not one long chain of maxima.
+  double run[4] = {0, 0, 0, 0};
+  size_t a = 0;
+  for (; a + 4 <= values.size(); a += 4)
+    for (int r = 0; r < 4; ++r) run[r] = std::max(run[r], values[a + r]);
+  for (; a < values.size(); ++a) run[0] = std::max(run[0], values[a]);
+  const double largest = std::max(std::max(run[0], run[1]), std::max(run[2], run[3]));
   if (norm == Metric::kMaxNorm || largest == 0) return std::sqrt(largest);
   // ((1/M) sum v^(p/2))^(1/p) = sqrt(largest) ((1/M) sum (v / largest)^(p/2))^(1/p)
   double sum = 0;
@@ -129,10 +154,6 @@ std::span<const double> Metric::project(const Kernel& k, int angle, double* proj
   return {proj, n};
 }
 
-double Metric::e1_squared_at(const Kernel& k, int angle, double* proj) const {
-  return e1_squared(filter_, project(k, angle, proj), k.w);
-}
-
 KernelMaximum combine_over_kernels(std::span<const double> kernel_e2) {
   KernelMaximum m{-1, 0};
   for (size_t k = 0; k < kernel_e2.size(); ++k)
@@ -144,11 +165,23 @@ double Metric::kernel_terms(const Kernel& k, std::span<double> proj,
                             std::span<double> values) const {
   // W^2 E1^2 per angle: one square root per kernel, not one per angle.
   const size_t n = k.w.size();
-  if (n > kPairwiseLimit && angle_count() >= kDenseAngles) {
-    // Large kernels, dense tables: the sorted order of the projections
-    // carries over from one angle to the next, where few samples swap, so an
-    // insertion pass re-sorts it in about O(N). (Sparse tables sort afresh.)
-    thread_local std::vector<size_t> order;
+  const Filter::AbsMomentTable table = filter_.abs_moment_table();
+  if (n <= kPairwiseLimit) {
+    // Small kernels: the pair form, vectorized over angles.
+    pairwise_weighted_e1_squared(table, filter_.half_mean_distance(), {cos_, sin_, weight_sq_},
+                                 k.x.data(), k.y.data(), k.w.data(), n, values.data());
+    return combine_over_angles(values.first(angle_count()), norm_);
+  }
+  // Large kernels: J of every sample at once (vectorized over samples), then
+  // the sums in the samples' sorted order.
+  thread_local std::vector<double> moments;
+  thread_local std::vector<size_t> order;
+  moments.resize(n);
+  auto j_of = [&](size_t j) { return moments[j]; };
+  if (angle_count() >= kDenseAngles) {
+    // Dense tables: the sorted order of the projections carries over from
+    // one angle to the next, where few samples swap, so an insertion pass
+    // re-sorts it in about O(N). (Sparse tables sort afresh.)
     order.resize(n);
     std::iota(order.begin(), order.end(), 0);
     for (int a = 0; a < angle_count(); ++a) {
@@ -157,19 +190,28 @@ double Metric::kernel_terms(const Kernel& k, std::span<double> proj,
         std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return p[i] < p[j]; });
       else
         sort_by_projection(order, p);
-      values[a] = weight_sq_[a] * e1_squared_in_order(filter_, p, k.w, order);
+      abs_moments(table, p.data(), n, moments.data());
+      values[a] = weight_sq_[a] * closed_form_in_order(filter_, p, k.w, order, j_of);
     }
     return combine_over_angles(values.first(angle_count()), norm_);
   }
-  for (int a = 0; a < angle_count(); ++a)
-    values[a] = weight_sq_[a] * e1_squared_at(k, a, proj.data());
+  for (int a = 0; a < angle_count(); ++a) {
+    const std::span<const double> p = project(k, a, proj.data());
+    abs_moments(table, p.data(), n, moments.data());
+    values[a] = weight_sq_[a] * closed_form(filter_, p, k.w, j_of);
+  }
   return combine_over_angles(values.first(angle_count()), norm_);
 }
 
 int Metric::worst_term(std::span<const double> values) {
+  // The threshold kept, not recomputed from values[worst] at every angle.
   int worst = 0;
+  double threshold = values.empty() ? 0 : values[0] * (1 + 1e-12);
   for (size_t a = 1; a < values.size(); ++a)
-    if (values[a] > values[worst] * (1 + 1e-12)) worst = static_cast<int>(a);
+    if (values[a] > threshold) {
+      worst = static_cast<int>(a);
+      threshold = values[a] * (1 + 1e-12);
+    }
   return worst;
 }
 

@@ -113,8 +113,6 @@ class Metric {
   // The kernel's samples projected on the normal of `angle`, into proj (room
   // for the kernel's samples).
   std::span<const double> project(const Kernel& k, int angle, double* proj) const;
-  // E1^2 at one angle; proj has room for the kernel's projections.
-  double e1_squared_at(const Kernel& k, int angle, double* proj) const;
 
   Filter filter_;
   AcuityTable acuity_;

@@ -1,0 +1,182 @@
+// Compiled once per Highway target (hwy/foreach_target.h re-includes this
+// file); the dispatchers at the end, once. Built with -ffp-contract=off
+// (CMakeLists.txt): a multiply and an add stay two roundings on every target.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "aapat/core/metric_simd.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "aapat/core/metric.h"
+#include "aapat/core/metric_simd.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace aapat {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using D = hn::ScalableTag<double>;
+using V = hn::Vec<D>;
+constexpr size_t kMaxLanes = HWY_LANES(double);
+
+// J's pieces as the vector loops read them. With no more pieces than lanes
+// (box, tent, the cubics), coefficient i of every piece fills one vector and
+// a lane permutation picks each lane's piece; otherwise each coefficient is
+// gathered from Filter's table.
+constexpr int kMaxCoefs = Filter::kInterpolatedDegree + 3;
+struct Pieces {
+  const Filter::AbsMomentTable& j;
+  bool in_lanes = false;
+  HWY_ALIGN double coef[kMaxCoefs * kMaxLanes];
+
+  Pieces(D d, const Filter::AbsMomentTable& table) : j(table) {
+    const size_t lanes = hn::Lanes(d);
+    in_lanes = static_cast<size_t>(j.segments) <= lanes && j.coefs <= kMaxCoefs;
+    if (!in_lanes) return;
+    std::fill(std::begin(coef), std::end(coef), 0.0);
+    for (int i = 0; i < j.coefs; ++i)
+      for (int k = 0; k < j.segments; ++k) coef[i * lanes + k] = j.coef[k * j.coefs + i];
+  }
+};
+
+// Filter::abs_moment, lane for lane: the same products, sums and Horner steps.
+// Lanes past the radius (and NaN) take |p| and read piece 0, never an index
+// computed from them.
+HWY_INLINE V AbsMoment(D d, const Pieces& pieces, V p) {
+  const Filter::AbsMomentTable& j = pieces.j;
+  const hn::RebindToSigned<D> di;
+  const V ap = hn::Abs(p);
+  const auto inside = hn::Lt(ap, hn::Set(d, j.radius));
+  V k = hn::Min(hn::Floor(hn::Mul(ap, hn::Set(d, j.inv_width))),
+                hn::Set(d, static_cast<double>(j.segments - 1)));
+  k = hn::IfThenElseZero(inside, k);
+  const V t =
+      hn::Sub(hn::Mul(hn::Sub(ap, hn::Mul(k, hn::Set(d, j.width))), hn::Set(d, 2.0 * j.inv_width)),
+              hn::Set(d, 1.0));
+  V r;
+  if (pieces.in_lanes) {
+    const size_t lanes = hn::Lanes(d);
+    const auto piece = hn::IndicesFromVec(d, hn::ConvertTo(di, k));
+    auto coef = [&](int i) {
+      return hn::TableLookupLanes(hn::Load(d, pieces.coef + i * lanes), piece);
+    };
+    r = coef(j.coefs - 1);
+    for (int i = j.coefs - 2; i >= 0; --i) r = hn::Add(hn::Mul(r, t), coef(i));
+  } else {
+    const auto index = hn::ConvertTo(di, hn::Mul(k, hn::Set(d, static_cast<double>(j.coefs))));
+    r = hn::GatherIndex(d, j.coef + (j.coefs - 1), index);
+    for (int i = j.coefs - 2; i >= 0; --i)
+      r = hn::Add(hn::Mul(r, t), hn::GatherIndex(d, j.coef + i, index));
+  }
+  return hn::IfThenElse(inside, r, ap);
+}
+
+// One block of lanes() angles: e1_squared's pair form, each lane one angle.
+// `p` has room for the n projections of one block (n vectors of lanes).
+HWY_INLINE V PairwiseBlock(D d, const Pieces& j, V hmd, V cos, V sin, V weight_sq, const double* x,
+                           const double* y, const double* w, size_t n, double* HWY_RESTRICT p) {
+  const size_t lanes = hn::Lanes(d);
+  V moment = hn::Zero(d);
+  for (size_t s = 0; s < n; ++s) {
+    const V ps = hn::Sub(hn::Mul(cos, hn::Set(d, y[s])), hn::Mul(sin, hn::Set(d, x[s])));
+    hn::Store(ps, d, p + s * lanes);
+    moment = hn::Add(moment, hn::Mul(hn::Set(d, w[s]), AbsMoment(d, j, ps)));
+  }
+  V spread = hn::Zero(d);
+  for (size_t s = 0; s < n; ++s) {
+    const V ps = hn::Load(d, p + s * lanes);
+    V sum = hn::Zero(d);
+    for (size_t q = s + 1; q < n; ++q)
+      sum =
+          hn::Add(sum, hn::Mul(hn::Set(d, w[q]), hn::Abs(hn::Sub(ps, hn::Load(d, p + q * lanes)))));
+    spread = hn::Add(spread, hn::Mul(hn::Set(d, w[s]), sum));
+  }
+  const V e1 = hn::Sub(hn::Sub(moment, spread), hmd);
+  // std::max(0.0, e1): 0 unless 0 < e1 (a NaN gives 0, as there).
+  const V zero = hn::Zero(d);
+  return hn::Mul(weight_sq, hn::IfThenElse(hn::Lt(zero, e1), e1, zero));
+}
+
+void PairwiseWeightedE1Squared(const Filter::AbsMomentTable& j, double half_mean_distance,
+                               const AngleTable& angles, const double* x, const double* y,
+                               const double* w, size_t n, double* values) {
+  const D d;
+  const size_t lanes = hn::Lanes(d), count = angles.cos.size();
+  const V hmd = hn::Set(d, half_mean_distance);
+  const Pieces pieces(d, j);
+  HWY_ALIGN double p[kPairwiseLimit * kMaxLanes];
+  size_t a = 0;
+  for (; a + lanes <= count; a += lanes)
+    hn::StoreU(
+        PairwiseBlock(d, pieces, hmd, hn::LoadU(d, &angles.cos[a]), hn::LoadU(d, &angles.sin[a]),
+                      hn::LoadU(d, &angles.weight_sq[a]), x, y, w, n, p),
+        d, values + a);
+  if (a == count) return;
+  // The last, partial block through buffers padded with zero angles.
+  HWY_ALIGN double c[kMaxLanes] = {}, s[kMaxLanes] = {}, ws[kMaxLanes] = {}, out[kMaxLanes];
+  const size_t rest = count - a;
+  std::memcpy(c, &angles.cos[a], rest * sizeof(double));
+  std::memcpy(s, &angles.sin[a], rest * sizeof(double));
+  std::memcpy(ws, &angles.weight_sq[a], rest * sizeof(double));
+  hn::Store(
+      PairwiseBlock(d, pieces, hmd, hn::Load(d, c), hn::Load(d, s), hn::Load(d, ws), x, y, w, n, p),
+      d, out);
+  std::memcpy(values + a, out, rest * sizeof(double));
+}
+
+void AbsMoments(const Filter::AbsMomentTable& j, const double* p, size_t n, double* out) {
+  const D d;
+  const size_t lanes = hn::Lanes(d);
+  const Pieces pieces(d, j);
+  size_t i = 0;
+  for (; i + lanes <= n; i += lanes)
+    hn::StoreU(AbsMoment(d, pieces, hn::LoadU(d, p + i)), d, out + i);
+  if (i == n) return;
+  HWY_ALIGN double in[kMaxLanes] = {}, result[kMaxLanes];
+  std::memcpy(in, p + i, (n - i) * sizeof(double));
+  hn::Store(AbsMoment(d, pieces, hn::Load(d, in)), d, result);
+  std::memcpy(out + i, result, (n - i) * sizeof(double));
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace aapat
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace aapat {
+
+HWY_EXPORT(PairwiseWeightedE1Squared);
+HWY_EXPORT(AbsMoments);
+
+void pairwise_weighted_e1_squared(const Filter::AbsMomentTable& j, double half_mean_distance,
+                                  const AngleTable& angles, const double* x, const double* y,
+                                  const double* w, size_t n, double* values) {
+  HWY_DYNAMIC_DISPATCH(PairwiseWeightedE1Squared)
+  (j, half_mean_distance, angles, x, y, w, n, values);
+}
+
+void abs_moments(const Filter::AbsMomentTable& j, const double* p, size_t n, double* out) {
+  HWY_DYNAMIC_DISPATCH(AbsMoments)(j, p, n, out);
+}
+
+std::vector<int64_t> simd_targets_here() {
+  return hwy::SupportedAndGeneratedTargets();
+}
+
+std::string simd_target_name(int64_t target) {
+  return hwy::TargetName(target);
+}
+
+std::string simd_target() {
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  return targets.empty() ? "none" : simd_target_name(targets.front());
+}
+
+void pin_simd_target(int64_t target) {
+  hwy::SetSupportedTargetsForTest(target);
+}
+
+}  // namespace aapat
+#endif  // HWY_ONCE

@@ -1,0 +1,46 @@
+// The metric's hot loops vectorized with Highway, one binary for every x86-64:
+// the best code path the processor has (AVX-512, AVX2, SSE4, SSSE3, or the
+// baseline's 128-bit emulation) is chosen at run time.
+//
+// Every path does the scalar code's arithmetic (metric.cpp, Filter::
+// abs_moment) lane for lane, in the same order, with no fused multiply-add
+// (this file is compiled with -ffp-contract=off): the results are the same
+// bits on every path and as the scalar code's, so a pattern's E2, and every
+// optimizer run built on it, does not depend on the machine.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "aapat/core/filter.h"
+
+namespace aapat {
+
+// The per-angle tables of a metric: the edge normal's cos and sin and W^2.
+struct AngleTable {
+  std::span<const double> cos, sin, weight_sq;
+};
+
+// W^2 E1^2 at every angle of `angles` into values (angles.cos.size() of
+// them), for a kernel of n <= kPairwiseLimit samples: e1_squared's
+// closed form with the pair sum, with the lanes running over angles.
+void pairwise_weighted_e1_squared(const Filter::AbsMomentTable& j, double half_mean_distance,
+                                  const AngleTable& angles, const double* x, const double* y,
+                                  const double* w, size_t n, double* values);
+
+// J(p_i) for every p into out: Filter::abs_moment, the lanes running over p.
+void abs_moments(const Filter::AbsMomentTable& j, const double* p, size_t n, double* out);
+
+// The code path that runs here ("AVX3", "AVX2", "EMU128", ...).
+std::string simd_target();
+// Every path compiled into this binary that this processor can run, best
+// first, as Highway's target bits, and a way to pin one (for tests that
+// compare the paths; 0 lifts the pin).
+std::vector<int64_t> simd_targets_here();
+std::string simd_target_name(int64_t target);
+void pin_simd_target(int64_t target);
+
+}  // namespace aapat

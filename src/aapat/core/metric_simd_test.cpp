@@ -1,0 +1,129 @@
+#include "aapat/core/metric_simd.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <random>
+
+#include "aapat/core/filter_catalog.h"
+#include "aapat/core/metric.h"
+
+namespace aapat {
+namespace {
+
+// Every code path this machine runs, each pinned in turn (the pin lifted at
+// the end, whatever happens).
+class EveryPath {
+ public:
+  ~EveryPath() { pin_simd_target(0); }
+  template <class F>
+  void run(F&& test) {
+    for (const int64_t target : simd_targets_here()) {
+      pin_simd_target(target);
+      SCOPED_TRACE(simd_target_name(target));
+      test();
+    }
+  }
+};
+
+Kernel random_kernel(std::mt19937_64& rng, size_t n) {
+  std::uniform_real_distribution<double> u(-1.5, 1.5), w(0.1, 1);
+  std::vector<Vec2> s(n);
+  std::vector<double> weights(n);
+  double total = 0;
+  for (size_t i = 0; i < n; ++i) {
+    s[i] = {u(rng), u(rng)};
+    total += weights[i] = w(rng);
+  }
+  for (double& v : weights) v /= total;
+  return make_kernel(s, weights);
+}
+
+// The scalar reference: e1_squared's closed form angle by angle, through
+// Filter::abs_moment, as the metric computed before it was vectorized.
+std::vector<double> scalar_terms(const Metric& m, const Kernel& k) {
+  const size_t n = k.w.size();
+  std::vector<double> p(n), values(m.angle_count());
+  std::vector<size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  const bool dense = n > kPairwiseLimit && m.angle_count() >= kDenseAngles;
+  for (int a = 0; a < m.angle_count(); ++a) {
+    for (size_t j = 0; j < n; ++j) p[j] = m.cos(a) * k.y[j] - m.sin(a) * k.x[j];
+    if (dense && a == 0)
+      std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return p[i] < p[j]; });
+    else if (dense)
+      sort_by_projection(order, p);
+    values[a] = m.weight_sq(a) * (dense ? e1_squared_in_order(m.filter(), p, k.w, order)
+                                        : e1_squared(m.filter(), p, k.w));
+  }
+  return values;
+}
+
+// The vectorized metric gives the scalar code's bits, on every path, for every
+// filter of the registry, small kernels (pair form, lanes over angles) and
+// large ones (lanes over samples), sparse and dense acuity tables (the latter
+// 258 angles: a partial last block on every vector width).
+TEST(MetricSimd, EveryPathGivesTheScalarBitsForEveryFilter) {
+  std::mt19937_64 rng(5);
+  EveryPath paths;
+  for (const auto& entry : filter_registry().entries()) {
+    const Filter filter = make_filter(entry.info.name);
+    for (const char* acuity : {"laine-aila", "uniform:step=0.7"}) {
+      const Metric metric(filter, make_acuity(acuity));
+      for (const size_t n : {size_t{1}, size_t{2}, size_t{4}, size_t{7}, kPairwiseLimit,
+                             kPairwiseLimit + 1, size_t{64}}) {
+        const Kernel k = random_kernel(rng, n);
+        const std::vector<double> reference = scalar_terms(metric, k);
+        paths.run([&] {
+          const std::vector<double> profile = metric.profile(k);
+          ASSERT_EQ(profile.size(), reference.size());
+          for (size_t a = 0; a < profile.size(); ++a)
+            ASSERT_EQ(profile[a], std::sqrt(reference[a]))
+                << entry.info.name << " " << acuity << " n " << n << " angle " << a;
+        });
+      }
+    }
+  }
+}
+
+// J at many points at once: the pieces' boundaries, the radius, past it,
+// both signs, zero, and NaN; lengths that leave a partial last block.
+TEST(MetricSimd, AbsMomentsAreFilterAbsMomentBitForBit) {
+  EveryPath paths;
+  for (const char* spec : {"box", "tent", "mitchell", "gaussian", "lanczos:lobes=3"}) {
+    const Filter f = make_filter(spec);
+    const Filter::AbsMomentTable t = f.abs_moment_table();
+    std::vector<double> p;
+    for (int k = 0; k <= t.segments; ++k)
+      for (const double d : {-1e-12, 0.0, 1e-12}) p.push_back(k * t.width + d);
+    for (int i = 0; i < 200; ++i) p.push_back(-3 * f.radius() + 6 * f.radius() * i / 199.0);
+    p.push_back(0.0);
+    p.push_back(-0.0);
+    p.push_back(std::numeric_limits<double>::quiet_NaN());
+    p.push_back(std::numeric_limits<double>::infinity());
+    paths.run([&] {
+      for (size_t length : {p.size(), p.size() - 1, size_t{3}}) {
+        std::vector<double> out(length);
+        abs_moments(t, p.data(), length, out.data());
+        for (size_t i = 0; i < length; ++i) {
+          const double expected = f.abs_moment(p[i]);
+          if (std::isnan(expected))
+            EXPECT_TRUE(std::isnan(out[i])) << spec << " p " << p[i];
+          else
+            EXPECT_EQ(out[i], expected) << spec << " p " << p[i];
+        }
+      }
+    });
+  }
+}
+
+TEST(MetricSimd, NamesThePathItRuns) {
+  const std::vector<int64_t> targets = simd_targets_here();
+  ASSERT_FALSE(targets.empty());
+  EXPECT_EQ(simd_target(), simd_target_name(targets.front()));
+}
+
+}  // namespace
+}  // namespace aapat
