@@ -1,11 +1,18 @@
 // Exact-DFT power spectrum of 4096 points at 512 x 512 frequencies (issue: a
-// few seconds on 2 cores), one thread and all threads; the discrepancies.
+// few seconds on 2 cores), one thread and all threads; the fast (NUFFT)
+// spectrum at 65,536 points x 1024^2 with its error against the exact sum
+// measured at 16,384 x 512^2; the discrepancies, each L2 kind alone.
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
+#include <string>
 
 #include "aapat/analyze/discrepancy.h"
+#include "aapat/analyze/fast_spectrum.h"
+#include "aapat/analyze/l2_discrepancy.h"
 #include "aapat/analyze/spectrum.h"
 #include "aapat/generate/point_generators.h"
 
@@ -26,6 +33,42 @@ BENCHMARK(Spectrum4096At512)
     ->Unit(benchmark::kSecond)
     ->Iterations(2)
     ->UseRealTime();
+
+// Time at 65,536 points x 1024^2; the largest error against the exact sum and
+// the reported bound at 16,384 x 512^2 as counters (measured once, untimed).
+void FastSpectrum65536At1024(benchmark::State& state) {
+  const auto points = generate_points("halton", 65536, 1);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(power_spectrum_fast(points, 1024).spectrum.power[7]);
+  const auto small = generate_points("halton", 16384, 1);
+  const FastSpectrum fast = power_spectrum_fast(small, 512);
+  const Spectrum2D exact = power_spectrum(small, 512);
+  double error = 0;
+  for (size_t i = 0; i < exact.power.size(); ++i)
+    error = std::max(error, std::abs(exact.power[i] - fast.spectrum.power[i]));
+  state.counters["error_16k_512"] = error;
+  state.counters["bound_16k_512"] = fast.error_bound;
+}
+BENCHMARK(FastSpectrum65536At1024)->Unit(benchmark::kSecond)->Iterations(3)->UseRealTime();
+
+void L2DiscrepancyKind(benchmark::State& state) {
+  const auto points = generate_points("halton", static_cast<int>(state.range(0)), 1);
+  const L2Kind kind = l2_kinds()[static_cast<size_t>(state.range(1))].kind;
+  for (auto _ : state) benchmark::DoNotOptimize(l2_discrepancy(points, kind));
+  state.SetLabel(std::string(l2_kind_info(kind).name));
+}
+BENCHMARK(L2DiscrepancyKind)
+    ->ArgsProduct({{65536, 1000000}, {0, 1, 2, 3, 4, 5}})
+    ->Unit(benchmark::kMillisecond);
+
+void StarDiscrepancyBounds(benchmark::State& state) {
+  const auto points = generate_points("halton", static_cast<int>(state.range(0)), 1);
+  StarDiscrepancy d;
+  for (auto _ : state) d = star_discrepancy(points);
+  state.counters["lower"] = d.lower;
+  state.counters["upper"] = d.upper;
+}
+BENCHMARK(StarDiscrepancyBounds)->Arg(4096)->Arg(16384)->Arg(65536)->Unit(benchmark::kMillisecond);
 
 void Discrepancies(benchmark::State& state) {
   const auto points = generate_points("halton", static_cast<int>(state.range(0)), 1);

@@ -104,7 +104,10 @@ measures asked).
 
   m.def(
       "spectrum",
-      [](const py::object& source, int n, int size, int realizations, uint64_t seed) {
+      [](const py::object& source, int n, int size, int realizations, uint64_t seed,
+         const std::string& method) {
+        if (method != "exact" && method != "fast")
+          throw Error(fmt::format("spectrum: method '{}': use 'exact' or 'fast'", method));
         PointSets sets;
         std::string spec;
         if (py::isinstance<py::str>(source))
@@ -115,7 +118,7 @@ measures asked).
         if (spec.empty() && realizations != 1 && static_cast<size_t>(realizations) != sets.size())
           throw Error("spectrum: the sets given are the realizations; leave realizations at 1");
         SpectrumSettings s{size, spec.empty() ? static_cast<int>(sets.size()) : realizations,
-                           spec.empty() ? 0 : static_cast<size_t>(n)};
+                           spec.empty() ? 0 : static_cast<size_t>(n), method == "fast"};
         SpectrumStudy st;
         {
           py::gil_scoped_release release;
@@ -128,18 +131,22 @@ measures asked).
         return py::dict(py::arg("power") = power, py::arg("radius") = from_vector(st.radial.radius),
                         py::arg("radial_power") = from_vector(st.radial.power),
                         py::arg("anisotropy_db") = from_vector(st.radial.anisotropy_db),
-                        py::arg("points") = st.points, py::arg("realizations") = s.realizations);
+                        py::arg("points") = st.points, py::arg("realizations") = s.realizations,
+                        py::arg("error_bound") = st.error_bound);
       },
       py::arg("source"), py::arg("n") = 1024, py::arg("size") = 256, py::arg("realizations") = 1,
-      py::arg("seed") = 1,
-      R"doc(The exact power spectrum P(f) = |sum exp(-2 pi i f.p)|^2 / N of points on the torus.
+      py::arg("seed") = 1, py::arg("method") = "exact",
+      R"doc(The power spectrum P(f) = |sum exp(-2 pi i f.p)|^2 / N of points on the torus.
 
     source: a generator spec (drawn `realizations` times with seeds seed,
         seed+1, ...), an (n, 2) array, or a list of arrays (averaged).
     n: points per realization of a generator. size: frequencies -size/2 ..
         size/2-1 per axis.
+    method: "exact" (the sum, O(N size^2)) or "fast" (a non-uniform FFT,
+        O(N + size^2 log size), within error_bound; even sizes).
 Returns a dict: power (size x size, row v from -size/2, column u), radius,
-radial_power, anisotropy_db (the radial average), points, realizations.)doc");
+radial_power, anisotropy_db (the radial average), points, realizations,
+error_bound (on |P - exact P| at every f != 0; 0 for the exact sum).)doc");
 
   m.def(
       "spectrum_1d",

@@ -100,3 +100,14 @@ def test_discrepancy_every_l2_kind():
     # One point at the centre: the centred discrepancy is sqrt((13/12)^2 - 1) = 5/12.
     centre = aapat.discrepancy(np.array([[0.5, 0.5]]), measures="l2-centered")
     assert centre["l2_centred"] == pytest.approx(5 / 12, rel=1e-15)
+
+
+def test_fast_spectrum_within_its_bound_of_the_exact_one():
+    points = aapat.generate("poisson", 2000, seed=3)
+    fast = aapat.spectrum(points, size=64, method="fast")
+    exact = aapat.spectrum(points, size=64)
+    assert exact["error_bound"] == 0
+    assert 0 < fast["error_bound"] < 1e-6
+    assert np.max(np.abs(fast["power"] - exact["power"])) <= fast["error_bound"]
+    with pytest.raises(aapat.Error, match="method 'nufft'"):
+        aapat.spectrum(points, size=64, method="nufft")

@@ -2,9 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <tbb/global_control.h>
+
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 
 #include "aapat/core/geometry.h"
@@ -74,6 +77,12 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
       "aapat"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "aapat " AAPAT_VERSION);
+  // Every parallel step of any command (oneTBB); results do not depend on it.
+  int threads = 0;
+  app.add_option("--threads", threads,
+                 "threads for every parallel step, before the command (0: all cores; the "
+                 "results are the same for any count)")
+      ->check(CLI::Range(0, 1024));
   std::vector<std::pair<CLI::App*, Action>> commands;
   auto add = [&](auto adder) {
     const size_t before = app.get_subcommands({}).size();
@@ -110,6 +119,8 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   struct ResetWarnings {
     ~ResetWarnings() { g_warnings = nullptr; }
   } reset;
+  std::optional<tbb::global_control> limit;
+  if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
   try {
     // A command writes all its files or, when it fails, none.
     OutputTransaction outputs;

@@ -367,6 +367,44 @@ TEST(CliPoints, DiscrepancyComputesOnlyTheMeasuresAsked) {
   EXPECT_NE(text.out.find("  L2-wrap-around discrepancy  0."), std::string::npos) << text.out;
 }
 
+// --threads before the command limits every parallel step; the output is the
+// same bytes on any count.
+TEST(CliPoints, GlobalThreadsGiveTheSameOutput) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"discrepancy", "halton", "--n", "5000", "--json"},
+        {"spectrum", "jittered", "--n", "256", "--size", "32", "--fast", "--json"}}) {
+    std::vector<std::string> one{"--threads", "1"};
+    one.insert(one.end(), args.begin(), args.end());
+    const CliRun a = run(one), b = run(args);
+    ASSERT_EQ(a.code, 0) << a.err;
+    EXPECT_EQ(a.out, b.out);
+  }
+  EXPECT_EQ(run({"--threads", "-1", "list"}).code, 2);
+}
+
+// --fast: the non-uniform FFT, its bound in the JSON, its radial profile the
+// exact one's within that bound; an odd size is refused by name.
+TEST(CliPoints, FastSpectrumMatchesTheExactOneWithinItsBound) {
+  const CliRun fast =
+      run({"spectrum", "jittered", "--n", "1024", "--size", "64", "--fast", "--json"});
+  const CliRun exact = run({"spectrum", "jittered", "--n", "1024", "--size", "64", "--json"});
+  ASSERT_EQ(fast.code, 0) << fast.err;
+  ASSERT_EQ(exact.code, 0) << exact.err;
+  const auto f = nlohmann::json::parse(fast.out), e = nlohmann::json::parse(exact.out);
+  EXPECT_EQ(f["method"], "fast");
+  EXPECT_EQ(e["method"], "exact");
+  const double bound = f["error_bound"];
+  EXPECT_GT(bound, 0);
+  EXPECT_LT(bound, 1e-6);
+  ASSERT_EQ(f["rows"].size(), e["rows"].size());
+  for (size_t i = 1; i < f["rows"].size(); ++i)
+    EXPECT_NEAR(double(f["rows"][i]["power"]), double(e["rows"][i]["power"]), bound) << i;
+  const CliRun odd = run({"spectrum", "jittered", "--size", "63", "--fast"});
+  EXPECT_EQ(odd.code, 1);
+  EXPECT_NE(odd.err.find("--size 63: the fast spectrum takes an even size"), std::string::npos)
+      << odd.err;
+}
+
 TEST(CliPoints, SpectrumWritesImageRadialProfileAndOneDimensionalPlot) {
   const std::string png = temp_path("s.png"), csv = temp_path("s.csv"), svg = temp_path("s1d.svg");
   CliRun r = run({"spectrum", "jittered", "--n", "64", "--size", "32", "--realizations", "2", "-o",

@@ -26,23 +26,37 @@ void check_l2_star_size(size_t points) {
         fmt::format("L2 discrepancy: {} points exceed the limit of {}", points, kMaxL2StarPoints));
 }
 
-double half_plane_area(double phi, double t) {
+HalfPlaneArea::HalfPlaneArea(double phi) {
   // {p : p . n <= t} for n = (c, s) cut with [0,1]^2, in closed form. With
   // c < 0, x -> 1 - x turns it into the case c >= 0 at t - c. Then the
   // corners project to 0 <= lo <= hi <= lo + hi (lo, hi the smaller and the
   // larger of |c|, s): a growing triangle, a band of constant width, and the
   // square less a shrinking triangle.
   const double c = std::cos(phi), s = std::sin(phi);
-  const double a = std::abs(c), b = std::abs(s);
-  if (c < 0) t -= c;
-  if (s < 0) t -= s;
-  const double lo = std::min(a, b), hi = std::max(a, b), total = a + b;
+  a_ = std::abs(c);
+  b_ = std::abs(s);
+  negative_c_ = c < 0;
+  negative_s_ = s < 0;
+  c_ = c;
+  s_ = s;
+  lo_ = std::min(a_, b_);
+  hi_ = std::max(a_, b_);
+  total_ = a_ + b_;
+}
+
+double HalfPlaneArea::operator()(double t) const {
+  if (negative_c_) t -= c_;
+  if (negative_s_) t -= s_;
   if (t <= 0) return 0;
-  if (t >= total) return 1;
-  if (lo < 1e-12) return std::min(1.0, t / hi);  // an edge parallel to a side
-  if (t <= lo) return t * t / (2 * a * b);
-  if (t <= hi) return (t - lo / 2) / hi;
-  return 1 - (total - t) * (total - t) / (2 * a * b);
+  if (t >= total_) return 1;
+  if (lo_ < 1e-12) return std::min(1.0, t / hi_);  // an edge parallel to a side
+  if (t <= lo_) return t * t / (2 * a_ * b_);
+  if (t <= hi_) return (t - lo_ / 2) / hi_;
+  return 1 - (total_ - t) * (total_ - t) / (2 * a_ * b_);
+}
+
+double half_plane_area(double phi, double t) {
+  return HalfPlaneArea(phi)(t);
 }
 
 void check_discrepancy_size(size_t points) {
@@ -70,6 +84,7 @@ EdgeDiscrepancy edge_discrepancy(const std::vector<Vec2>& p, int directions,
       // Normals over [0, pi): a half-plane and its complement deviate equally.
       const double phi = kPi * k / directions, c = std::cos(phi), sn = std::sin(phi);
       for (size_t i = 0; i < p.size(); ++i) s[i] = p[i].x * c + p[i].y * sn;
+      const HalfPlaneArea area_below(phi);
       radix_sort(s, scratch);
       // Between consecutive projections the count is fixed and the area
       // grows, so the extremes sit at the projections: a sweep over groups
@@ -78,7 +93,7 @@ EdgeDiscrepancy edge_discrepancy(const std::vector<Vec2>& p, int directions,
       for (size_t i = 0; i < s.size();) {
         size_t end = i + 1;
         while (end < s.size() && s[end] == s[i]) ++end;
-        const double area = half_plane_area(phi, s[i]);
+        const double area = area_below(s[i]);
         dev = std::max({dev, std::abs(area - i / n), std::abs(area - end / n)});
         i = end;
       }

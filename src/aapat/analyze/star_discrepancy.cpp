@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numeric>
 
+#include <tbb/parallel_for.h>
+
 namespace aapat {
 namespace {
 
@@ -142,26 +144,51 @@ StarDiscrepancy star_discrepancy(const std::vector<Vec2>& p, size_t exact_limit,
     by_column[cx].push_back(k);
   }
   const double n = static_cast<double>(p.size());
-  // The lattice's worst boxes each way: the starts of the climbs.
+  // The lattice's worst boxes each way: the starts of the climbs. The
+  // columns run in chunks in parallel, each starting from the counts of the
+  // points left of its first line; the chunks' results are merged in column
+  // order, so the starts are those of one pass in order, on any thread count.
   constexpr size_t kStarts = 16;
-  Largest<kStarts> excess, deficit;
-  std::vector<size_t> column(g + 1, 0);                // points left of the line, by y cell
-  std::vector<size_t> prev(g + 1, 0), next(g + 1, 0);  // and below each y line
-  for (size_t i = 0; i < g; ++i) {
-    for (size_t k : by_column[i + 1]) ++column[cy[k]];
+  struct Chunk {
+    double upper = 0;
+    Largest<kStarts> excess, deficit;
+  };
+  const size_t chunks = std::min<size_t>(g, 64);
+  std::vector<Chunk> results(chunks);
+  tbb::parallel_for(size_t{0}, chunks, [&](size_t chunk) {
+    const size_t first = chunk * g / chunks, last = (chunk + 1) * g / chunks;
+    Chunk& r = results[chunk];
+    std::vector<size_t> column(g + 1, 0);  // points left of the line, by y cell
+    for (size_t i = 1; i <= first; ++i)
+      for (size_t k : by_column[i]) ++column[cy[k]];
+    std::vector<size_t> prev(g + 1, 0), next(g + 1, 0);  // and below each y line
     size_t running = 0;
     for (size_t j = 0; j <= g; ++j) {
       running += column[j];
-      next[j] = running;  // points with x < g_{i+1}, y < g_j
+      prev[j] = running;  // points with x < g_first, y < g_j
     }
-    for (size_t j = 0; j < g; ++j) {
-      const double lo = prev[j] / n, hi = next[j + 1] / n;
-      d.upper = std::max({d.upper, hi - line(i) * line(j), line(i + 1) * line(j + 1) - lo});
-      const double area = line(i + 1) * line(j + 1);
-      excess.offer(hi - area, line(i + 1), line(j + 1));
-      deficit.offer(area - hi, line(i + 1), line(j + 1));
+    for (size_t i = first; i < last; ++i) {
+      for (size_t k : by_column[i + 1]) ++column[cy[k]];
+      running = 0;
+      for (size_t j = 0; j <= g; ++j) {
+        running += column[j];
+        next[j] = running;  // points with x < g_{i+1}, y < g_j
+      }
+      for (size_t j = 0; j < g; ++j) {
+        const double lo = prev[j] / n, hi = next[j + 1] / n;
+        r.upper = std::max({r.upper, hi - line(i) * line(j), line(i + 1) * line(j + 1) - lo});
+        const double area = line(i + 1) * line(j + 1);
+        r.excess.offer(hi - area, line(i + 1), line(j + 1));
+        r.deficit.offer(area - hi, line(i + 1), line(j + 1));
+      }
+      std::swap(prev, next);
     }
-    std::swap(prev, next);
+  });
+  Largest<kStarts> excess, deficit;
+  for (const Chunk& r : results) {
+    d.upper = std::max(d.upper, r.upper);
+    for (const Corner& c : r.excess.corners()) excess.offer(c.value, c.a, c.b);
+    for (const Corner& c : r.deficit.corners()) deficit.offer(c.value, c.a, c.b);
   }
   const SortedPoints sorted(p);
   for (const Corner& c : excess.corners())

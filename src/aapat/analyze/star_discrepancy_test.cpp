@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <random>
@@ -76,6 +77,19 @@ TEST(StarDiscrepancy, TheClimbReachesTheExactValueOnTheseSets) {
     EXPECT_LE(exact.upper, bounds.upper) << generator;
     EXPECT_LT(bounds.upper - bounds.lower, 2.0 / 4096 + 1e-12) << generator;
   }
+}
+
+// The lattice runs in parallel chunks of columns: the same bounds on one thread.
+TEST(StarDiscrepancy, TheSameBoundsOnAnyNumberOfThreads) {
+  const auto p = generate_points("halton", 20000, 1);
+  StarDiscrepancy one;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = star_discrepancy(p, 0, 2048);
+  }
+  const StarDiscrepancy all = star_discrepancy(p, 0, 2048);
+  EXPECT_EQ(one.lower, all.lower);
+  EXPECT_EQ(one.upper, all.upper);
 }
 
 // Any set: the bounds bracket the exact value.

@@ -84,13 +84,23 @@ SpectrumStudy spectrum_study(const PointSource& source, const SpectrumSettings& 
     throw ParameterError("size", fmt::format(" {}: expected 8 to 2048 frequencies", s.size));
   if (!(s.realizations >= 1 && s.realizations <= 100000))
     throw ParameterError("realizations", fmt::format(" {}: expected 1 to 100000", s.realizations));
-  if (s.expected_points > 0) check_spectrum_work(s.expected_points, s.size, s.realizations);
+  if (s.fast && s.size % 2 != 0)
+    throw ParameterError("size", fmt::format(" {}: the fast spectrum takes an even size", s.size));
+  if (s.expected_points > 0 && !s.fast)
+    check_spectrum_work(s.expected_points, s.size, s.realizations);
   SpectrumStudy out;
   for (int r = 0; r < s.realizations; ++r) {
     const auto pts = source(r);
     out.points = pts.size();
-    check_spectrum_work(out.points, s.size, 1);
-    accumulate(out.mean, power_spectrum(pts, s.size), 1.0 / s.realizations);
+    if (s.fast) {
+      // The mean's error is at most the largest realization's bound.
+      const FastSpectrum f = power_spectrum_fast(pts, s.size);
+      accumulate(out.mean, f.spectrum, 1.0 / s.realizations);
+      out.error_bound = std::max(out.error_bound, f.error_bound);
+    } else {
+      check_spectrum_work(out.points, s.size, 1);
+      accumulate(out.mean, power_spectrum(pts, s.size), 1.0 / s.realizations);
+    }
     if (progress) progress(r + 1, s.realizations, "");
   }
   out.radial = radial_average(out.mean);

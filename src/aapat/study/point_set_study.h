@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "aapat/analyze/discrepancy.h"
+#include "aapat/analyze/fast_spectrum.h"
 #include "aapat/analyze/l2_discrepancy.h"
 #include "aapat/analyze/spectrum.h"
 #include "aapat/study/progress.h"
@@ -51,9 +52,13 @@ struct SpectrumSettings {
   int size = 256;              // frequencies -size/2 .. size/2-1 per axis
   int realizations = 1;        // point sets averaged
   size_t expected_points = 0;  // when known, the work is checked before any point is drawn
+  // The non-uniform FFT (analyze/fast_spectrum.h) instead of the exact sum:
+  // O(N + M^2 log M), within a stated error bound, any N (even sizes).
+  bool fast = false;
 };
 struct SpectrumStudy {
   Spectrum2D mean;
+  double error_bound = 0;  // fast: on |P_fast - P| at every frequency but 0; exact: 0
   RadialProfile radial;
   size_t points = 0;                       // of the last realization
   double tail_radius = 0, tail_power = 0;  // mean power from the middle ring outwards
