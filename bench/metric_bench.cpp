@@ -6,6 +6,7 @@
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/metric.h"
+#include "aapat/core/metric_simd.h"
 
 namespace aapat {
 namespace {
@@ -37,6 +38,27 @@ BENCHMARK_CAPTURE(E2Evaluation, mitchell_laine_aila_4_angles, "mitchell", "laine
     ->Arg(16)
     ->Arg(64);
 BENCHMARK_CAPTURE(E2Evaluation, lanczos3_180_angles, "lanczos:lobes=3", "uniform:step=1")->Arg(4);
+
+// 4 samples at 180 angles on each SIMD path this processor runs (pinned in
+// turn; the label names it): what a machine without AVX-512 or AVX2 gets.
+void E2EvaluationPerPath(benchmark::State& state) {
+  const std::vector<int64_t> paths = simd_targets_here();
+  const size_t path = static_cast<size_t>(state.range(0));
+  if (path >= paths.size()) {
+    state.SkipWithError("no such path here");
+    for (auto _ : state) {
+    }
+    return;
+  }
+  pin_simd_target(paths[path]);
+  const Metric metric(make_filter("mitchell"), make_acuity("uniform:step=1"));
+  const Kernel k = jittered_kernel(4, 42);
+  for (auto _ : state) benchmark::DoNotOptimize(metric.kernel_error(k).e2);
+  pin_simd_target(0);
+  state.SetItemsProcessed(state.iterations());
+  state.SetLabel(simd_target_name(paths[path]));
+}
+BENCHMARK(E2EvaluationPerPath)->DenseRange(0, 5);
 
 void FilterTabulation(benchmark::State& state, const char* filter) {
   for (auto _ : state) benchmark::DoNotOptimize(make_filter(filter).half_mean_distance());

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <type_traits>
 
 #include "aapat/core/metric.h"
 #include "aapat/core/metric_simd.h"
@@ -21,19 +22,28 @@ using D = hn::ScalableTag<double>;
 using V = hn::Vec<D>;
 constexpr size_t kMaxLanes = HWY_LANES(double);
 
-// J's pieces as the vector loops read them. With no more pieces than lanes
-// (box, tent, the cubics), coefficient i of every piece fills one vector and
-// a lane permutation picks each lane's piece; otherwise each coefficient is
-// gathered from Filter's table.
+// J's pieces as the vector loops read them. With at most kSelectPieces
+// pieces (box and tent 1, the cubics 2) each lane's coefficient is selected
+// by comparing its piece number, with no conversion to integers (slow before
+// AVX-512); with no more pieces than lanes, coefficient i of every piece
+// fills one vector and a lane permutation picks each lane's piece; otherwise
+// each coefficient is gathered from Filter's table.
 constexpr int kMaxCoefs = Filter::kInterpolatedDegree + 3;
+constexpr int kSelectPieces = 4;
 struct Pieces {
   const Filter::AbsMomentTable& j;
-  bool in_lanes = false;
-  HWY_ALIGN double coef[kMaxCoefs * kMaxLanes];
+  bool by_select = false, in_lanes = false;
+  HWY_ALIGN double coef[kMaxCoefs * std::max<size_t>(kMaxLanes, kSelectPieces)];
 
   Pieces(D d, const Filter::AbsMomentTable& table) : j(table) {
     const size_t lanes = hn::Lanes(d);
-    in_lanes = static_cast<size_t>(j.segments) <= lanes && j.coefs <= kMaxCoefs;
+    by_select = j.segments <= kSelectPieces && j.coefs <= kMaxCoefs;
+    in_lanes = !by_select && static_cast<size_t>(j.segments) <= lanes && j.coefs <= kMaxCoefs;
+    if (by_select) {
+      // coef[i * kSelectPieces + k]: scalars, broadcast where they are used.
+      for (int i = 0; i < j.coefs; ++i)
+        for (int k = 0; k < j.segments; ++k) coef[i * kSelectPieces + k] = j.coef[k * j.coefs + i];
+    }
     if (!in_lanes) return;
     std::fill(std::begin(coef), std::end(coef), 0.0);
     for (int i = 0; i < j.coefs; ++i)
@@ -41,48 +51,106 @@ struct Pieces {
   }
 };
 
-// Filter::abs_moment, lane for lane: the same products, sums and Horner steps.
-// Lanes past the radius (and NaN) take |p| and read piece 0, never an index
-// computed from them.
+// Where |p| falls in J's table, lane for lane as Filter::abs_moment computes
+// it: the piece k and the coordinate t in it. Lanes past the radius (and
+// NaN) take |p| and read piece 0, never an index computed from them.
+struct Located {
+  V ap, k, t;
+  hn::Mask<D> inside;
+};
+HWY_INLINE Located Locate(D d, const Filter::AbsMomentTable& j, V p) {
+  Located l;
+  l.ap = hn::Abs(p);
+  l.inside = hn::Lt(l.ap, hn::Set(d, j.radius));
+  l.k = hn::IfThenElseZero(l.inside, hn::Min(hn::Floor(hn::Mul(l.ap, hn::Set(d, j.inv_width))),
+                                             hn::Set(d, static_cast<double>(j.segments - 1))));
+  l.t = hn::Sub(
+      hn::Mul(hn::Sub(l.ap, hn::Mul(l.k, hn::Set(d, j.width))), hn::Set(d, 2.0 * j.inv_width)),
+      hn::Set(d, 1.0));
+  return l;
+}
+
+// Filter::abs_moment, lane for lane: the same products, sums and Horner
+// steps, for any table (the counts read at run time).
 HWY_INLINE V AbsMoment(D d, const Pieces& pieces, V p) {
   const Filter::AbsMomentTable& j = pieces.j;
   const hn::RebindToSigned<D> di;
-  const V ap = hn::Abs(p);
-  const auto inside = hn::Lt(ap, hn::Set(d, j.radius));
-  V k = hn::Min(hn::Floor(hn::Mul(ap, hn::Set(d, j.inv_width))),
-                hn::Set(d, static_cast<double>(j.segments - 1)));
-  k = hn::IfThenElseZero(inside, k);
-  const V t =
-      hn::Sub(hn::Mul(hn::Sub(ap, hn::Mul(k, hn::Set(d, j.width))), hn::Set(d, 2.0 * j.inv_width)),
-              hn::Set(d, 1.0));
+  const Located l = Locate(d, j, p);
   V r;
-  if (pieces.in_lanes) {
+  if (pieces.by_select) {
+    // Lane by lane the coefficient of piece k: piece 0's, replaced by piece
+    // s's where k >= s.
+    hn::Mask<D> at_least[kSelectPieces];
+    for (int s = 1; s < j.segments; ++s) at_least[s] = hn::Ge(l.k, hn::Set(d, double(s)));
+    auto coef = [&](int i) {
+      const double* c = pieces.coef + i * kSelectPieces;
+      V v = hn::Set(d, c[0]);
+      for (int s = 1; s < j.segments; ++s) v = hn::IfThenElse(at_least[s], hn::Set(d, c[s]), v);
+      return v;
+    };
+    r = coef(j.coefs - 1);
+    for (int i = j.coefs - 2; i >= 0; --i) r = hn::Add(hn::Mul(r, l.t), coef(i));
+  } else if (pieces.in_lanes) {
     const size_t lanes = hn::Lanes(d);
-    const auto piece = hn::IndicesFromVec(d, hn::ConvertTo(di, k));
+    const auto piece = hn::IndicesFromVec(d, hn::ConvertTo(di, l.k));
     auto coef = [&](int i) {
       return hn::TableLookupLanes(hn::Load(d, pieces.coef + i * lanes), piece);
     };
     r = coef(j.coefs - 1);
-    for (int i = j.coefs - 2; i >= 0; --i) r = hn::Add(hn::Mul(r, t), coef(i));
+    for (int i = j.coefs - 2; i >= 0; --i) r = hn::Add(hn::Mul(r, l.t), coef(i));
   } else {
-    const auto index = hn::ConvertTo(di, hn::Mul(k, hn::Set(d, static_cast<double>(j.coefs))));
+    const auto index = hn::ConvertTo(di, hn::Mul(l.k, hn::Set(d, static_cast<double>(j.coefs))));
     r = hn::GatherIndex(d, j.coef + (j.coefs - 1), index);
     for (int i = j.coefs - 2; i >= 0; --i)
-      r = hn::Add(hn::Mul(r, t), hn::GatherIndex(d, j.coef + i, index));
+      r = hn::Add(hn::Mul(r, l.t), hn::GatherIndex(d, j.coef + i, index));
   }
-  return hn::IfThenElse(inside, r, ap);
+  return hn::IfThenElse(l.inside, r, l.ap);
 }
 
-// One block of lanes() angles: e1_squared's pair form, each lane one angle.
-// `p` has room for the n projections of one block (n vectors of lanes).
-HWY_INLINE V PairwiseBlock(D d, const Pieces& j, V hmd, V cos, V sin, V weight_sq, const double* x,
-                           const double* y, const double* w, size_t n, double* HWY_RESTRICT p) {
+// The same for the piecewise cubics (kCoefs = 6; one piece for box and
+// tent, two for Mitchell-Netravali) with the counts known when compiled: the
+// Horner steps unrolled, the piece selected by one comparison.
+template <int kCoefs, int kSegments>
+HWY_INLINE V AbsMomentOf(D d, const Pieces& pieces, V p) {
+  static_assert(kSegments == 1 || kSegments == 2);
+  const Located l = Locate(d, pieces.j, p);
+  const hn::Mask<D> second = hn::Ge(l.k, hn::Set(d, 1.0));
+  auto coef = [&](int i) {
+    const double* c = pieces.coef + i * kSelectPieces;
+    if constexpr (kSegments == 1) return hn::Set(d, c[0]);
+    return hn::IfThenElse(second, hn::Set(d, c[1]), hn::Set(d, c[0]));
+  };
+  V r = coef(kCoefs - 1);
+  for (int i = kCoefs - 2; i >= 0; --i) r = hn::Add(hn::Mul(r, l.t), coef(i));
+  return hn::IfThenElse(l.inside, r, l.ap);
+}
+
+// Calls run(abs_moment) with the fastest J for the table: the unrolled
+// cubic with one or two pieces, or the general one.
+template <class Run>
+void WithAbsMoment(D d, const Pieces& pieces, Run run) {
+  const Filter::AbsMomentTable& j = pieces.j;
+  if (pieces.by_select && j.coefs == 6 && j.segments == 2)
+    run([&](V p) { return AbsMomentOf<6, 2>(d, pieces, p); });
+  else if (pieces.by_select && j.coefs == 6 && j.segments == 1)
+    run([&](V p) { return AbsMomentOf<6, 1>(d, pieces, p); });
+  else
+    run([&](V p) { return AbsMoment(d, pieces, p); });
+}
+
+// One block of lanes() angles: e1_squared's pair form, each lane one angle,
+// J by `abs_moment(p)`. `p` has room for the n projections of one block (n
+// vectors of lanes).
+template <class AbsMomentOfP>
+HWY_INLINE V PairwiseBlock(D d, AbsMomentOfP abs_moment, V hmd, V cos, V sin, V weight_sq,
+                           const double* x, const double* y, const double* w, size_t n,
+                           double* HWY_RESTRICT p) {
   const size_t lanes = hn::Lanes(d);
   V moment = hn::Zero(d);
   for (size_t s = 0; s < n; ++s) {
     const V ps = hn::Sub(hn::Mul(cos, hn::Set(d, y[s])), hn::Mul(sin, hn::Set(d, x[s])));
     hn::Store(ps, d, p + s * lanes);
-    moment = hn::Add(moment, hn::Mul(hn::Set(d, w[s]), AbsMoment(d, j, ps)));
+    moment = hn::Add(moment, hn::Mul(hn::Set(d, w[s]), abs_moment(ps)));
   }
   V spread = hn::Zero(d);
   for (size_t s = 0; s < n; ++s) {
@@ -99,20 +167,20 @@ HWY_INLINE V PairwiseBlock(D d, const Pieces& j, V hmd, V cos, V sin, V weight_s
   return hn::Mul(weight_sq, hn::IfThenElse(hn::Lt(zero, e1), e1, zero));
 }
 
-void PairwiseWeightedE1Squared(const Filter::AbsMomentTable& j, double half_mean_distance,
-                               const AngleTable& angles, const double* x, const double* y,
-                               const double* w, size_t n, double* values) {
-  const D d;
+// Every block of angles with J by `abs_moment`.
+template <class AbsMomentOfP>
+void PairwiseBlocks(D d, AbsMomentOfP abs_moment, double half_mean_distance,
+                    const AngleTable& angles, const double* x, const double* y, const double* w,
+                    size_t n, double* values) {
   const size_t lanes = hn::Lanes(d), count = angles.cos.size();
   const V hmd = hn::Set(d, half_mean_distance);
-  const Pieces pieces(d, j);
   HWY_ALIGN double p[kPairwiseLimit * kMaxLanes];
   size_t a = 0;
   for (; a + lanes <= count; a += lanes)
-    hn::StoreU(
-        PairwiseBlock(d, pieces, hmd, hn::LoadU(d, &angles.cos[a]), hn::LoadU(d, &angles.sin[a]),
-                      hn::LoadU(d, &angles.weight_sq[a]), x, y, w, n, p),
-        d, values + a);
+    hn::StoreU(PairwiseBlock(d, abs_moment, hmd, hn::LoadU(d, &angles.cos[a]),
+                             hn::LoadU(d, &angles.sin[a]), hn::LoadU(d, &angles.weight_sq[a]), x, y,
+                             w, n, p),
+               d, values + a);
   if (a == count) return;
   // The last, partial block through buffers padded with zero angles.
   HWY_ALIGN double c[kMaxLanes] = {}, s[kMaxLanes] = {}, ws[kMaxLanes] = {}, out[kMaxLanes];
@@ -120,24 +188,39 @@ void PairwiseWeightedE1Squared(const Filter::AbsMomentTable& j, double half_mean
   std::memcpy(c, &angles.cos[a], rest * sizeof(double));
   std::memcpy(s, &angles.sin[a], rest * sizeof(double));
   std::memcpy(ws, &angles.weight_sq[a], rest * sizeof(double));
-  hn::Store(
-      PairwiseBlock(d, pieces, hmd, hn::Load(d, c), hn::Load(d, s), hn::Load(d, ws), x, y, w, n, p),
-      d, out);
+  hn::Store(PairwiseBlock(d, abs_moment, hmd, hn::Load(d, c), hn::Load(d, s), hn::Load(d, ws), x, y,
+                          w, n, p),
+            d, out);
   std::memcpy(values + a, out, rest * sizeof(double));
+}
+
+void PairwiseWeightedE1Squared(const Filter::AbsMomentTable& j, double half_mean_distance,
+                               const AngleTable& angles, const double* x, const double* y,
+                               const double* w, size_t n, double* values) {
+  const D d;
+  const Pieces pieces(d, j);
+  WithAbsMoment(d, pieces, [&](auto abs_moment) {
+    PairwiseBlocks(d, abs_moment, half_mean_distance, angles, x, y, w, n, values);
+  });
+}
+
+// J of n values by `abs_moment`.
+template <class AbsMomentOfP>
+void AbsMomentBlocks(D d, AbsMomentOfP abs_moment, const double* p, size_t n, double* out) {
+  const size_t lanes = hn::Lanes(d);
+  size_t i = 0;
+  for (; i + lanes <= n; i += lanes) hn::StoreU(abs_moment(hn::LoadU(d, p + i)), d, out + i);
+  if (i == n) return;
+  HWY_ALIGN double in[kMaxLanes] = {}, result[kMaxLanes];
+  std::memcpy(in, p + i, (n - i) * sizeof(double));
+  hn::Store(abs_moment(hn::Load(d, in)), d, result);
+  std::memcpy(out + i, result, (n - i) * sizeof(double));
 }
 
 void AbsMoments(const Filter::AbsMomentTable& j, const double* p, size_t n, double* out) {
   const D d;
-  const size_t lanes = hn::Lanes(d);
   const Pieces pieces(d, j);
-  size_t i = 0;
-  for (; i + lanes <= n; i += lanes)
-    hn::StoreU(AbsMoment(d, pieces, hn::LoadU(d, p + i)), d, out + i);
-  if (i == n) return;
-  HWY_ALIGN double in[kMaxLanes] = {}, result[kMaxLanes];
-  std::memcpy(in, p + i, (n - i) * sizeof(double));
-  hn::Store(AbsMoment(d, pieces, hn::Load(d, in)), d, result);
-  std::memcpy(out + i, result, (n - i) * sizeof(double));
+  WithAbsMoment(d, pieces, [&](auto abs_moment) { AbsMomentBlocks(d, abs_moment, p, n, out); });
 }
 
 }  // namespace HWY_NAMESPACE
