@@ -8,6 +8,7 @@
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/render/scene.h"
+#include "aapat/render/texture_filter.h"
 #include "bindings.h"
 
 namespace aapat::python {
@@ -167,11 +168,14 @@ pattern file (.json, or Laine's x y weight text .xyw).)doc");
         d["generators"] = infos(generator_registry());
         d["acuity_tables"] = infos(acuity_registry());
         d["scenes"] = infos(scene_registry());
+        d["textures"] = infos(texture_registry());
+        d["texture_filters"] = infos(texture_filter_registry());
         d["api_profiles"] = infos(profile_registry());
         return d;
       },
       R"doc(Every registry of specs, as `aapat list` prints them: a dict from kind
-("patterns", "filters", "generators", "acuity_tables", "scenes", "api_profiles")
+("patterns", "filters", "generators", "acuity_tables", "scenes", "textures",
+"texture_filters", "api_profiles")
 to a list of {name, usage, summary, source, parameters}.)doc");
 }
 

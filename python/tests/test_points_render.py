@@ -111,3 +111,20 @@ def test_fast_spectrum_within_its_bound_of_the_exact_one():
     assert np.max(np.abs(fast["power"] - exact["power"])) <= fast["error_bound"]
     with pytest.raises(aapat.Error, match="method 'nufft'"):
         aapat.spectrum(points, size=64, method="nufft")
+
+
+def test_render_textured_multisampled_and_adaptive():
+    flat = aapat.render("checkerboard", pattern="rgss", size=(32, 32))
+    textured = aapat.render("checkerboard", pattern="rgss", size=(32, 32), texture="checker")
+    # The 8 x 8 checker repeating every 8 squares is the checkerboard itself.
+    assert np.array_equal(flat["image"], textured["image"])
+    multi = aapat.render("checkerboard", pattern="rgss", size=(32, 32), texture="checker",
+                         options={"mode": "multisample", "texture-filter": "trilinear"})
+    assert 0.5 < multi["lookups_per_pixel"] <= 1
+    assert not np.array_equal(multi["image"], flat["image"])
+    refined = aapat.render("spiral", generator="jittered", samples=4, filter="box", size=(32, 32),
+                           options={"adaptive": "contrast", "threshold": 0.1})
+    assert refined["refinement_map"].shape == (32, 32)
+    assert refined["evaluations"] == refined["refinement_map"].sum()
+    with pytest.raises(aapat.Error, match="unknown texture filter .cubic."):
+        aapat.render("checkerboard", pattern="rgss", options={"texture-filter": "cubic"})

@@ -13,6 +13,7 @@
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/json_report.h"
 #include "aapat/render/scene.h"
+#include "aapat/render/texture_filter.h"
 #include "cli/commands.h"
 
 namespace aapat {
@@ -32,16 +33,20 @@ Section section(std::string key, std::string heading, const R& registry) {
 }
 
 std::vector<Section> sections() {
-  return {section("patterns", "patterns", pattern_registry()),
-          section("filters", "filters", filter_registry()),
-          section("generators", "point generators (aapat generate, spectrum, discrepancy)",
-                  generator_registry()),
-          section("acuity_tables", "acuity tables (or a CSV file of 'edge_angle_deg,weight' rows)",
-                  acuity_registry()),
-          section("scenes", "scenes (aapat render; or a .json scene file, docs/renderer.md)",
-                  scene_registry()),
-          section("api_profiles", "API profiles (aapat export --api, optimize --api)",
-                  profile_registry())};
+  return {
+      section("patterns", "patterns", pattern_registry()),
+      section("filters", "filters", filter_registry()),
+      section("generators", "point generators (aapat generate, spectrum, discrepancy)",
+              generator_registry()),
+      section("acuity_tables", "acuity tables (or a CSV file of 'edge_angle_deg,weight' rows)",
+              acuity_registry()),
+      section("scenes", "scenes (aapat render; or a .json scene file, docs/renderer.md)",
+              scene_registry()),
+      section("textures", "textures (aapat render --texture; or a .png file)", texture_registry()),
+      section("texture_filters", "texture filters (aapat render --texture-filter)",
+              texture_filter_registry()),
+      section("api_profiles", "API profiles (aapat export --api, optimize --api)",
+              profile_registry())};
 }
 
 JsonObject info_json(const SpecInfo& info) {

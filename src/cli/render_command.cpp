@@ -4,7 +4,9 @@
 // With --grid, rows of samplings x columns of filters in one contact sheet.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <memory>
+#include <optional>
 #include <ostream>
 
 #include "aapat/core/filter_catalog.h"
@@ -15,6 +17,7 @@
 #include "aapat/io/line_plot.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/png_image.h"
+#include "aapat/io/refinement_map.h"
 #include "aapat/io/scene_json.h"
 #include "aapat/study/render_study.h"
 #include "cli/commands.h"
@@ -27,6 +30,11 @@ namespace {
 struct Options {
   std::string scene, pattern, generator, filter, size = "256x256", output;
   std::string error_png, histogram, histogram_svg, translate, table, reference_png;
+  std::string texture, refinement_map;
+  // Set on `rendering` through RenderOptions::set, which checks each value.
+  std::string mode, shading_point, texture_filter, lod, mipmap, adaptive;
+  std::optional<double> threshold;
+  std::optional<int> max_depth, max_samples, per_square;
   ReferenceOptions reference;
   double rotate = 0, scale = 1;
   int samples = 16, zoom = 1;
@@ -51,7 +59,52 @@ Scene make_view_scene(const Options& o, int w, int h) {
     if (parts.size() != 2) throw Error(fmt::format("--translate: '{}' is not X,Y", o.translate));
     translation = {parse_number(parts[0], "--translate"), parse_number(parts[1], "--translate")};
   }
-  return view_scene(resolve_scene(o.scene, w, h), w, h, o.rotate, o.scale, translation);
+  return view_scene(resolve_scene(o.scene, w, h, o.texture), w, h, o.rotate, o.scale, translation);
+}
+
+// The shading and refinement options given on the command line.
+RenderOptions render_options(const Options& o) {
+  RenderOptions r;
+  const std::pair<const char*, const std::string*> texts[] = {{"mode", &o.mode},
+                                                              {"shading-point", &o.shading_point},
+                                                              {"texture-filter", &o.texture_filter},
+                                                              {"lod", &o.lod},
+                                                              {"mipmap", &o.mipmap},
+                                                              {"adaptive", &o.adaptive}};
+  for (const auto& [key, value] : texts)
+    if (!value->empty()) r.set(key, *value, "--" + std::string(key));
+  if (o.threshold) r.threshold = *o.threshold;
+  if (o.max_depth) r.max_depth = *o.max_depth;
+  if (o.max_samples) r.max_samples = *o.max_samples;
+  if (o.per_square) r.per_square = *o.per_square;
+  const bool refinement =
+      o.threshold || o.max_depth || o.max_samples || o.per_square || !o.refinement_map.empty();
+  if (refinement && r.adaptive.empty())
+    throw Error(
+        "--threshold, --max-depth, --max-samples, --per-square and --refinement-map "
+        "are for --adaptive CRITERION");
+  return r;
+}
+
+// The shading and lookups of a rendering, for the report.
+JsonObject shading_json(const Sampling& s, const RenderStats& stats) {
+  return {{"mode", s.shading.mode == ShadingMode::supersample ? "supersample" : "multisample"},
+          {"shading_point", s.shading.point == ShadingPoint::centre ? "centre" : "centroid"},
+          {"texture_filter", s.shading.texture.name},
+          {"lookups_per_pixel", stats.lookups_per_pixel},
+          {"shadings_per_pixel", stats.shadings_per_pixel}};
+}
+
+JsonObject adaptive_json(const AdaptiveSettings& a, const AdaptiveImage& r) {
+  static const char* kNames[] = {"contrast", "variance", "neighbours", "primitive"};
+  return {{"criterion", kNames[static_cast<int>(a.criterion)]},
+          {"threshold", a.threshold},
+          {"max_depth", a.max_depth},
+          {"max_samples", a.max_samples},
+          {"per_square", a.per_square},
+          {"average_samples", r.average_samples},
+          {"refined_fraction", r.refined_fraction},
+          {"evaluations", r.evaluations}};
 }
 
 std::string ssim_text(const RenderFigures& f) {
@@ -76,28 +129,58 @@ void run_grid(const Options& o, std::ostream& out) {
     cells = render_grid(scene, s, o.reference.source(), bar.callback());
   }
   ContactSheet sheet{fmt::format("{} {}x{}", o.scene, w, h), o.rows, o.columns, {}, o.zoom};
-  std::string table = "| sampling | filter | samples/pixel | RMSE | max dev. | SSIM |\n";
-  table += "| --- | --- | ---: | ---: | ---: | ---: |\n";
+  // Texture lookups and refinement get columns of their own when a cell has them.
+  bool lookups = false, refined = false;
+  for (const RenderGridCell& c : cells) {
+    lookups = lookups || c.stats.lookups_per_pixel > 0;
+    refined = refined || c.adaptive.has_value();
+  }
+  std::string table = "| sampling | filter | samples/pixel |";
+  std::string rule = "| --- | --- | ---: |";
+  if (lookups) table += " lookups/pixel |", rule += " ---: |";
+  if (refined) table += " refined |", rule += " ---: |";
+  table += " RMSE | max dev. | SSIM |\n" + rule + " ---: | ---: | ---: |\n";
   JsonObject rows = JsonObject::array();
   for (const RenderGridCell& c : cells) {
     const ImageError& e = c.figures.error;
-    sheet.cells.push_back(
-        {w, h, grey_pixels(c.image), fmt::format("RMSE {:.2f} MAX {}", e.rmse, e.max_deviation)});
-    table += fmt::format("| {} | {} | {} | {:.3f} | {} | {} |\n", c.row, c.column,
-                         format_cost(c.stats.samples_per_pixel), e.rmse, e.max_deviation,
-                         ssim_text(c.figures));
+    if (c.show_map) {
+      const int most = c.adaptive->samples.empty() ? 1
+                                                   : *std::max_element(c.adaptive->samples.begin(),
+                                                                       c.adaptive->samples.end());
+      sheet.cells.push_back(
+          {w, h, refinement_map_pixels(c.adaptive->samples, w, h, 1, most),
+           fmt::format("MAP 1-{} AVG {:.2f}", most, c.adaptive->average_samples)});
+    } else {
+      sheet.cells.push_back(
+          {w, h, grey_pixels(c.image), fmt::format("RMSE {:.2f} MAX {}", e.rmse, e.max_deviation)});
+    }
+    const std::string spp = c.adaptive ? fmt::format("{:.2f}", c.stats.samples_per_pixel)
+                                       : format_cost(c.stats.samples_per_pixel);
+    table += fmt::format("| {} | {} | {} |", c.row, c.column, spp);
+    if (lookups) table += fmt::format(" {:.2f} |", c.stats.lookups_per_pixel);
+    if (refined)
+      table += c.adaptive ? fmt::format(" {:.1f}% |", 100 * c.adaptive->refined_fraction) : " - |";
+    table += fmt::format(" {:.3f} | {} | {} |\n", e.rmse, e.max_deviation, ssim_text(c.figures));
     JsonObject cell = c.sampling.pattern ? JsonObject{{"pattern", c.row}}
                                          : JsonObject{{"generator", c.sampling.generator},
                                                       {"samples", c.sampling.samples}};
     cell.update(JsonObject{{"filter", c.column}, {"samples_per_pixel", c.stats.samples_per_pixel}});
+    cell.update(shading_json(c.sampling, c.stats));
+    if (c.adaptive) {
+      RenderOptions options;
+      split_options(c.row, options);
+      split_options(c.column, options);
+      cell["adaptive"] = adaptive_json(*options.adaptive_settings(c.sampling), *c.adaptive);
+    }
     cell.update(figures_json(c.figures));
     rows.push_back(std::move(cell));
   }
   const GreyRaster r = compose_sheet(sheet);
   write_png_gray(o.output, r.width, r.height, r.pixels);
   const std::string heading =
-      fmt::format("{} {}x{}: against {} jittered samples per pixel with {}\n\n", o.scene, w, h,
-                  s.reference.samples, make_filter(s.reference.filter).name());
+      fmt::format("{}{} {}x{}: against {} jittered samples per pixel with {}\n\n", o.scene,
+                  o.texture.empty() ? "" : " with texture " + o.texture, w, h, s.reference.samples,
+                  make_filter(s.reference.filter).name());
   if (!o.table.empty()) write_output(o.table, heading + table, out);
   if (!o.json) {
     out << heading + table;
@@ -105,6 +188,7 @@ void run_grid(const Options& o, std::ostream& out) {
   }
   JsonObject doc = json_report("render");
   doc.update(JsonObject{{"scene", o.scene},
+                        {"texture", o.texture.empty() ? JsonObject() : JsonObject(o.texture)},
                         {"width", w},
                         {"height", h},
                         {"reference", describe_reference(s.reference)},
@@ -156,6 +240,9 @@ RenderSettings single_settings(const Options& o, int w, int h) {
   s.sampling.samples = o.samples;
   s.sampling.seed = o.seed;
   if (!o.filter.empty()) s.filter = make_filter(o.filter);
+  const RenderOptions options = render_options(o);
+  s.sampling.shading = options.shading();
+  s.adaptive = options.adaptive_settings(s.sampling);
   s.measure = o.json || !o.error_png.empty() || !o.histogram.empty() || !o.histogram_svg.empty() ||
               !o.reference_png.empty();
   s.reference = reference_settings(o);
@@ -164,24 +251,43 @@ RenderSettings single_settings(const Options& o, int w, int h) {
 
 void run_single(const Options& o, std::ostream& out) {
   const auto [w, h] = parse_size(o.size, "--size", 16384);
-  for (const std::string* f : {&o.output, &o.error_png, &o.reference_png})
+  for (const std::string* f : {&o.output, &o.error_png, &o.reference_png, &o.refinement_map})
     if (!f->empty() && !f->ends_with(".png")) throw Error(fmt::format("'{}' must end in .png", *f));
   const Scene scene = make_view_scene(o, w, h);
   const RenderSettings s = single_settings(o, w, h);
   const RenderResult r = render_study(scene, s, o.reference.source());
   if (!o.output.empty()) write_png_gray(o.output, w, h, grey_pixels(r.image));
+  if (!o.refinement_map.empty()) {
+    const GreyRaster map = refinement_map_with_legend(r.adaptive->samples, w, h);
+    write_png_gray(o.refinement_map, map.width, map.height, map.pixels);
+  }
   const std::string filter = s.filter ? s.filter->name() : "the pattern's weights";
   std::string text = fmt::format("{} {}x{}, {} with {}: {} samples per pixel\n", o.scene, w, h,
                                  o.pattern.empty() ? o.generator : o.pattern, filter,
-                                 format_cost(r.stats.samples_per_pixel));
+                                 r.adaptive ? fmt::format("{:.3f}", r.stats.samples_per_pixel)
+                                            : format_cost(r.stats.samples_per_pixel));
+  if (!s.sampling.shading.exact() || !o.texture.empty())
+    text += fmt::format(
+        "{} through {}: {:.2f} texture lookups and {:.2f} shadings per pixel\n",
+        s.sampling.shading.mode == ShadingMode::supersample ? "supersampled" : "multisampled",
+        s.sampling.shading.texture.name, r.stats.lookups_per_pixel, r.stats.shadings_per_pixel);
+  if (r.adaptive)
+    text += fmt::format("adaptive ({} > {}): {:.1f}% of pixels refined, {} scene evaluations\n",
+                        o.adaptive, s.adaptive->threshold, 100 * r.adaptive->refined_fraction,
+                        r.adaptive->evaluations);
   JsonObject js = json_report("render");
-  js.update(JsonObject{{"scene", o.scene}, {"width", w}, {"height", h}});
+  js.update(JsonObject{{"scene", o.scene},
+                       {"texture", o.texture.empty() ? JsonObject() : JsonObject(o.texture)},
+                       {"width", w},
+                       {"height", h}});
   if (s.sampling.pattern)
     js["pattern"] = o.pattern;
   else
     js.update(JsonObject{{"generator", o.generator}, {"samples", o.samples}});
   js.update(JsonObject{{"filter", s.filter ? s.filter->name() : "pattern weights"},
                        {"samples_per_pixel", r.stats.samples_per_pixel}});
+  js.update(shading_json(s.sampling, r.stats));
+  if (r.adaptive) js["adaptive"] = adaptive_json(*s.adaptive, *r.adaptive);
   if (r.figures) {
     const ImageError& e = r.figures->error;
     js["reference"] = describe_reference(s.reference);
@@ -225,10 +331,35 @@ Action add_render_command(CLI::App& app) {
   cmd->add_option("--histogram", o->histogram, "squared-error histogram C(i) i^2 / n (.csv)");
   cmd->add_option("--histogram-svg", o->histogram_svg, "the same histogram as a plot (.svg)");
   add_reference_options(cmd, o->reference, 1024);
+  cmd->add_option("--texture", o->texture,
+                  "a texture on the checkerboard's ground or a scene file's polygons with \"uv\": "
+                  "a .png file or checker, stripes, zoneplate, noise (aapat list)");
+  cmd->add_option("--mode", o->mode,
+                  "supersample (every sample shaded) or multisample (coverage "
+                  "per sample, shading once per pixel and primitive)");
+  cmd->add_option("--shading-point", o->shading_point,
+                  "multisample: shade at the pixel centre or the centroid of the covered samples");
+  cmd->add_option("--texture-filter", o->texture_filter,
+                  "nearest, bilinear, mip-nearest, mip-bilinear, trilinear, aniso:probes=8");
+  cmd->add_option("--lod", o->lod, "the mipmap level from the Jacobian: max or root-sum-squares");
+  cmd->add_option("--mipmap", o->mipmap, "the pyramid: box (2x2 mean) or gaussian");
+  cmd->add_option("--adaptive", o->adaptive,
+                  "refine adaptively from --pattern/--generator (1-5 samples per pixel) where the "
+                  "criterion exceeds --threshold: contrast, variance, neighbours, primitive");
+  cmd->add_option("--threshold", o->threshold, "--adaptive: the criterion's threshold (0.1)");
+  cmd->add_option("--max-depth", o->max_depth, "--adaptive: squares down to 2^-D pixel (3)");
+  cmd->add_option("--max-samples", o->max_samples, "--adaptive: samples per pixel at most (64)");
+  cmd->add_option("--per-square", o->per_square, "--adaptive: samples each new square holds (2)");
+  cmd->add_option("--refinement-map", o->refinement_map,
+                  "--adaptive: samples per pixel as an image with a legend (.png)");
   cmd->add_flag("--grid", o->grid, "a contact sheet of --rows x --columns with the error figures");
-  cmd->add_option("--rows", o->rows, "--grid rows: GENERATOR@N (per-pixel, N samples) or patterns")
+  cmd->add_option("--rows", o->rows,
+                  "--grid rows: GENERATOR@N (per-pixel, N samples) or patterns, each with "
+                  "+KEY=VALUE options (mode, shading-point, texture-filter, lod, mipmap, adaptive, "
+                  "threshold, max-depth, max-samples, per-square, show=map)")
       ->capture_default_str();
-  cmd->add_option("--columns", o->columns, "--grid columns: filters, or 'weights' (the pattern's)")
+  cmd->add_option("--columns", o->columns,
+                  "--grid columns: filters, or 'weights' (the pattern's), with the rows' +options")
       ->capture_default_str();
   cmd->add_option("--zoom", o->zoom, "--grid: draw each pixel as ZOOM x ZOOM")
       ->capture_default_str()
@@ -237,10 +368,16 @@ Action add_render_command(CLI::App& app) {
   cmd->add_flag("--json", o->json, "print the figures as JSON");
   // Options of one mode are refused in the other, before any work.
   const std::vector<const CLI::Option*> single_only = {
-      cmd->get_option("--pattern"),   cmd->get_option("--generator"),
-      cmd->get_option("--samples"),   cmd->get_option("--filter"),
-      cmd->get_option("--reference"), cmd->get_option("--error"),
-      cmd->get_option("--histogram"), cmd->get_option("--histogram-svg")};
+      cmd->get_option("--pattern"),        cmd->get_option("--generator"),
+      cmd->get_option("--samples"),        cmd->get_option("--filter"),
+      cmd->get_option("--reference"),      cmd->get_option("--error"),
+      cmd->get_option("--histogram"),      cmd->get_option("--histogram-svg"),
+      cmd->get_option("--mode"),           cmd->get_option("--shading-point"),
+      cmd->get_option("--texture-filter"), cmd->get_option("--lod"),
+      cmd->get_option("--mipmap"),         cmd->get_option("--adaptive"),
+      cmd->get_option("--threshold"),      cmd->get_option("--max-depth"),
+      cmd->get_option("--max-samples"),    cmd->get_option("--per-square"),
+      cmd->get_option("--refinement-map")};
   const std::vector<const CLI::Option*> grid_only = {
       cmd->get_option("--rows"), cmd->get_option("--columns"), cmd->get_option("--zoom"),
       cmd->get_option("--table")};

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "aapat/io/atomic_file.h"
+#include "aapat/io/texture_file.h"
 
 namespace aapat {
 namespace {
@@ -31,6 +32,61 @@ Vec2 point(const json& v, std::string_view source, const std::string& field) {
   if (!v.is_array() || v.size() != 2) fail(source, field + ": expected [x, y]");
   return {number(v[0], source, field + "[0]", -kFar, kFar),
           number(v[1], source, field + "[1]", -kFar, kFar)};
+}
+
+// Twice the signed area of the triangle abc.
+double cross(Vec2 a, Vec2 b, Vec2 c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// A polygon's texture: "uv" per vertex, "w" per vertex (positive; default
+// 1), "texture" a PNG file or procedural spec (or --texture later). The
+// coordinates are interpolated over the fan from vertex 0, so the polygon
+// must be convex.
+void read_texture_fields(const json& s, std::string_view source, const std::string& field,
+                         Shape& shape) {
+  if (!s.contains("uv")) {
+    if (s.contains("w") || s.contains("texture"))
+      fail(source, field + ": \"w\" and \"texture\" need texture coordinates \"uv\"");
+    return;
+  }
+  if (shape.polygon.empty()) fail(source, field + ": texture coordinates need a polygon");
+  const json& uv = s["uv"];
+  if (!uv.is_array() || uv.size() != shape.polygon.size())
+    fail(source, fmt::format("{}.uv: expected {} [u, v] pairs, one per vertex", field,
+                             shape.polygon.size()));
+  for (size_t k = 0; k < uv.size(); ++k)
+    shape.uv.push_back(point(uv[k], source, fmt::format("{}.uv[{}]", field, k)));
+  shape.w.assign(shape.polygon.size(), 1.0);
+  if (s.contains("w")) {
+    const json& w = s["w"];
+    if (!w.is_array() || w.size() != shape.polygon.size())
+      fail(source,
+           fmt::format("{}.w: expected {} numbers, one per vertex", field, shape.polygon.size()));
+    for (size_t k = 0; k < w.size(); ++k)
+      shape.w[k] = number(w[k], source, fmt::format("{}.w[{}]", field, k), 1e-6, 1e6);
+  }
+  const std::vector<Vec2>& P = shape.polygon;
+  int sign = 0;
+  for (size_t k = 0; k < P.size(); ++k) {
+    const double c = cross(P[k], P[(k + 1) % P.size()], P[(k + 2) % P.size()]);
+    const int here = c > 0 ? 1 : c < 0 ? -1 : 0;
+    if (here != 0 && sign != 0 && here != sign)
+      fail(source, field +
+                       ".polygon: a textured polygon must be convex (its texture coordinates "
+                       "are interpolated over the fan from its first vertex)");
+    if (here != 0) sign = here;
+  }
+  if (sign == 0) fail(source, field + ".polygon: a textured polygon needs an area");
+  if (s.contains("texture")) {
+    if (!s["texture"].is_string())
+      fail(source, field + ".texture: expected a PNG file or a texture spec such as \"checker\"");
+    try {
+      shape.texture = load_texture(s["texture"].get<std::string>());
+    } catch (const Error& e) {
+      fail(source, fmt::format("{}.texture: {}", field, e.what()));
+    }
+  }
 }
 
 }  // namespace
@@ -64,9 +120,10 @@ ShapesScene scene_from_json(std::string_view text, std::string_view source) {
     if (!s.is_object()) fail(source, field + ": expected an object");
     Shape shape;
     for (const auto& [key, value] : s.items())
-      if (key != "polygon" && key != "circle" && key != "radius" && key != "grey")
+      if (key != "polygon" && key != "circle" && key != "radius" && key != "grey" &&
+          key != "texture" && key != "uv" && key != "w")
         fail(source, fmt::format("{}: unknown field '{}' (expected polygon or circle and radius, "
-                                 "and grey)",
+                                 "grey, and for a textured polygon texture, uv and w)",
                                  field, key));
     if (s.contains("polygon") == s.contains("circle"))
       fail(source, field + ": give either \"polygon\" or \"circle\"");
@@ -91,16 +148,27 @@ ShapesScene scene_from_json(std::string_view text, std::string_view source) {
       shape.radius = number(s["radius"], source, field + ".radius", 0, kFar);
     }
     if (s.contains("grey")) shape.grey = number(s["grey"], source, field + ".grey", 0, 1);
+    read_texture_fields(s, source, field, shape);
     scene.shapes.push_back(std::move(shape));
   }
   index_shapes(scene);
   return scene;
 }
 
-Scene resolve_scene(const std::string& spec_or_path, int width, int height) {
-  if (spec_or_path.ends_with(".json"))
-    return scene_from_json(read_file(spec_or_path, "scene file"), spec_or_path);
-  return make_scene(spec_or_path, width, height);
+Scene resolve_scene(const std::string& spec_or_path, int width, int height,
+                    const std::string& texture) {
+  Scene scene = spec_or_path.ends_with(".json")
+                    ? Scene(scene_from_json(read_file(spec_or_path, "scene file"), spec_or_path))
+                    : make_scene(spec_or_path, width, height);
+  if (!texture.empty()) scene = with_texture(std::move(scene), texture);
+  if (const auto* shapes = std::get_if<ShapesScene>(&scene.shape))
+    for (size_t k = 0; k < shapes->shapes.size(); ++k)
+      if (!shapes->shapes[k].uv.empty() && !shapes->shapes[k].texture)
+        throw Error(
+            fmt::format("scene file {}: shapes[{}] has texture coordinates but no "
+                        "texture: give it \"texture\" or give --texture",
+                        spec_or_path, k));
+  return scene;
 }
 
 }  // namespace aapat

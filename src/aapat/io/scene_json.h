@@ -17,7 +17,10 @@ inline constexpr size_t kMaxSceneVertices = 1'000'000;
 // `source` names the text in error messages (a file name). Validates.
 ShapesScene scene_from_json(std::string_view text, std::string_view source);
 
-// A scene file (a path ending in .json) or a built-in scene spec (make_scene).
-Scene resolve_scene(const std::string& spec_or_path, int width, int height);
+// A scene file (a path ending in .json) or a built-in scene spec
+// (make_scene), with `texture` (io/texture_file.h) on what takes one; every
+// shape with texture coordinates must end up with a texture.
+Scene resolve_scene(const std::string& spec_or_path, int width, int height,
+                    const std::string& texture = "");
 
 }  // namespace aapat

@@ -3,9 +3,13 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <map>
 
 #include "aapat/generate/point_generators.h"
+#include "aapat/render/surface.h"
 
 namespace aapat {
 namespace {
@@ -14,26 +18,130 @@ struct Sample {
   double x, y, value;
 };
 
-// The samples pixel (a, b) owns, in image coordinates, with the scene's value.
-void pixel_samples(const Scene& scene, const Sampling& s, const PointGenerator& generator, int a,
-                   int b, std::vector<Sample>& out) {
-  if (s.pattern) {
-    const Pattern& p = *s.pattern;
-    for (const Vec2& v : p.sets[set_index(p, a, b)]) {
-      // A shared border sample belongs to the pixel that lists it at -1/2.
-      if (p.footprint.plus && (v.x > 0.5 - kSameSampleEps || v.y > 0.5 - kSameSampleEps)) continue;
-      const Vec2 w{a + v.x, b + v.y};
-      out.push_back({w.x, w.y, shade(scene, w)});
+// What rendering counted: texture lookups and shading evaluations.
+struct Counts {
+  std::atomic<uint64_t> lookups{0}, shadings{0};
+};
+
+// The samples pixel (a, b) owns and their values under the sampling's
+// shading. A shared border sample belongs to the pixel that lists it at -1/2.
+class PixelSampler {
+ public:
+  PixelSampler(const Scene& scene, const Sampling& s)
+      : scene_(scene),
+        s_(s),
+        generator_(s.pattern ? PointGenerator{} : make_point_generator(s.generator)),
+        footprint_(1 / std::sqrt(s.pattern ? samples_per_pixel(*s.pattern) : double(s.samples))) {}
+
+  // `counts`, when given, gains the lookups and shadings (callers count each
+  // image pixel once, though blocks draw their neighbours' samples too).
+  void pixel(int a, int b, std::vector<Sample>& out, Counts* counts) const {
+    out.clear();
+    if (s_.pattern) {
+      const Pattern& p = *s_.pattern;
+      for (const Vec2& v : p.sets[set_index(p, a, b)]) {
+        if (p.footprint.plus && (v.x > 0.5 - kSameSampleEps || v.y > 0.5 - kSameSampleEps))
+          continue;
+        out.push_back({a + v.x, b + v.y, 0});
+      }
+    } else {
+      for (const Vec2& v : pixel_points(generator_, s_.samples, s_.seed, a, b))
+        out.push_back({a + v.x, b + v.y, 0});
     }
-    return;
+    const Shading& sh = s_.shading;
+    if (sh.exact()) {
+      for (Sample& smp : out) smp.value = shade(scene_, {smp.x, smp.y});
+      if (counts) counts->shadings += out.size();
+      return;
+    }
+    uint64_t shadings = 0;
+    int lookups = 0;
+    if (sh.mode == ShadingMode::supersample) {
+      for (Sample& smp : out)
+        smp.value = shade_primitive(scene_, primitive_at(scene_, {smp.x, smp.y}), {smp.x, smp.y},
+                                    sh.texture, footprint_, &lookups);
+      shadings = out.size();
+    } else {
+      // Coverage per sample; one shading per primitive the pixel's samples see.
+      thread_local std::vector<int> primitives_;
+      primitives_.resize(out.size());
+      for (size_t k = 0; k < out.size(); ++k)
+        primitives_[k] = primitive_at(scene_, {out[k].x, out[k].y});
+      for (size_t k = 0; k < out.size(); ++k) {
+        if (k > 0 && std::find(primitives_.begin(), primitives_.begin() + static_cast<long>(k),
+                               primitives_[k]) != primitives_.begin() + static_cast<long>(k))
+          continue;  // shaded already
+        Vec2 at{double(a), double(b)};
+        if (sh.point == ShadingPoint::centroid) {
+          Vec2 sum{0, 0};
+          int covered = 0;
+          for (size_t q = k; q < out.size(); ++q)
+            if (primitives_[q] == primitives_[k]) sum.x += out[q].x, sum.y += out[q].y, ++covered;
+          at = {sum.x / covered, sum.y / covered};
+        }
+        const double value = shade_primitive(scene_, primitives_[k], at, sh.texture, 1, &lookups);
+        ++shadings;
+        for (size_t q = k; q < out.size(); ++q)
+          if (primitives_[q] == primitives_[k]) out[q].value = value;
+      }
+    }
+    if (counts) {
+      counts->lookups += static_cast<uint64_t>(lookups);
+      counts->shadings += shadings;
+    }
   }
-  for (const Vec2& v : pixel_points(generator, s.samples, s.seed, a, b)) {
-    const Vec2 w{a + v.x, b + v.y};
-    out.push_back({w.x, w.y, shade(scene, w)});
+
+ private:
+  const Scene& scene_;
+  const Sampling& s_;
+  PointGenerator generator_;
+  double footprint_;
+};
+
+// The pattern's kernels read samples of several pixels; with a shading other
+// than exact supersampling, each sample's value is its owning pixel's. The
+// pixels' samples are kept for the rows a block of output rows reads.
+class OwnedSampleCache {
+ public:
+  // `counted`: the pixels whose lookups this cache counts (its own row).
+  OwnedSampleCache(const PixelSampler& sampler, int row, int width, Counts& counts)
+      : sampler_(sampler), row_(row), width_(width), counts_(counts) {}
+  double value(Vec2 q) {
+    // The pixel that holds q inside [-1/2, 1/2); a pattern that is not of a
+    // sharing family may own a sample on its +1/2 border instead.
+    const int a0 = static_cast<int>(std::floor(q.x + 0.5 + kSameSampleEps));
+    const int b0 = static_cast<int>(std::floor(q.y + 0.5 + kSameSampleEps));
+    for (const auto& [a, b] : {std::pair{a0, b0}, {a0 - 1, b0}, {a0, b0 - 1}, {a0 - 1, b0 - 1}}) {
+      auto [it, fresh] = pixels_.try_emplace({a, b});
+      const bool counted = b == row_ && a >= 0 && a < width_;
+      if (fresh) sampler_.pixel(a, b, it->second, counted ? &counts_ : nullptr);
+      for (const Sample& s : it->second)
+        if (std::abs(s.x - q.x) <= 1e-7 && std::abs(s.y - q.y) <= 1e-7) return s.value;
+    }
+    throw Error(
+        fmt::format("render: no pixel owns a sample at ({}, {}); please report it", q.x, q.y));
   }
-}
+
+ private:
+  const PixelSampler& sampler_;
+  int row_, width_;
+  Counts& counts_;
+  std::map<std::pair<int, int>, std::vector<Sample>> pixels_;
+};
 
 }  // namespace
+
+ShadingMode parse_shading_mode(std::string_view text) {
+  if (text == "supersample") return ShadingMode::supersample;
+  if (text == "multisample") return ShadingMode::multisample;
+  throw ParameterError("mode", fmt::format(" '{}': use supersample or multisample", text));
+}
+
+ShadingPoint parse_shading_point(std::string_view text) {
+  if (text == "centre" || text == "center") return ShadingPoint::centre;
+  if (text == "centroid") return ShadingPoint::centroid;
+  throw ParameterError("shading-point", fmt::format(" '{}': use centre or centroid", text));
+}
 
 Image render(const Scene& scene, int width, int height, const Sampling& s,
              const std::optional<Filter>& filter, RenderStats* stats, double offset) {
@@ -42,6 +150,8 @@ Image render(const Scene& scene, int width, int height, const Sampling& s,
   if (!s.pattern && s.generator.empty()) throw Error("render: give a pattern or a generator");
   if (!filter && !s.pattern) throw Error("render: a per-pixel generator needs a filter");
   Image img{width, height, 0.0, std::vector<double>(static_cast<size_t>(width) * height)};
+  const PixelSampler sampler(scene, s);
+  Counts counts;
 
   if (!filter) {
     // The pattern's own kernels: output pixel (i, j) uses kernel (i mod w, j mod h),
@@ -51,11 +161,14 @@ Image render(const Scene& scene, int width, int height, const Sampling& s,
     std::vector<Kernel> kernels;
     for (int k = 0; k < p.set_count(); ++k) kernels.push_back(make_kernel(p, k));
     tbb::parallel_for(0, height, [&](int j) {
+      OwnedSampleCache owned(sampler, j, width, counts);
       for (int i = 0; i < width; ++i) {
         const Kernel& k = kernels[set_index(p, i, j)];
         double v = 0;
-        for (int r = 0; r < k.size(); ++r)
-          v += k.w[r] * shade(scene, {i + img.offset + k.x[r], j + img.offset + k.y[r]});
+        for (int r = 0; r < k.size(); ++r) {
+          const Vec2 q{i + img.offset + k.x[r], j + img.offset + k.y[r]};
+          v += k.w[r] * (s.shading.exact() ? shade(scene, q) : owned.value(q));
+        }
         img.values[static_cast<size_t>(j) * width + i] = v;
       }
     });
@@ -64,8 +177,6 @@ Image render(const Scene& scene, int width, int height, const Sampling& s,
     // drawn once per block and scattered into the output pixels within the
     // filter's radius with weight h(dx) h(dy); the sums are normalized at the end.
     img.offset = offset;
-    const PointGenerator generator =
-        s.pattern ? PointGenerator{} : make_point_generator(s.generator);
     const int reach = static_cast<int>(std::floor(filter->radius() + 0.5)) + (offset != 0 ? 1 : 0);
     constexpr int kBlock = 8;
     tbb::parallel_for(0, (height + kBlock - 1) / kBlock, [&](int block) {
@@ -75,8 +186,8 @@ Image render(const Scene& scene, int width, int height, const Sampling& s,
       std::vector<double> hx(2 * reach + 1), hy(2 * reach + 1);
       for (int b = j0 - reach; b < j1 + reach; ++b)
         for (int a = -reach; a < width + reach; ++a) {
-          samples.clear();
-          pixel_samples(scene, s, generator, a, b, samples);
+          const bool counted = b >= j0 && b < j1 && a >= 0 && a < width;
+          sampler.pixel(a, b, samples, counted ? &counts : nullptr);
           const int i_lo = std::max(0, a - reach), i_hi = std::min(width - 1, a + reach);
           const int j_lo = std::max(j0, b - reach), j_hi = std::min(j1 - 1, b + reach);
           if (i_lo > i_hi || j_lo > j_hi) continue;
@@ -103,7 +214,14 @@ Image render(const Scene& scene, int width, int height, const Sampling& s,
         }
     });
   }
-  if (stats) stats->samples_per_pixel = s.pattern ? samples_per_pixel(*s.pattern) : s.samples;
+  if (stats) {
+    stats->samples_per_pixel = s.pattern ? samples_per_pixel(*s.pattern) : s.samples;
+    const double pixels = double(width) * height;
+    stats->lookups_per_pixel = double(counts.lookups) / pixels;
+    // Exact supersampling shades every sample it owns once.
+    stats->shadings_per_pixel =
+        s.shading.exact() ? stats->samples_per_pixel : double(counts.shadings) / pixels;
+  }
   return img;
 }
 

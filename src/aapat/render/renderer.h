@@ -8,15 +8,25 @@
 // Reconstruction: the pattern's own kernel weights, or a reference filter
 // h(dx) h(dy) at the sample offsets, normalized by the weights' sum (Goss &
 // Wu's normalized discrete filter).
+//
+// Shading (the CS4620 lecture's supersampling against multisampling):
+// supersampling evaluates the scene at every sample; multisampling takes
+// only coverage (the primitive, render/surface.h) at every sample and shades
+// each primitive once per pixel, at the pixel centre or the centroid of the
+// samples it covers, copying the value to those samples. Textures are read
+// through a texture filter (render/texture_filter.h); supersampling's
+// lookups see a footprint of 1 / sqrt(samples per pixel) pixel.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "aapat/core/filter.h"
 #include "aapat/core/pattern.h"
 #include "aapat/render/scene.h"
+#include "aapat/render/texture_filter.h"
 
 namespace aapat {
 
@@ -27,15 +37,30 @@ struct Image {
   double at(int i, int j) const { return values[static_cast<size_t>(j) * width + i]; }
 };
 
+enum class ShadingMode { supersample, multisample };
+enum class ShadingPoint { centre, centroid };
+struct Shading {
+  ShadingMode mode = ShadingMode::supersample;
+  ShadingPoint point = ShadingPoint::centre;  // multisampling's
+  TextureFilter texture;                      // nearest: the exact texel
+  // Supersampling the exact texels: every sample is shade(scene, p).
+  bool exact() const { return mode == ShadingMode::supersample && texture.exact(); }
+};
+ShadingMode parse_shading_mode(std::string_view text);    // supersample, multisample
+ShadingPoint parse_shading_point(std::string_view text);  // centre (center), centroid
+
 struct Sampling {
   std::optional<Pattern> pattern;  // tiled over the image, or
   std::string generator;           // per-pixel generator spec, with
   int samples = 16;                //   samples per pixel
   uint64_t seed = 1;
+  Shading shading;
 };
 
 struct RenderStats {
-  double samples_per_pixel = 0;  // distinct scene samples taken per pixel
+  double samples_per_pixel = 0;   // distinct scene samples taken per pixel
+  double lookups_per_pixel = 0;   // texture lookups (anisotropic probes counted) per pixel
+  double shadings_per_pixel = 0;  // shading evaluations per pixel (multisampling: per primitive)
 };
 
 // filter empty: the pattern's own kernel weights (a pattern is required).

@@ -9,6 +9,8 @@
 #include "aapat/core/overloaded.h"
 #include "aapat/core/text.h"
 #include "aapat/render/shape_index.h"
+#include "aapat/render/surface.h"
+#include "aapat/render/texture_filter.h"
 
 namespace aapat {
 namespace {
@@ -33,6 +35,11 @@ Vec2 View::to_scene(Vec2 q) const {
 }
 
 double shade(const Scene& scene, Vec2 image_point) {
+  if (has_texture(scene)) {
+    // The exact texel of a textured primitive, the grey of the others.
+    static const TextureFilter kExact;
+    return shade_primitive(scene, primitive_at(scene, image_point), image_point, kExact);
+  }
   const Vec2 p = scene.view.identity() ? image_point : scene.view.to_scene(image_point);
   return std::visit(
       Overloaded{
@@ -87,23 +94,16 @@ double shade(const Scene& scene, Vec2 image_point) {
             return 0.5 + 0.5 * std::cos(kPi * s.k * r2);
           },
           [&](const ShapesScene& s) {
-            if (s.index) {
-              const int top = s.index->top_shape_at(s.shapes, p);
-              return top < 0 ? s.background : s.shapes[top].grey;
-            }
-            for (auto it = s.shapes.rbegin(); it != s.shapes.rend(); ++it) {
-              const bool inside = it->polygon.empty() ? std::hypot(p.x - it->centre.x,
-                                                                   p.y - it->centre.y) <= it->radius
-                                                      : in_polygon(p, it->polygon);
-              if (inside) return it->grey;
-            }
-            return s.background;
+            const int top = top_shape_at(s, p);
+            return top < 0 ? s.background : s.shapes[static_cast<size_t>(top)].grey;
           }},
       scene.shape);
 }
 
 void index_shapes(ShapesScene& scene) {
   scene.index = std::make_shared<const ShapeIndex>(scene.shapes);
+  scene.textured = false;
+  for (const Shape& s : scene.shapes) scene.textured = scene.textured || s.texture != nullptr;
 }
 
 namespace {
@@ -129,7 +129,8 @@ const SceneRegistry& scene_registry() {
          {{"horizon", "0.8", "horizon row as a fraction of the height"},
           {"focal", "1", "focal length in image widths"},
           {"eye", "1", "eye height in squares"},
-          {"rotation", "20", "rotation of the board in degrees"}}},
+          {"rotation", "20", "rotation of the board in degrees"},
+          {"period", "8", "with --texture: squares per repeat of the texture on the ground"}}},
         [](const Spec& s, int width, int height) -> Scene {
           const Frame f = frame_of(width, height);
           return CheckerboardScene{f.w,
@@ -137,7 +138,9 @@ const SceneRegistry& scene_registry() {
                                    s.in_range("horizon", 0.05, 2),
                                    s.in_range("focal", 0.01, 100),
                                    s.in_range("eye", 0.01, 1000),
-                                   s.in_range("rotation", -360, 360)};
+                                   s.in_range("rotation", -360, 360),
+                                   nullptr,
+                                   s.in_range("period", 1e-3, 1e6)};
         }},
        {{"circles",
          "white discs from 0.3 pixel to large",
@@ -239,6 +242,10 @@ std::string canonical_text(const Scene& scene) {
           [&](const CheckerboardScene& s) {
             for (double v : {s.width, s.height, s.horizon, s.focal, s.eye_height, s.rotation_deg})
               num(v);
+            if (s.texture) {
+              t += fmt::format("texture {:016x} ", s.texture->texture.content_hash());
+              num(s.period);
+            }
           },
           [&](const CirclesScene& s) {
             num(s.width);
@@ -271,6 +278,11 @@ std::string canonical_text(const Scene& scene) {
               pt(sh.centre);
               num(sh.radius);
               num(sh.grey);
+              if (sh.texture) {
+                t += fmt::format("texture {:016x} ", sh.texture->texture.content_hash());
+                for (Vec2 v : sh.uv) pt(v);
+                for (double w : sh.w) num(w);
+              }
             }
           }},
       scene.shape);

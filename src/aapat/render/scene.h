@@ -21,12 +21,18 @@ struct HalfPlaneScene {  // white where p . n <= offset, n = (cos a, sin a)
   Vec2 origin;
   double angle_deg = 30, offset = 0;
 };
+struct TexturedSurface;
 struct CheckerboardScene {  // Goss & Wu Sec. 3.1: infinite flat-shaded checkerboard in perspective
   double width = 256, height = 256;
   double horizon = 0.8;      // horizon row as a fraction of the height
   double focal = 1.0;        // focal length in image widths
   double eye_height = 1;     // camera height over the plane, in squares
   double rotation_deg = 20;  // the board's rotation about the vertical
+  // A texture on the ground instead of the squares (render/surface.h): it
+  // repeats every `period` squares, so checker:cells=8 at period 8 is the
+  // checkerboard itself.
+  std::shared_ptr<const TexturedSurface> texture;
+  double period = 8;
 };
 struct CirclesScene {  // Laine-Aila Fig. 7: white discs of growing radius on black
   double width = 256, height = 256;
@@ -57,6 +63,13 @@ struct Shape {
   Vec2 centre;
   double radius = 0;
   double grey = 1;
+  // A textured convex polygon: texture coordinates per vertex (1 = one
+  // repeat of the texture) and the vertices' clip w (1: affine), interpolated
+  // perspective-correctly over the fan from vertex 0; its value is grey x
+  // the texture's.
+  std::shared_ptr<const TexturedSurface> texture;
+  std::vector<Vec2> uv;
+  std::vector<double> w;
 };
 class ShapeIndex;
 struct ShapesScene {
@@ -64,9 +77,13 @@ struct ShapesScene {
   std::vector<Shape> shapes;
   // Built by index_shapes(); without it shade() scans every shape.
   std::shared_ptr<const ShapeIndex> index;
+  bool textured = false;  // some shape has a texture (set by index_shapes)
 };
-// Builds the scene's spatial index (render/shape_index.h) once its shapes are final.
+// Builds the scene's spatial index (render/shape_index.h) once its shapes are
+// final, and notes whether any is textured.
 void index_shapes(ShapesScene& scene);
+// The last shape in painting order that holds scene point p, or -1.
+int top_shape_at(const ShapesScene& scene, Vec2 p);
 
 using SceneShape = std::variant<HalfPlaneScene, CheckerboardScene, CirclesScene, SliverScene,
                                 SpiralScene, ZonePlateScene, DiscScene, TriangleScene, ShapesScene>;
@@ -91,7 +108,7 @@ struct Scene {
       : shape(std::move(s)) {}  // NOLINT: any scene kind is a Scene
 };
 
-// The grey level of the scene at p.
+// The grey level of the scene at p (textures at their exact texel values).
 double shade(const Scene& scene, Vec2 p);
 
 // Every field of the scene, exactly (%.17g): equal texts, equal images. Keys the reference cache.

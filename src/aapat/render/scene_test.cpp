@@ -44,7 +44,11 @@ TEST(Scene, ShapesPaintInOrderWithTheEvenOddRule) {
   EXPECT_EQ(shade(s, {10, 17}), 1.0);  // in the top point
   EXPECT_EQ(shade(s, {30, 30}), 0.25);
   // A circle painted later covers the star where they overlap.
-  s.shapes.push_back(Shape{{}, {10, 17}, 1.0, 0.5});
+  Shape circle;
+  circle.centre = {10, 17};
+  circle.radius = 1.0;
+  circle.grey = 0.5;
+  s.shapes.push_back(circle);
   EXPECT_EQ(shade(s, {10, 17}), 0.5);
   EXPECT_EQ(shade(s, {10, 18.5}), 0.25);  // outside both
 }

@@ -1,13 +1,15 @@
 // Renderings measured against their dense reference, as `aapat render` and
 // `aapat.render` make them: one scene with one sampling and filter, or a
 // contact sheet of samplings (rows) by filters (columns) with the error
-// figures of every cell.
+// figures of every cell; either supersampled or multisampled, through a
+// texture filter, or refined adaptively.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "aapat/render/adaptive.h"
 #include "aapat/render/image_error.h"
 #include "aapat/render/reference.h"
 #include "aapat/study/progress.h"
@@ -30,17 +32,39 @@ RenderFigures measure(const Image& image, const Image& reference);
 // generator with N samples) or a catalog pattern / pattern file.
 Sampling parse_sampling(const std::string& row, uint64_t seed);
 
+// How a rendering shades and refines, set by `+KEY=VALUE` options after a
+// sheet row or column (`msaa-4+mode=multisample+texture-filter=trilinear`):
+// mode, shading-point, texture-filter, lod, mipmap; adaptive (a criterion),
+// threshold, max-depth, max-samples, per-square; show (image or map).
+struct RenderOptions {
+  std::string mode = "supersample", shading_point = "centre", texture_filter = "nearest",
+              lod = "max", mipmap = "box";
+  std::string adaptive;  // empty: no refinement; else the criterion
+  double threshold = 0.1;
+  int max_depth = 3, max_samples = 64, per_square = 2;
+  bool show_map = false;  // a sheet cell shows the refinement map
+  // Sets KEY from VALUE; `where` names the row or column in errors.
+  void set(const std::string& key, const std::string& value, const std::string& where);
+  Shading shading() const;
+  // The adaptive settings for an initial sampling, when adaptive is set.
+  std::optional<AdaptiveSettings> adaptive_settings(const Sampling& initial) const;
+};
+// "BASE+KEY=VALUE+..." into BASE and the options it sets on `options`.
+std::string split_options(const std::string& text, RenderOptions& options);
+
 struct RenderSettings {
   int width = 256, height = 256;
-  Sampling sampling;
+  Sampling sampling;             // its shading: supersampling or multisampling, texture filter
   std::optional<Filter> filter;  // none: the pattern's own weights
-  bool measure = false;          // render the reference and compare
+  std::optional<AdaptiveSettings> adaptive;  // refine from `sampling` (render/adaptive.h)
+  bool measure = false;                      // render the reference and compare
   ReferenceSettings reference;
 };
 struct RenderResult {
   Image image;
   RenderStats stats;
-  std::optional<Image> reference;  // when measured
+  std::optional<AdaptiveImage> adaptive;  // the refinement map and its counts
+  std::optional<Image> reference;         // when measured
   std::optional<RenderFigures> figures;
 };
 RenderResult render_study(const Scene& scene, const RenderSettings& settings,
@@ -60,6 +84,8 @@ struct RenderGridCell {
   Image image;
   RenderStats stats;
   RenderFigures figures;
+  std::optional<AdaptiveImage> adaptive;
+  bool show_map = false;  // the sheet shows the refinement map
 };
 std::vector<RenderGridCell> render_grid(const Scene& scene, const RenderGridSettings& settings,
                                         const ReferenceSource& references = render_reference,
