@@ -30,7 +30,11 @@ void BatchE2(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * m));
   state.SetLabel(state.range(1) > 0 ? "1 thread" : "all threads");
 }
-BENCHMARK(BatchE2)->Args({10000, 0})->Args({10000, 1})->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BatchE2)
+    ->Args({10000, 0})
+    ->Args({10000, 1})
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace aapat

@@ -33,6 +33,25 @@ done
   hasselgren-a hasselgren-b hasselgren-c hasselgren-d hasselgren-e quincunx-hasselgren \
   hasselgren-f --columns weights tent -o "$img/sheet-hasselgren-spiral.png" \
   --table docs/sheet-hasselgren-spiral.md >/dev/null
+# CS4620 Lecture 23: texture minification on the textured checkerboard, multisampled with
+# point, bilinear, trilinear and anisotropic lookups against supersampling at 4 and 16 samples.
+"$aapat" render checkerboard --texture checker --grid --size 256x160 --reference-filter gaussian \
+  --rows "msaa-4+mode=multisample+texture-filter=nearest+label=MSAA 4, point" \
+  "msaa-4+mode=multisample+texture-filter=bilinear+label=MSAA 4, bilinear" \
+  "msaa-4+mode=multisample+texture-filter=trilinear+label=MSAA 4, trilinear" \
+  "msaa-4+mode=multisample+texture-filter=aniso:probes=8+label=MSAA 4, aniso 8" \
+  "msaa-4+label=SSAA 4" "msaa-16+label=SSAA 16" \
+  --columns gaussian -o "$img/sheet-texture-minification.png" \
+  --table docs/sheet-texture-minification.md >/dev/null
+# Pelikan: adaptive refinement against uniform jitter, with the refinement maps.
+for scene in spiral circles checkerboard; do
+  "$aapat" render "$scene" --grid --size 128x128 --rows jittered@4 jittered@9 jittered@16 \
+    "jittered@4+adaptive=neighbours+threshold=0.05+per-square=3+max-depth=2+label=adaptive A" \
+    "jittered@4+adaptive=neighbours+threshold=0.05+per-square=4+max-depth=3+label=adaptive B" \
+    --columns box "box+show=map+label=samples" --reference-filter box \
+    -o "$img/sheet-adaptive-$scene.png" \
+    --table "docs/sheet-adaptive-$scene.md" >/dev/null
+done
 "$aapat" hardware-table > docs/hardware-table.md
 # Every registry of specs, as aapat list prints it (the same entries the parsers use).
 "$aapat" list > docs/registry.txt

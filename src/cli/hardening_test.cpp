@@ -298,3 +298,49 @@ TEST(Hardening, AnOutputFormatThatCannotHoldTheResultFailsBeforeTheReport) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// Issue 14's bad inputs, through the command line: each refused with a
+// message naming it, exit code 1 (2 for the command line's own checks), and
+// no image written.
+TEST(Hardening, BadTexturesAndRefinementSettingsAreNamedAndWriteNothing) {
+  const std::string out = temp_path("bad-texture.png");
+  const std::string not_png = write("not.png", "plain text, not an image");
+  const std::string uv_nan = write("uv.json", R"({"shapes": [{"polygon": [[0,0],[9,0],[0,9]],
+      "uv": [[0,0],[1,0],[0,"NaN"]], "texture": "checker"}]})");
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {{"checkerboard", "--texture", temp_path("missing.png")}, "no such file"},
+      {{"checkerboard", "--texture", not_png}, "not a PNG image"},
+      {{"checkerboard", "--texture", "checker:size=0"}, "size"},
+      {{"checkerboard", "--texture", "checker:size=1000000"}, "size"},
+      {{uv_nan}, "shapes[0].uv[2][1]: expected a number"},
+      {{"spiral", "--texture", "checker"}, "--texture checker: this scene has no texture"},
+      {{"checkerboard", "--texture-filter", "cubic"}, "unknown texture filter 'cubic'"},
+      {{"checkerboard", "--mode", "hybrid"}, "--mode 'hybrid': use supersample or multisample"},
+      {{"spiral", "--adaptive", "contrast", "--threshold", "1.5"}, "--threshold 1.5"},
+      {{"spiral", "--adaptive", "contrast", "--max-samples", "2"}, "--max-samples 2"},
+      {{"spiral", "--adaptive", "gradient"}, "--adaptive 'gradient'"},
+      {{"spiral", "--threshold", "0.1"}, "are for --adaptive CRITERION"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args = {"render"};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    for (const char* more : {"--generator", "jittered", "--samples", "4", "--filter", "box",
+                             "--size", "16x16", "--no-cache", "-o"})
+      args.push_back(more);
+    args.push_back(out);
+    const CliRun r = run(args);
+    EXPECT_EQ(r.code, kExitError) << c.message << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << c.message;
+  }
+}
+
+}  // namespace
+}  // namespace aapat

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -128,7 +129,22 @@ void run_grid(const Options& o, std::ostream& out) {
     Progress bar("render");
     cells = render_grid(scene, s, o.reference.source(), bar.callback());
   }
-  ContactSheet sheet{fmt::format("{} {}x{}", o.scene, w, h), o.rows, o.columns, {}, o.zoom};
+  // A row's or column's label= names it on the sheet; else its text does.
+  auto labels = [](const std::vector<std::string>& texts) {
+    std::vector<std::string> out;
+    for (const std::string& t : texts) {
+      RenderOptions options;
+      split_options(t, options);
+      out.push_back(options.label.empty() ? t : options.label);
+    }
+    return out;
+  };
+  ContactSheet sheet{
+      fmt::format("{}{} {}x{}", o.scene, o.texture.empty() ? "" : " texture " + o.texture, w, h),
+      labels(o.rows),
+      labels(o.columns),
+      {},
+      o.zoom};
   // Texture lookups and refinement get columns of their own when a cell has them.
   bool lookups = false, refined = false;
   for (const RenderGridCell& c : cells) {
@@ -140,22 +156,32 @@ void run_grid(const Options& o, std::ostream& out) {
   if (lookups) table += " lookups/pixel |", rule += " ---: |";
   if (refined) table += " refined |", rule += " ---: |";
   table += " RMSE | max dev. | SSIM |\n" + rule + " ---: | ---: | ---: |\n";
+  // Refinement maps on one scale: 1 sample to the most any mapped cell took
+  // (a uniform sampling's map is its constant count).
+  auto map_of = [&](const RenderGridCell& c) {
+    return c.adaptive ? c.adaptive->samples
+                      : std::vector<int>(static_cast<size_t>(w) * h,
+                                         static_cast<int>(std::lround(c.stats.samples_per_pixel)));
+  };
+  int most = 1;
+  for (const RenderGridCell& c : cells)
+    if (c.show_map) {
+      const std::vector<int> map = map_of(c);
+      most = std::max(most, *std::max_element(map.begin(), map.end()));
+    }
   JsonObject rows = JsonObject::array();
   for (const RenderGridCell& c : cells) {
     const ImageError& e = c.figures.error;
     if (c.show_map) {
-      const int most = c.adaptive->samples.empty() ? 1
-                                                   : *std::max_element(c.adaptive->samples.begin(),
-                                                                       c.adaptive->samples.end());
-      sheet.cells.push_back(
-          {w, h, refinement_map_pixels(c.adaptive->samples, w, h, 1, most),
-           fmt::format("MAP 1-{} AVG {:.2f}", most, c.adaptive->average_samples)});
+      sheet.cells.push_back({w, h, refinement_map_pixels(map_of(c), w, h, 1, most),
+                             fmt::format("MAP 1-{} AVG {:.2f}", most, c.stats.samples_per_pixel)});
     } else {
       sheet.cells.push_back(
           {w, h, grey_pixels(c.image), fmt::format("RMSE {:.2f} MAX {}", e.rmse, e.max_deviation)});
     }
     const std::string spp = c.adaptive ? fmt::format("{:.2f}", c.stats.samples_per_pixel)
                                        : format_cost(c.stats.samples_per_pixel);
+    if (c.show_map) continue;  // the same rendering as its image's cell: the table has it
     table += fmt::format("| {} | {} | {} |", c.row, c.column, spp);
     if (lookups) table += fmt::format(" {:.2f} |", c.stats.lookups_per_pixel);
     if (refined)

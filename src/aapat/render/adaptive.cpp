@@ -141,9 +141,9 @@ RefinementCriterion parse_refinement_criterion(std::string_view text) {
   if (text == "variance") return RefinementCriterion::variance;
   if (text == "neighbours" || text == "neighbors") return RefinementCriterion::neighbours;
   if (text == "primitive" || text == "shape-id") return RefinementCriterion::primitive;
-  throw ParameterError("criterion", fmt::format(" '{}': use contrast, variance, neighbours or "
-                                                "primitive (shape-id)",
-                                                text));
+  throw ParameterError("adaptive", fmt::format(" '{}': use contrast, variance, neighbours or "
+                                               "primitive (shape-id)",
+                                               text));
 }
 
 void validate(const AdaptiveSettings& s) {

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <map>
 
 #include "aapat/generate/point_generators.h"
 #include "aapat/render/surface.h"
@@ -31,7 +30,8 @@ class PixelSampler {
       : scene_(scene),
         s_(s),
         generator_(s.pattern ? PointGenerator{} : make_point_generator(s.generator)),
-        footprint_(1 / std::sqrt(s.pattern ? samples_per_pixel(*s.pattern) : double(s.samples))) {}
+        footprint_(1 / std::sqrt(s.pattern ? samples_per_pixel(*s.pattern) : double(s.samples))),
+        plain_(s.shading.exact() && !has_texture(scene)) {}
 
   // `counts`, when given, gains the lookups and shadings (callers count each
   // image pixel once, though blocks draw their neighbours' samples too).
@@ -49,7 +49,7 @@ class PixelSampler {
         out.push_back({a + v.x, b + v.y, 0});
     }
     const Shading& sh = s_.shading;
-    if (sh.exact()) {
+    if (plain_) {  // no texture to look up: the scene's value at every sample
       for (Sample& smp : out) smp.value = shade(scene_, {smp.x, smp.y});
       if (counts) counts->shadings += out.size();
       return;
@@ -96,26 +96,33 @@ class PixelSampler {
   const Sampling& s_;
   PointGenerator generator_;
   double footprint_;
+  bool plain_;
 };
 
 // The pattern's kernels read samples of several pixels; with a shading other
-// than exact supersampling, each sample's value is its owning pixel's. The
-// pixels' samples are kept for the rows a block of output rows reads.
+// than plain supersampling, each sample's value is its owning pixel's. The
+// pixels' samples are kept for the rows one output row reads (its own and
+// `reach` on each side), in slots reused from pixel to pixel.
 class OwnedSampleCache {
  public:
-  // `counted`: the pixels whose lookups this cache counts (its own row).
-  OwnedSampleCache(const PixelSampler& sampler, int row, int width, Counts& counts)
-      : sampler_(sampler), row_(row), width_(width), counts_(counts) {}
+  OwnedSampleCache(const PixelSampler& sampler, int row, int width, int reach, Counts& counts)
+      : sampler_(sampler),
+        row_(row),
+        width_(width),
+        reach_(reach + 1),  // a +1/2 border sample may belong to the pixel before
+        stride_(width + 2 * reach_),
+        slots_(static_cast<size_t>(stride_) * (2 * reach_ + 1)),
+        filled_(slots_.size(), false),
+        counts_(counts) {}
+
   double value(Vec2 q) {
     // The pixel that holds q inside [-1/2, 1/2); a pattern that is not of a
     // sharing family may own a sample on its +1/2 border instead.
     const int a0 = static_cast<int>(std::floor(q.x + 0.5 + kSameSampleEps));
     const int b0 = static_cast<int>(std::floor(q.y + 0.5 + kSameSampleEps));
     for (const auto& [a, b] : {std::pair{a0, b0}, {a0 - 1, b0}, {a0, b0 - 1}, {a0 - 1, b0 - 1}}) {
-      auto [it, fresh] = pixels_.try_emplace({a, b});
-      const bool counted = b == row_ && a >= 0 && a < width_;
-      if (fresh) sampler_.pixel(a, b, it->second, counted ? &counts_ : nullptr);
-      for (const Sample& s : it->second)
+      const std::vector<Sample>& samples = pixel(a, b);
+      for (const Sample& s : samples)
         if (std::abs(s.x - q.x) <= 1e-7 && std::abs(s.y - q.y) <= 1e-7) return s.value;
     }
     throw Error(
@@ -123,10 +130,27 @@ class OwnedSampleCache {
   }
 
  private:
+  const std::vector<Sample>& pixel(int a, int b) {
+    const int i = a + reach_, j = b - row_ + reach_;
+    if (i < 0 || i >= stride_ || j < 0 || j > 2 * reach_)
+      throw Error(
+          fmt::format("render: pixel ({}, {}) is outside the kernel's reach; please "
+                      "report it",
+                      a, b));
+    const size_t slot = static_cast<size_t>(j) * stride_ + i;
+    if (!filled_[slot]) {
+      const bool counted = b == row_ && a >= 0 && a < width_;  // each image pixel once
+      sampler_.pixel(a, b, slots_[slot], counted ? &counts_ : nullptr);
+      filled_[slot] = true;
+    }
+    return slots_[slot];
+  }
+
   const PixelSampler& sampler_;
-  int row_, width_;
+  int row_, width_, reach_, stride_;
+  std::vector<std::vector<Sample>> slots_;
+  std::vector<bool> filled_;
   Counts& counts_;
-  std::map<std::pair<int, int>, std::vector<Sample>> pixels_;
 };
 
 }  // namespace
@@ -152,6 +176,7 @@ Image render(const Scene& scene, int width, int height, const Sampling& s,
   Image img{width, height, 0.0, std::vector<double>(static_cast<size_t>(width) * height)};
   const PixelSampler sampler(scene, s);
   Counts counts;
+  const bool plain = s.shading.exact() && !has_texture(scene);  // nothing to count but samples
 
   if (!filter) {
     // The pattern's own kernels: output pixel (i, j) uses kernel (i mod w, j mod h),
@@ -159,15 +184,21 @@ Image render(const Scene& scene, int width, int height, const Sampling& s,
     const Pattern& p = *s.pattern;
     img.offset = p.footprint.size == 1 ? 0.0 : 0.5;
     std::vector<Kernel> kernels;
-    for (int k = 0; k < p.set_count(); ++k) kernels.push_back(make_kernel(p, k));
+    int reach = 0;  // pixels a kernel reaches from its output pixel
+    for (int k = 0; k < p.set_count(); ++k) {
+      kernels.push_back(make_kernel(p, k));
+      for (int r = 0; r < kernels.back().size(); ++r)
+        reach = std::max({reach, static_cast<int>(std::ceil(std::abs(kernels.back().x[r]) + 1)),
+                          static_cast<int>(std::ceil(std::abs(kernels.back().y[r]) + 1))});
+    }
     tbb::parallel_for(0, height, [&](int j) {
-      OwnedSampleCache owned(sampler, j, width, counts);
+      OwnedSampleCache owned(sampler, j, width, reach, counts);
       for (int i = 0; i < width; ++i) {
         const Kernel& k = kernels[set_index(p, i, j)];
         double v = 0;
         for (int r = 0; r < k.size(); ++r) {
           const Vec2 q{i + img.offset + k.x[r], j + img.offset + k.y[r]};
-          v += k.w[r] * (s.shading.exact() ? shade(scene, q) : owned.value(q));
+          v += k.w[r] * (plain ? shade(scene, q) : owned.value(q));
         }
         img.values[static_cast<size_t>(j) * width + i] = v;
       }
@@ -219,8 +250,7 @@ Image render(const Scene& scene, int width, int height, const Sampling& s,
     const double pixels = double(width) * height;
     stats->lookups_per_pixel = double(counts.lookups) / pixels;
     // Exact supersampling shades every sample it owns once.
-    stats->shadings_per_pixel =
-        s.shading.exact() ? stats->samples_per_pixel : double(counts.shadings) / pixels;
+    stats->shadings_per_pixel = plain ? stats->samples_per_pixel : double(counts.shadings) / pixels;
   }
   return img;
 }

@@ -85,6 +85,8 @@ void RenderOptions::set(const std::string& key, const std::string& value,
     max_samples = whole();
   } else if (key == "per-square") {
     per_square = whole();
+  } else if (key == "label") {
+    label = value;
   } else if (key == "show") {
     if (value != "image" && value != "map")
       throw Error(fmt::format("{}: show={}: use image or map", where, value));
@@ -92,7 +94,7 @@ void RenderOptions::set(const std::string& key, const std::string& value,
   } else {
     throw Error(
         fmt::format("{}: unknown option '{}' (mode, shading-point, texture-filter, lod, "
-                    "mipmap, adaptive, threshold, max-depth, max-samples, per-square, show)",
+                    "mipmap, adaptive, threshold, max-depth, max-samples, per-square, show, label)",
                     where, key));
   }
 }
@@ -188,8 +190,6 @@ std::vector<RenderGridCell> render_grid(const Scene& scene, const RenderGridSett
             fmt::format(" weights: row '{}' is a generator, which has no weights of its own", row));
       const std::optional<AdaptiveSettings> adaptive = options.adaptive_settings(sampling);
       RenderGridCell cell{row, column, sampling, {}, {}, {}, {}, options.show_map};
-      if (cell.show_map && !adaptive)
-        throw Error(fmt::format("{} {}: show=map needs adaptive=CRITERION", row, column));
       render_one(scene, s.width, s.height, sampling, filter, adaptive, cell.image, cell.stats,
                  cell.adaptive);
       auto it = reference_at.find(cell.image.offset);

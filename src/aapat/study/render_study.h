@@ -35,7 +35,8 @@ Sampling parse_sampling(const std::string& row, uint64_t seed);
 // How a rendering shades and refines, set by `+KEY=VALUE` options after a
 // sheet row or column (`msaa-4+mode=multisample+texture-filter=trilinear`):
 // mode, shading-point, texture-filter, lod, mipmap; adaptive (a criterion),
-// threshold, max-depth, max-samples, per-square; show (image or map).
+// threshold, max-depth, max-samples, per-square; show (image or map); label
+// (the sheet's name for it).
 struct RenderOptions {
   std::string mode = "supersample", shading_point = "centre", texture_filter = "nearest",
               lod = "max", mipmap = "box";
@@ -43,6 +44,7 @@ struct RenderOptions {
   double threshold = 0.1;
   int max_depth = 3, max_samples = 64, per_square = 2;
   bool show_map = false;  // a sheet cell shows the refinement map
+  std::string label;      // the sheet's label for the row or column (default: its text)
   // Sets KEY from VALUE; `where` names the row or column in errors.
   void set(const std::string& key, const std::string& value, const std::string& where);
   Shading shading() const;
@@ -85,7 +87,7 @@ struct RenderGridCell {
   RenderStats stats;
   RenderFigures figures;
   std::optional<AdaptiveImage> adaptive;
-  bool show_map = false;  // the sheet shows the refinement map
+  bool show_map = false;  // the sheet shows the refinement map (uniform: a constant one)
 };
 std::vector<RenderGridCell> render_grid(const Scene& scene, const RenderGridSettings& settings,
                                         const ReferenceSource& references = render_reference,
