@@ -158,10 +158,11 @@ void run_grid(const Options& o, std::ostream& out) {
   table += " RMSE | max dev. | SSIM |\n" + rule + " ---: | ---: | ---: |\n";
   // Refinement maps on one scale: 1 sample to the most any mapped cell took
   // (a uniform sampling's map is its constant count).
+  const size_t pixels = static_cast<size_t>(w) * h;  // (clang 14 captures no structured binding)
   auto map_of = [&](const RenderGridCell& c) {
-    return c.adaptive ? c.adaptive->samples
-                      : std::vector<int>(static_cast<size_t>(w) * h,
-                                         static_cast<int>(std::lround(c.stats.samples_per_pixel)));
+    return c.adaptive
+               ? c.adaptive->samples
+               : std::vector<int>(pixels, static_cast<int>(std::lround(c.stats.samples_per_pixel)));
   };
   int most = 1;
   for (const RenderGridCell& c : cells)

@@ -7,18 +7,14 @@
 #include <cmath>
 #include <random>
 
+#include "testing/random_points.h"
+
 #include "aapat/generate/point_generators.h"
 
 namespace aapat {
 namespace {
 
-std::vector<Vec2> random_points(uint64_t seed, int n) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<Vec2> p(n);
-  for (auto& v : p) v = {u(rng), u(rng)};
-  return p;
-}
+using testing::random_points;
 
 // One point at (a, b): the empty boxes reach area max(a, b), the boxes
 // holding it fall short by 1 - ab at worst.

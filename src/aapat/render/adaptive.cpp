@@ -42,7 +42,8 @@ struct Square {
 
 class Refiner {
  public:
-  Refiner(const Scene& scene, const AdaptiveSettings& s) : scene_(scene), s_(s) {}
+  Refiner(const Scene& scene, const AdaptiveSettings& s)
+      : scene_(scene), s_(s), textured_(has_texture(scene)) {}
 
   // Refines pixel (a, b) from its first samples; `neighbours` holds the
   // first samples of its 3 x 3 neighbourhood (itself included).
@@ -76,9 +77,11 @@ class Refiner {
       case RefinementCriterion::variance:
         return std::max(0.0, (sum_sq - sum * sum / n) / (n - 1)) > s_.threshold;
       case RefinementCriterion::primitive:
+        // Different primitives; on a textured one, texture regions that
+        // differ by more than the threshold.
         for (const Taken& t : samples)
           if (t.primitive != samples[0].primitive) return true;
-        return false;
+        return textured_ && hi - lo > s_.threshold;
       case RefinementCriterion::contrast:
       case RefinementCriterion::neighbours:  // inside the pixel: contrast
         return hi - lo > s_.threshold;
@@ -130,6 +133,7 @@ class Refiner {
 
   const Scene& scene_;
   const AdaptiveSettings& s_;
+  bool textured_;
   // Per pixel (a Refiner is used by one thread at a time).
   mutable int total_ = 0, a_ = 0, b_ = 0, evaluations_ = 0;
 };

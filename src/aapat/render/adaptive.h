@@ -24,7 +24,8 @@ enum class RefinementCriterion {
   variance,    // their variance > threshold
   neighbours,  // contrast of the pixel's and its 8 neighbours' first samples > threshold
                // (the pixel's decision; its squares then refine by contrast)
-  primitive,   // the samples see different primitives (shapes, texture regions)
+  primitive,   // the samples see different primitives (shapes, sky and ground), or on a
+               // textured primitive texture regions whose values differ by > threshold
 };
 RefinementCriterion parse_refinement_criterion(std::string_view text);
 

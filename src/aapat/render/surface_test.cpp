@@ -205,3 +205,24 @@ TEST(Multisampling, CountsTheLookups) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// The reference cache is keyed by the scene's canonical text: a texture
+// (its texels, its period) is part of it.
+TEST(TextureCoordinates, TheCacheKeyKnowsTheTexture) {
+  CheckerboardScene plain;
+  const Scene a = textured_board("checker:cells=8,size=256"),
+              b = textured_board("checker:cells=4,size=256");
+  Scene c = textured_board("checker:cells=8,size=256");
+  std::get<CheckerboardScene>(c.shape).period = 4;
+  const std::string untextured = canonical_text(Scene(plain));
+  EXPECT_NE(canonical_text(a), canonical_text(b));
+  EXPECT_NE(canonical_text(a), canonical_text(c));
+  EXPECT_EQ(canonical_text(a), canonical_text(textured_board("checker:cells=8,size=256")));
+  EXPECT_EQ(untextured.find("texture"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace aapat
