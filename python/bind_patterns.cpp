@@ -6,6 +6,7 @@
 #include "aapat/core/hardware_layout.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/generate/point_generators.h"
+#include "aapat/io/aapat_catalog.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/render/scene.h"
 #include "aapat/render/texture_filter.h"
@@ -164,6 +165,9 @@ pattern file (.json, or Laine's x y weight text .xyw).)doc");
       [] {
         py::dict d;
         d["patterns"] = infos(pattern_registry());
+        py::list aapat;
+        for (const SpecInfo& info : aapat_catalog()) aapat.append(info_dict(info));
+        d["aapat_patterns"] = aapat;
         d["filters"] = infos(filter_registry());
         d["generators"] = infos(generator_registry());
         d["acuity_tables"] = infos(acuity_registry());
@@ -174,7 +178,7 @@ pattern file (.json, or Laine's x y weight text .xyw).)doc");
         return d;
       },
       R"doc(Every registry of specs, as `aapat list` prints them: a dict from kind
-("patterns", "filters", "generators", "acuity_tables", "scenes", "textures",
+("patterns", "aapat_patterns", "filters", "generators", "acuity_tables", "scenes", "textures",
 "texture_filters", "api_profiles")
 to a list of {name, usage, summary, source, parameters}.)doc");
 }

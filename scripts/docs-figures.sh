@@ -52,6 +52,9 @@ for scene in spiral circles checkerboard; do
     -o "$img/sheet-adaptive-$scene.png" \
     --table "docs/sheet-adaptive-$scene.md" >/dev/null
 done
+# Which objective predicts rendered error: 30+ patterns at 2, 4 and 8 samples per pixel.
+"$aapat" study --budgets 2,4,8 --patterns 30 --table docs/study-correlations.md \
+  --csv docs/study-correlations.csv --html docs/study-report.html >/dev/null
 "$aapat" hardware-table > docs/hardware-table.md
 # Every registry of specs, as aapat list prints it (the same entries the parsers use).
 "$aapat" list > docs/registry.txt

@@ -2,10 +2,11 @@
 # Installs the Debian packages aapat builds, tests and benchmarks with.
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config
-  libcli11-dev nlohmann-json3-dev libfmt-dev libpng-dev libgif-dev libtbb-dev libhwy-dev libfftw3-dev libvulkan-dev glslang-tools mesa-vulkan-drivers
+  libcli11-dev nlohmann-json3-dev libfmt-dev libpng-dev libgif-dev libtbb-dev libhwy-dev libfftw3-dev libnlopt-dev libvulkan-dev glslang-tools mesa-vulkan-drivers
   libgtest-dev libgmock-dev libbenchmark-dev librapidcheck-dev clang-format
   clang libclang-rt-14-dev  # clang builds the ASan+UBSan preset with the libFuzzer targets
-  pybind11-dev python3-dev python3-numpy python3-pytest)  # the Python module and its tests
+  pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module and its tests
+  chromium python3-pil)  # the study report opened in a real browser (scripts/test-report.sh)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

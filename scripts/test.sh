@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs what is needed, builds the optimized and the ASan+UBSan builds, runs
 # every test in both (the Python suite in the optimized one), checks that the
-# committed docs/ tables and figures regenerate byte for byte and that the
-# installed package builds and runs the example in examples/, then fuzzes each
+# committed docs/ tables and figures regenerate byte for byte, that the
+# installed package builds and runs the example in examples/ and that the
+# study's report page works in headless Chromium, then fuzzes each
 # parser for a fixed budget under ASan + UBSan (scripts/fuzz.sh;
 # AAPAT_FUZZ_SECONDS per target, default 20). This is what CI runs (.ci/run).
 set -euo pipefail
@@ -22,6 +23,8 @@ for preset in release asan; do
     scripts/check-docs.sh || status=1
     echo "== the installed package"
     scripts/test-install.sh || status=1
+    echo "== the study report in headless Chromium"
+    scripts/test-report.sh || status=1
   fi
 done
 echo "== fuzz: every parser under ASan + UBSan"

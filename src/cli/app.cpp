@@ -106,6 +106,7 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   add(add_export_command);
   add(add_import_command);
   add(add_hardware_table_command);
+  add(add_study_command);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -11,6 +11,7 @@
 #include "aapat/core/hardware_layout.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/generate/point_generators.h"
+#include "aapat/io/aapat_catalog.h"
 #include "aapat/io/json_report.h"
 #include "aapat/render/scene.h"
 #include "aapat/render/texture_filter.h"
@@ -33,8 +34,13 @@ Section section(std::string key, std::string heading, const R& registry) {
 }
 
 std::vector<Section> sections() {
+  Section aapat{"aapat_patterns",
+                "the aapat catalog (data/patterns: the best found per budget and API, "
+                "docs/catalog.md)",
+                aapat_catalog()};
   return {
       section("patterns", "patterns", pattern_registry()),
+      aapat,
       section("filters", "filters", filter_registry()),
       section("generators", "point generators (aapat generate, spectrum, discrepancy)",
               generator_registry()),

@@ -192,9 +192,10 @@ Action add_optimize_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(1, 100000000));
   cmd->add_option("--method", o->method,
-                  "descent (Laine-Aila heuristic), minimax (eps-active min-norm descent) or anneal")
+                  "descent (Laine-Aila heuristic), minimax (eps-active min-norm descent), anneal, "
+                  "or the epigraph form with NLopt: slsqp, mma, ccsaq")
       ->capture_default_str()
-      ->check(CLI::IsMember({"descent", "minimax", "anneal"}));
+      ->check(CLI::IsMember({"descent", "minimax", "anneal", "slsqp", "mma", "ccsaq"}));
   cmd->add_option("--threads", o->threads, "threads (0: all cores)")->check(CLI::Range(0, 1024));
   cmd->add_option("--lattice", o->lattice,
                   "then search positions on the 1/N-pixel lattice (16: programmable MSAA)")

@@ -10,6 +10,7 @@
 #include <ostream>
 
 #include "aapat/io/json_report.h"
+#include "aapat/study/optimize_run.h"
 #include "aapat/study/paper_tables.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
@@ -22,6 +23,7 @@ namespace {
 struct Table3Options {
   int patterns = 1000, iterations = 4000;
   uint64_t seed = 1;
+  std::string method = "descent";
   bool json = false;
   MetricOptions metric;
 };
@@ -31,7 +33,8 @@ void run_table3(Table3Options& o, std::ostream& out) {
   std::vector<Table3Row> rows;
   {
     Progress bar("table3");
-    rows = table3(metric, {o.patterns, o.iterations, o.seed}, bar.callback());
+    rows =
+        table3(metric, {o.patterns, o.iterations, o.seed, parse_method(o.method)}, bar.callback());
   }
   if (o.json) {
     JsonObject js = JsonObject::array();
@@ -47,6 +50,7 @@ void run_table3(Table3Options& o, std::ostream& out) {
     doc.update(JsonObject{{"family", "P(16,16,4)"},
                           {"patterns", o.patterns},
                           {"seed", o.seed},
+                          {"method", o.method},
                           {"filter", metric.filter().name()},
                           {"acuity", metric.acuity().name},
                           {"rows", js}});
@@ -77,6 +81,11 @@ Action add_table3_command(CLI::App& app) {
   cmd->add_option("--iterations", o->iterations, "optimizer iterations per stage")
       ->capture_default_str()
       ->check(CLI::Range(1, 10000000));
+  cmd->add_option("--method", o->method,
+                  "Opt W+P's method: descent (with its minimax polish), or the epigraph form with "
+                  "NLopt: slsqp, mma, ccsaq")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"descent", "minimax", "slsqp", "mma", "ccsaq"}));
   cmd->add_flag("--json", o->json, "print the numbers as JSON");
   o->metric.add_to(cmd);
   return [o](std::ostream& out) { run_table3(*o, out); };

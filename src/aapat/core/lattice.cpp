@@ -20,20 +20,21 @@ double snap_coordinate(double v, int steps) {
   return k / steps;
 }
 
-Vec2 snap_sample(Vec2 v, int steps, bool shared_borders) {
+Vec2 snap_sample(Vec2 v, int steps, bool shared_borders, bool y_down) {
   if (shared_borders) return {snap_coordinate(v.x, steps), snap_coordinate(v.y, steps)};
   const double half = steps / 2.0;
-  return {std::clamp(std::round(v.x * steps), -half, half - 1) / steps,
-          std::clamp(std::round(v.y * steps), -(half - 1), half) / steps};
+  const double y = y_down ? std::clamp(std::round(v.y * steps), -(half - 1), half)
+                          : std::clamp(std::round(v.y * steps), -half, half - 1);
+  return {std::clamp(std::round(v.x * steps), -half, half - 1) / steps, y / steps};
 }
 
-Pattern snap_to_lattice(const Pattern& p, int steps) {
+Pattern snap_to_lattice(const Pattern& p, int steps, bool y_down) {
   if (steps < 2 || steps > 256 || steps % 2 != 0)
     throw ParameterError("lattice",
                          fmt::format(" {}: expected an even number of steps from 2 to 256", steps));
   Pattern q = p;
   for (auto& set : q.sets)
-    for (Vec2& s : set) s = snap_sample(s, steps, p.footprint.plus);
+    for (Vec2& s : set) s = snap_sample(s, steps, p.footprint.plus, y_down);
   q.provenance.emplace_back("lattice", fmt::format("snapped to 1/{} pixel", steps));
   validate(q);  // two samples that met on one lattice point are caught here
   return q;

@@ -22,14 +22,15 @@ constexpr int kLatticeSteps = 16;  // 1/16 pixel: 4 sub-pixel bits
 double snap_coordinate(double v, int steps);
 
 // A sample snapped. Shared borders: snap_coordinate on both axes. Without
-// sharing, the pixel's own addressable square of Direct3D, Vulkan and Metal:
-// x in [-1/2, 1/2 - 1/steps], y (up) in [-1/2 + 1/steps, 1/2], so the
-// standard patterns' -8 positions stay where they are.
-Vec2 snap_sample(Vec2 v, int steps, bool shared_borders);
+// sharing, the pixel's own addressable square: x in [-1/2, 1/2 - 1/steps],
+// and for the APIs whose y points down (Direct3D, Vulkan, Metal) y (up) in
+// [-1/2 + 1/steps, 1/2], so the standard patterns' -8 positions stay where
+// they are; for OpenGL (y up) in [-1/2, 1/2 - 1/steps].
+Vec2 snap_sample(Vec2 v, int steps, bool shared_borders, bool y_down = true);
 
 // Every sample of every set snapped (borders kept for 1+ footprints); weights
 // kept; provenance notes the snap.
-Pattern snap_to_lattice(const Pattern& p, int steps);
+Pattern snap_to_lattice(const Pattern& p, int steps, bool y_down = true);
 
 // Empty when every sample is on the lattice, else which sample is not.
 std::string off_lattice_sample(const Pattern& p, int steps);

@@ -1,5 +1,7 @@
 #include "aapat/io/pattern_json.h"
 
+#include "aapat/io/aapat_catalog.h"
+
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -199,6 +201,7 @@ Pattern resolve_pattern(const std::string& name_or_path) {
     throw Error(fmt::format("pattern '{}': it is a folder, not a pattern file", name_or_path));
   if (is_pattern_path(name_or_path) || std::filesystem::is_regular_file(name_or_path, ec))
     return load_pattern_file(name_or_path);
+  if (in_aapat_catalog(name_or_path)) return aapat_catalog_pattern(name_or_path);
   return catalog_pattern(name_or_path);
 }
 

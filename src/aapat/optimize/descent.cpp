@@ -1,5 +1,7 @@
 #include "aapat/optimize/descent.h"
 
+#include "aapat/optimize/epigraph.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -16,6 +18,11 @@ void step(const Problem& from, const Direction& dir, double c0, bool nonnegative
 }  // namespace
 
 RunResult descend(const Objective& objective, Problem& problem, const OptimizerSettings& s) {
+  if (is_epigraph(s.method))
+    return epigraph(objective, problem, s,
+                    s.method == Method::kSlsqp ? EpigraphAlgorithm::slsqp
+                    : s.method == Method::kMma ? EpigraphAlgorithm::mma
+                                               : EpigraphAlgorithm::ccsaq);
   Workspace ws;
   Direction dir;
   RunResult r = begin_run(objective, problem, s.nonnegative_weights, ws);

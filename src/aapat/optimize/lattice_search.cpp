@@ -23,11 +23,11 @@ bool can_take(double v, double limit, int steps) {
 }  // namespace
 
 LatticeRun lattice_descent(const Metric& metric, Problem& problem, int steps,
-                           const OptimizerSettings& settings) {
+                           const OptimizerSettings& settings, bool y_down) {
   const Objective objective(metric);
   Workspace ws;
   const bool borders = problem.layout.footprint.plus;
-  for (Generator& g : problem.generators) g.pos = snap_sample(g.pos, steps, borders);
+  for (Generator& g : problem.generators) g.pos = snap_sample(g.pos, steps, borders, y_down);
   LatticeRun run;
   run.snapped_e2 = objective.e2(problem, ws);
   double e2 = optimize_weights(objective, problem, settings);
@@ -87,12 +87,12 @@ LatticeRun lattice_descent(const Metric& metric, Problem& problem, int steps,
 
 LatticeSearch lattice_search(const Metric& metric, int starts,
                              const std::function<Problem(int)>& make_start, int steps,
-                             const OptimizerSettings& settings) {
+                             const OptimizerSettings& settings, bool y_down) {
   std::vector<Problem> problems(starts);
   std::vector<LatticeRun> runs(starts);
   tbb::parallel_for(0, starts, [&](int i) {
     problems[i] = make_start(i);
-    runs[i] = lattice_descent(metric, problems[i], steps, settings);
+    runs[i] = lattice_descent(metric, problems[i], steps, settings, y_down);
   });
   LatticeSearch r;
   r.starts = starts;
@@ -105,7 +105,8 @@ LatticeSearch lattice_search(const Metric& metric, int starts,
 
 LatticeSearch lattice_search_from(const Metric& metric, const Problem& continuous_best,
                                   const std::function<Problem(int)>& make_seed, int starts,
-                                  uint64_t seed, int steps, const OptimizerSettings& settings) {
+                                  uint64_t seed, int steps, const OptimizerSettings& settings,
+                                  bool y_down) {
   return lattice_search(
       metric, std::clamp(starts, 1, 32),
       [&](int i) {
@@ -113,7 +114,7 @@ LatticeSearch lattice_search_from(const Metric& metric, const Problem& continuou
         auto rng = start_rng(seed + 7, static_cast<uint64_t>(i));
         return i % 2 == 1 ? perturbed(continuous_best, 0.15, rng) : make_seed(i);
       },
-      steps, settings);
+      steps, settings, y_down);
 }
 
 }  // namespace aapat

@@ -21,10 +21,12 @@ struct LatticeRun {
   int moves = 0;
 };
 
-// Snaps every generator (snap_coordinate) and descends on the lattice.
-// settings: nonnegative_weights and the weight optimization's iterations.
+// Snaps every generator (snap_sample; y_down: the API's y orientation, which
+// decides which border a pixel's own samples may sit on) and descends on the
+// lattice. settings: nonnegative_weights and the weight optimization's
+// iterations.
 LatticeRun lattice_descent(const Metric& metric, Problem& problem, int steps,
-                           const OptimizerSettings& settings);
+                           const OptimizerSettings& settings, bool y_down = true);
 
 struct LatticeSearch {
   Problem best;
@@ -37,13 +39,14 @@ struct LatticeSearch {
 // lowest E2 wins (ties: the lowest start), whatever the thread count.
 LatticeSearch lattice_search(const Metric& metric, int starts,
                              const std::function<Problem(int)>& make_start, int steps,
-                             const OptimizerSettings& settings);
+                             const OptimizerSettings& settings, bool y_down = true);
 
 // After a continuous search: up to 32 lattice starts, from its best (start
 // 0), from kicks of up to 0.15 pixel around it (odd starts) and from fresh
 // seeds make_seed(i) (even starts), all snapped and descended.
 LatticeSearch lattice_search_from(const Metric& metric, const Problem& continuous_best,
                                   const std::function<Problem(int)>& make_seed, int starts,
-                                  uint64_t seed, int steps, const OptimizerSettings& settings);
+                                  uint64_t seed, int steps, const OptimizerSettings& settings,
+                                  bool y_down = true);
 
 }  // namespace aapat

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "aapat/core/filter_catalog.h"
+#include "aapat/core/hardware_layout.h"
+#include "aapat/core/lattice.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/optimize/objective.h"
 
@@ -13,6 +15,25 @@ namespace {
 
 // The search ends at a lattice point where no single move lowers E2 (with
 // the final weights), never above where it started, every sample on the lattice.
+// A pixel's own samples may sit on the border its API addresses: the top
+// one for the APIs whose y points down (y up 8/16), the bottom one for
+// OpenGL (y up -8/16). Found by building the catalog for gl.
+TEST(LatticeSearch, EachApisOwnBorder) {
+  EXPECT_EQ(snap_sample({0.49, 0.49}, 16, false, true).y, 0.5);
+  EXPECT_EQ(snap_sample({0.49, 0.49}, 16, false, false).y, 7.0 / 16);
+  EXPECT_EQ(snap_sample({0.49, -0.49}, 16, false, false).y, -0.5);
+  EXPECT_EQ(snap_sample({0.49, 0.49}, 16, false, false).x, 7.0 / 16);
+  const Metric metric(make_filter("mitchell"), laine_aila_acuity());
+  for (const ApiProfile& profile : api_profiles()) {
+    // Samples pressed against every border: the search must end on addressable points.
+    Problem p = problem_from_pattern(single_pixel_pattern(
+        "corners", {{0.49, 0.49}, {-0.49, 0.49}, {0.49, -0.49}, {-0.49, -0.49}},
+        {0.25, 0.25, 0.25, 0.25}));
+    lattice_descent(metric, p, 16, OptimizerSettings{}, profile.y_down);
+    EXPECT_NO_THROW(hardware_layout(pattern_of(p), profile)) << profile.name;
+  }
+}
+
 TEST(LatticeSearch, EndsAtALocalOptimumOfTheLattice) {
   const Metric metric(make_filter("mitchell"), laine_aila_acuity());
   Problem p = problem_from_pattern(catalog_pattern("fliptri"));

@@ -50,11 +50,15 @@ class Objective {
   // The plain gradient of W E1 at one (kernel, angle), for tests.
   void term_gradient(const Problem& pr, Workspace& ws, int kernel, int angle, Direction& dir) const;
 
+  // Adds scale * grad(W E1) at one (kernel, angle) to `dir`, unconstrained
+  // (each generator's full 2D gradient, every weight's): the kernels of `ws`
+  // as e2() left them.
+  void add_term_gradient(const Problem& pr, Workspace& ws, int kernel, int angle, double scale,
+                         Direction& dir) const;
+
  private:
   void fill_kernels(const Problem& pr, Workspace& ws) const;
   void constrain(const Problem& pr, bool move_positions, Direction& dir) const;
-  void add_term_gradient(const Problem& pr, Workspace& ws, int kernel, int angle, double scale,
-                         Direction& dir) const;
 
   const Metric& metric_;
 };

@@ -81,6 +81,8 @@ Problem mirrored_problem(const Pattern& tile) {
 }
 
 Problem problem_from_pattern(const Pattern& p) {
+  validate(
+      p);  // a pattern built in code, weights and sets of different sizes: an Error, not a crash
   if (is_mirrored_tile(p)) return mirrored_problem(p);
   Problem pr;
   pr.layout = p;

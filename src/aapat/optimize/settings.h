@@ -6,7 +6,12 @@
 
 namespace aapat {
 
-enum class Method { kDescent, kMinimax, kAnneal };
+// The descent heuristic, the minimax descent, annealing, and the epigraph
+// form with NLopt's SLSQP, MMA or CCSAQ (optimize/epigraph.h).
+enum class Method { kDescent, kMinimax, kAnneal, kSlsqp, kMma, kCcsaq };
+inline bool is_epigraph(Method m) {
+  return m == Method::kSlsqp || m == Method::kMma || m == Method::kCcsaq;
+}
 
 struct OptimizerSettings {
   Method method = Method::kDescent;

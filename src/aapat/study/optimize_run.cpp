@@ -48,10 +48,12 @@ LatticeStage lattice_stage(const Metric& metric, const OptimizeRunSettings& s,
   if (profile) {
     stage.profile = profile->name;
     // Fails early, naming the reason, if the family cannot fit the profile.
-    hardware_layout(snap_to_lattice(pattern_of(make_seed(0)), s.lattice), *profile);
+    hardware_layout(snap_to_lattice(pattern_of(make_seed(0)), s.lattice, profile->y_down),
+                    *profile);
   }
   const LatticeSearch lat = lattice_search_from(metric, result.best_problem, make_seed, starts,
-                                                s.seed, s.lattice, s.optimizer);
+                                                s.seed, s.lattice, s.optimizer,
+                                                profile ? profile->y_down : true);
   result.best_problem = lat.best;
   stage.continuous_e2 = result.starts[result.best].run.final_e2;
   stage.snapped_e2 = lat.run.snapped_e2;
@@ -93,7 +95,10 @@ struct MethodText {
 constexpr MethodText kMethods[] = {
     {Method::kDescent, "descent", "Laine-Aila heuristic (t 0.99, c1 = 100 c0)"},
     {Method::kMinimax, "minimax", "eps-active minimum-norm descent"},
-    {Method::kAnneal, "anneal", "simulated annealing"}};
+    {Method::kAnneal, "anneal", "simulated annealing"},
+    {Method::kSlsqp, "slsqp", "epigraph form, NLopt SLSQP"},
+    {Method::kMma, "mma", "epigraph form, NLopt MMA"},
+    {Method::kCcsaq, "ccsaq", "epigraph form, NLopt CCSAQ"}};
 
 const MethodText& text_of(Method m) {
   for (const MethodText& t : kMethods)
@@ -114,7 +119,8 @@ std::string method_key(Method m) {
 Method parse_method(std::string_view name) {
   for (const MethodText& t : kMethods)
     if (name == t.key) return t.method;
-  throw Error(fmt::format("method '{}': known methods are descent, minimax, anneal", name));
+  throw Error(fmt::format(
+      "method '{}': known methods are descent, minimax, anneal, slsqp, mma, ccsaq", name));
 }
 
 OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& settings,

@@ -56,6 +56,7 @@ Table3Row table3_row(const Metric& metric, const Table3Settings& s, const char* 
   const MultiStartResult w = multistart(
       metric, 1, s.seed, [&](int) { return problem_from_pattern(best); }, settings, 0);
   settings.weights_only = false;
+  settings.method = s.method;
   const Problem after_w = w.best_problem;
   const MultiStartResult wp = multistart(
       metric, 1, s.seed, [&](int) { return after_w; }, settings, 0);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "aapat/core/metric.h"
+#include "aapat/optimize/settings.h"
 #include "aapat/study/progress.h"
 
 namespace aapat {
@@ -20,6 +21,9 @@ struct Table3Settings {
   int patterns = 1000;  // per distribution
   int iterations = 4000;
   uint64_t seed = 1;
+  // The Opt W+P stage's method (Opt W is the descent's convex optimum):
+  // the default descent with its minimax polish, or an epigraph method.
+  Method method = Method::kDescent;
 };
 struct Table3Row {
   std::string distribution;  // "jittered grid", "Poisson disk"

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Builds data/patterns/: for every budget a user would choose, the best pattern
+# aapat finds under the objective the study recommends (docs/study.md: the L2
+# mean of W E1 over every degree, uniform weights, Mitchell-Netravali), free
+# and on each API's 1/16-pixel lattice. The files carry their provenance and
+# are committed; the build embeds them as the catalog's aapat-* patterns.
+# Not part of the test suite: about 40 minutes on 2 cores.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+aapat=${AAPAT:-$root/build/release/aapat}
+out=$root/data/patterns
+mkdir -p "$out"
+objective=(--acuity uniform:step=1 --norm 2)
+starts=${AAPAT_CATALOG_STARTS:-64}
+search() {  # name family [optimize options...]
+  local name=$1 family=$2
+  shift 2
+  # AAPAT_CATALOG_RESUME=1 keeps the files already written (an interrupted run).
+  if [ "${AAPAT_CATALOG_RESUME:-0}" = 1 ] && [ -f "$out/$name.json" ]; then return; fi
+  echo "== $name ($family $*)"
+  "$aapat" optimize --family "$family" "${objective[@]}" --starts "$starts" --seed 1 "$@" \
+    -o "$out/$name.json" | tail -1
+}
+# One pixel, 1 to 16 samples: free, and on the lattice of every API that holds it
+# (Metal takes at most 8; D3D12 tier 2's lattice for one pixel is tier 1's).
+for n in $(seq 1 16); do
+  search "aapat-$n" "P(1,1,$n)"
+  for api in d3d12-tier1 vulkan gl; do search "aapat-$n-$api" "P(1,1,$n)" --api "$api"; done
+  if [ "$n" -le 8 ]; then search "aapat-$n-metal" "P(1,1,$n)" --api metal; fi
+done
+# Hasselgren's sharing family, 1.25 to 4 samples per pixel (every placement searched).
+for n in 1.25 1.5 1.75 2 3 4; do
+  search "aapat-shared-$n" "P(4,1+,$n)"
+  for api in d3d12-tier2 vulkan gl; do search "aapat-shared-$n-$api" "P(4,1+,$n)" --api "$api"; done
+done
+# 2x2-pixel kernels (Laine-Aila's P(4,4,n)); D3D12 tier 2 holds 4 samples per pixel at most.
+for n in 1 2 3 4 6 8; do
+  search "aapat-2x2-$n" "P(4,4,$n)"
+  for api in vulkan gl; do search "aapat-2x2-$n-$api" "P(4,4,$n)" --api "$api"; done
+  if [ "$n" -le 4 ]; then search "aapat-2x2-$n-d3d12-tier2" "P(4,4,$n)" --api d3d12-tier2; fi
+done
+echo "catalog written under $out"

@@ -1,0 +1,275 @@
+#include "aapat/study/objective_study.h"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+#include "aapat/core/acuity.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/core/metric.h"
+#include "aapat/generate/catalog.h"
+#include "aapat/generate/point_generators.h"
+#include "aapat/io/pattern_json.h"
+#include "aapat/io/scene_json.h"
+#include "aapat/optimize/family.h"
+#include "aapat/optimize/multistart.h"
+#include "aapat/render/image_error.h"
+#include "aapat/render/renderer.h"
+#include "aapat/render/ssim.h"
+
+namespace aapat {
+namespace {
+
+// The deviations a rendering is judged by beyond its RMSE: the RMS of those
+// of 32 levels (12.5%) and more, the histogram's tail.
+constexpr int kTailLevel = 32;
+
+bool one_pixel(const Pattern& p, int n) {
+  return p.set_count() == 1 && p.footprint.size == 1 && !p.footprint.plus &&
+         static_cast<int>(p.sets[0].size()) == n;
+}
+
+// The frames of a study scene at `size`.
+std::vector<Scene> frames_of(const std::string& scene, int size, int frames) {
+  std::vector<Scene> out;
+  if (scene == "triangle" || scene == "circle") {
+    for (int f = 0; f < frames; ++f) out.push_back(animation_frame(scene, size, size, f, frames));
+  } else if (scene == "halfplane") {
+    // Every edge angle: the normal turns by 180 / frames degrees a frame,
+    // offset from the axes so that no frame is axis-aligned by accident.
+    const Vec2 centre{(size - 1) / 2.0, (size - 1) / 2.0};
+    for (int f = 0; f < frames; ++f)
+      out.push_back(HalfPlaneScene{centre, 180.0 * (f + 0.37) / frames, 0.21});
+  } else {
+    out.push_back(resolve_scene(scene, size, size));
+  }
+  return out;
+}
+
+// The patterns of one budget: the catalog's and the included ones that are
+// P(1,1,n), the optimum found under each objective, then random point sets
+// with equal weights until there are enough.
+std::vector<StudyPattern> budget_patterns(const StudySettings& s,
+                                          const std::vector<StudyObjective>& objectives, int n) {
+  std::vector<StudyPattern> out;
+  for (const auto& entry : pattern_registry().entries()) {
+    std::string name = entry.info.name;
+    if (name == "grid-NxN") {
+      const int k = static_cast<int>(std::lround(std::sqrt(double(n))));
+      if (k * k != n || k == 2) continue;  // grid-2x2 is box2x2
+      name = fmt::format("grid-{}x{}", k, k);
+    }
+    const Pattern p = catalog_pattern(name);
+    if (one_pixel(p, n)) out.push_back({name, "catalog", p, {}, {}, {}});
+  }
+  for (const std::string& spec : s.include) {
+    const Pattern p = resolve_pattern(spec);
+    if (one_pixel(p, n)) out.push_back({spec, "included", p, {}, {}, {}});
+  }
+  const FamilySpec family = parse_family(fmt::format("P(1,1,{})", n), "");
+  for (const StudyObjective& o : objectives) {
+    const Metric metric(make_filter(o.filter), make_acuity(o.acuity), o.norm);
+    OptimizerSettings settings;
+    settings.method = o.norm == Metric::kMaxNorm ? Method::kSlsqp : Method::kDescent;
+    settings.max_iterations = o.norm == Metric::kMaxNorm ? 1000 : 4000;
+    const MultiStartResult r =
+        multistart(metric, s.starts, s.seed,
+                   family_seeds(family, SeedKind::kJittered, s.seed, metric.filter()), settings, 0);
+    Pattern p = pattern_of(r.best_problem);
+    p.name = fmt::format("opt-{}-{}", n, o.name());
+    out.push_back({p.name, "optimized for " + o.name(), p, {}, {}, {}});
+  }
+  const std::vector<std::string> generators = {"random", "n-rooks", "poisson", "best-candidate",
+                                               "semi-jittered:amount=0.7"};
+  for (uint64_t seed = s.seed; static_cast<int>(out.size()) < s.patterns; ++seed)
+    for (const std::string& g : generators) {
+      if (static_cast<int>(out.size()) >= s.patterns) break;
+      if (g.starts_with("semi-jittered") || g == "jittered") {
+        const int k = static_cast<int>(std::lround(std::sqrt(double(n))));
+        if (k * k != n) continue;
+      }
+      const std::string name = fmt::format("{} #{}", g, seed);
+      out.push_back({name,
+                     "generator " + g,
+                     points_to_pattern(generate_points(g, n, seed), name),
+                     {},
+                     {},
+                     {}});
+    }
+  return out;
+}
+
+// One pattern's rendered measures on one scene: every frame against its
+// reference, the deviations of all frames together.
+std::array<double, 4> render_measures(const Pattern& p, const std::vector<Scene>& frames,
+                                      const std::vector<Image>& references, int size) {
+  Sampling sampling;
+  sampling.pattern = p;
+  ImageError total;
+  double pixels = 0, ssim_sum = 0;
+  for (size_t f = 0; f < frames.size(); ++f) {
+    const Image image = render(frames[f], size, size, sampling, std::nullopt);
+    const ImageError e = compare(image, references[f]);
+    for (int i = 0; i < 256; ++i) total.count[i] += e.count[i];
+    total.max_deviation = std::max(total.max_deviation, e.max_deviation);
+    pixels += static_cast<double>(image.values.size());
+    ssim_sum += size >= kSsimWindow ? ssim(image, references[f]) : 1.0;
+  }
+  summarize(total, pixels);
+  double tail = 0;
+  for (int i = kTailLevel; i < 256; ++i) tail += total.contribution[i];
+  return {total.rmse, double(total.max_deviation), 1 - ssim_sum / double(frames.size()),
+          std::sqrt(tail)};
+}
+
+}  // namespace
+
+std::string StudyObjective::name() const {
+  return fmt::format("{} L{}", acuity, norm == Metric::kMaxNorm ? "inf" : format_norm(norm));
+}
+
+void validate(const StudySettings& s) {
+  if (s.budgets.empty()) throw ParameterError("budgets", ": name at least one sample budget");
+  for (const int n : s.budgets)
+    if (n < 1 || n > 64) throw ParameterError("budgets", fmt::format(" {}: expected 1 to 64", n));
+  if (s.patterns < 3 || s.patterns > 1000)
+    throw ParameterError("patterns", fmt::format(" {}: expected 3 to 1000 per budget", s.patterns));
+  if (s.acuities.empty() || s.norms.empty() || s.scenes.empty())
+    throw ParameterError("objectives", ": name at least one acuity table, norm and scene");
+  if (s.size < 8 || s.size > 1024)
+    throw ParameterError("size", fmt::format(" {}: expected 8 to 1024 pixels", s.size));
+  if (s.frames < 1 || s.frames > 1024)
+    throw ParameterError("frames", fmt::format(" {}: expected 1 to 1024", s.frames));
+  if (s.starts < 1 || s.starts > 10000)
+    throw ParameterError("starts", fmt::format(" {}: expected 1 to 10000", s.starts));
+  if (s.resamples < 0 || s.resamples > 100000)
+    throw ParameterError("resamples", fmt::format(" {}: expected 0 to 100000", s.resamples));
+  for (const std::string& a : s.acuities) make_acuity(a);
+  make_filter(s.filter);
+  for (const double p : s.norms) Metric(make_filter(s.filter), make_acuity(s.acuities[0]), p);
+  for (const std::string& scene : s.scenes) frames_of(scene, 8, 1);
+}
+
+std::vector<StudyObjective> study_objectives(const StudySettings& s) {
+  std::vector<StudyObjective> out;
+  for (const std::string& a : s.acuities)
+    for (const double p : s.norms) out.push_back({s.filter, a, p});
+  return out;
+}
+
+namespace {
+
+// Every scene's frames and their references (from the cache when there is one).
+struct SceneFrames {
+  std::vector<std::vector<Scene>> frames;
+  std::vector<std::vector<Image>> references;
+};
+SceneFrames scene_frames(const StudySettings& s, const ReferenceSource& references,
+                         const StudyProgress& progress) {
+  SceneFrames out;
+  for (size_t sc = 0; sc < s.scenes.size(); ++sc) {
+    out.frames.push_back(frames_of(s.scenes[sc], s.size, s.frames));
+    out.references.emplace_back();
+    for (size_t f = 0; f < out.frames.back().size(); ++f) {
+      ReferenceSettings ref = s.reference;
+      ref.seed += 7919 * (f + 1);
+      out.references.back().push_back(references(out.frames.back()[f], s.size, s.size, ref, 0));
+    }
+    if (progress)
+      progress(static_cast<int>(sc + 1), static_cast<int>(s.scenes.size()), "references");
+  }
+  return out;
+}
+
+// Each pattern's objectives, rendered measures (every pattern on every scene
+// in parallel, each result in its own slot) and per-degree profile.
+void measure(std::vector<StudyPattern>& patterns, const StudySettings& s,
+             const std::vector<StudyObjective>& objectives, const SceneFrames& scenes) {
+  std::vector<Metric> metrics;
+  for (const StudyObjective& o : objectives)
+    metrics.emplace_back(make_filter(o.filter), make_acuity(o.acuity), o.norm);
+  const Metric degree(make_filter(s.filter), make_acuity("uniform:step=1"));
+  for (StudyPattern& p : patterns) p.measures.assign(s.scenes.size(), {});
+  tbb::parallel_for(size_t{0}, patterns.size() * s.scenes.size(), [&](size_t task) {
+    const size_t i = task / s.scenes.size(), sc = task % s.scenes.size();
+    patterns[i].measures[sc] =
+        render_measures(patterns[i].pattern, scenes.frames[sc], scenes.references[sc], s.size);
+  });
+  tbb::parallel_for(size_t{0}, patterns.size(), [&](size_t i) {
+    StudyPattern& p = patterns[i];
+    p.objective.clear();
+    for (const Metric& m : metrics) p.objective.push_back(m.evaluate(p.pattern).e2);
+    p.profile = degree.profile(make_kernel(p.pattern, 0));
+  });
+}
+
+}  // namespace
+
+std::vector<StudyPattern> measure_patterns(std::vector<StudyPattern> patterns,
+                                           const StudySettings& s,
+                                           const ReferenceSource& references) {
+  validate(s);
+  measure(patterns, s, study_objectives(s), scene_frames(s, references, {}));
+  return patterns;
+}
+
+StudyResult objective_study(const StudySettings& s, const ReferenceSource& references,
+                            const StudyProgress& progress) {
+  validate(s);
+  StudyResult r;
+  r.objectives = study_objectives(s);
+  for (size_t o = 0; o < r.objectives.size(); ++o)
+    if (r.objectives[o].acuity == "laine-aila" && r.objectives[o].norm == Metric::kMaxNorm)
+      r.papers = static_cast<int>(o);
+  r.scenes = s.scenes;
+  const SceneFrames scenes = scene_frames(s, references, progress);
+
+  int done = 0;
+  for (const int n : s.budgets) {
+    BudgetStudy b;
+    b.budget = n;
+    if (progress)
+      progress(done, static_cast<int>(s.budgets.size()), fmt::format("{} samples: optimizing", n));
+    b.patterns = budget_patterns(s, r.objectives, n);
+    const size_t count = b.patterns.size();
+    measure(b.patterns, s, r.objectives, scenes);
+    // The correlations, each with its own bootstrap seed from its place.
+    b.correlations.resize(r.objectives.size() * s.scenes.size() * kStudyMeasures.size());
+    tbb::parallel_for(size_t{0}, b.correlations.size(), [&](size_t c) {
+      const size_t m = c % kStudyMeasures.size(),
+                   sc = (c / kStudyMeasures.size()) % s.scenes.size(),
+                   o = c / (kStudyMeasures.size() * s.scenes.size());
+      std::vector<double> x(count), y(count);
+      for (size_t i = 0; i < count; ++i) {
+        x[i] = b.patterns[i].objective[o];
+        y[i] = b.patterns[i].measures[sc][m];
+      }
+      b.correlations[c] = {static_cast<int>(o), static_cast<int>(sc), static_cast<int>(m),
+                           rank_correlation(x, y, s.resamples, 0.95, s.seed * 1000003 + c)};
+    });
+    b.mean_spearman.assign(r.objectives.size(), 0.0);
+    std::vector<int> counted(r.objectives.size(), 0);
+    for (const StudyCorrelation& c : b.correlations)
+      if (!std::isnan(c.r.spearman.value)) {
+        b.mean_spearman[static_cast<size_t>(c.objective)] += c.r.spearman.value;
+        ++counted[static_cast<size_t>(c.objective)];
+      }
+    for (size_t o = 0; o < r.objectives.size(); ++o) b.mean_spearman[o] /= std::max(1, counted[o]);
+    r.budgets.push_back(std::move(b));
+    if (progress)
+      progress(++done, static_cast<int>(s.budgets.size()), fmt::format("{} samples", n));
+  }
+  r.mean_spearman.assign(r.objectives.size(), 0.0);
+  for (const BudgetStudy& b : r.budgets)
+    for (size_t o = 0; o < r.objectives.size(); ++o)
+      r.mean_spearman[o] += b.mean_spearman[o] / double(r.budgets.size());
+  r.recommended = static_cast<int>(
+      std::max_element(r.mean_spearman.begin(), r.mean_spearman.end()) - r.mean_spearman.begin());
+  return r;
+}
+
+}  // namespace aapat

@@ -1,0 +1,102 @@
+// Which objective predicts rendered error? For each sample budget n, a set
+// of one-pixel patterns P(1,1,n) (the catalog's, patterns optimized under
+// each objective, random point sets with equal weights), each measured by
+// every objective (filter x acuity table x norm over angles) and rendered
+// with its own weights on a suite of scenes (the rotating triangle and the
+// translating circle, Hasselgren's animations; a half-plane through the
+// centre rotating over every edge angle; the spiral, the circles, the
+// checkerboard), every rendering against its dense reference: RMSE, maximum
+// deviation, 1 - SSIM, and the squared-error histogram's tail (the RMS of
+// the deviations of 32 levels and more). The rank correlations (Spearman,
+// Kendall) between each objective and each rendered measure across the
+// patterns, with bootstrap intervals, say which objective ranks patterns as
+// their renderings do.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "aapat/core/pattern.h"
+#include "aapat/render/reference.h"
+#include "aapat/study/progress.h"
+#include "aapat/study/rank_correlation.h"
+
+namespace aapat {
+
+struct StudyObjective {
+  std::string filter, acuity;
+  double norm;               // Metric::kMaxNorm for the maximum
+  std::string name() const;  // "laine-aila L_inf", "uniform:step=1 L_2", ...
+};
+
+// The rendered measures, each larger = worse.
+inline constexpr std::array<const char*, 4> kStudyMeasures = {"rmse", "max_deviation",
+                                                              "one_minus_ssim", "tail_rms"};
+
+struct StudySettings {
+  std::vector<int> budgets{2, 4, 8};  // samples per pixel, P(1,1,n)
+  int patterns = 30;                  // per budget, at least
+  std::vector<std::string> include;   // more patterns (catalog names, files) where n fits
+  std::string filter = "mitchell";
+  std::vector<std::string> acuities{"laine-aila", "linear:step=1", "uniform:step=1"};
+  std::vector<double> norms{std::numeric_limits<double>::infinity(), 2, 4};  // max, L2, L4
+  // triangle, circle (animations), halfplane (rotating through every edge
+  // angle), and any render scene (spiral, circles, checkerboard, ...).
+  std::vector<std::string> scenes{"triangle", "circle",  "halfplane",
+                                  "spiral",   "circles", "checkerboard"};
+  int size = 64;    // pixels a side
+  int frames = 16;  // per animated scene
+  int starts = 8;   // optimizer starts per objective and budget
+  int resamples = 1000;
+  uint64_t seed = 1;
+  ReferenceSettings reference{256, "mitchell", 1};
+};
+
+struct StudyPattern {
+  std::string name, source;  // source: "catalog", "optimized for ...", "generator ..."
+  Pattern pattern;
+  std::vector<double> objective;                // per objective: E2
+  std::vector<std::array<double, 4>> measures;  // per scene: kStudyMeasures
+  std::vector<double> profile;  // W E1 every degree (uniform table, the objectives' filter)
+};
+
+struct StudyCorrelation {
+  int objective, scene, measure;
+  RankCorrelation r;
+};
+
+struct BudgetStudy {
+  int budget = 0;
+  std::vector<StudyPattern> patterns;
+  std::vector<StudyCorrelation> correlations;
+  std::vector<double> mean_spearman;  // per objective, over scenes and measures
+};
+
+struct StudyResult {
+  std::vector<StudyObjective> objectives;
+  std::vector<std::string> scenes;
+  std::vector<BudgetStudy> budgets;
+  std::vector<double> mean_spearman;  // per objective, over budgets, scenes, measures
+  int recommended = 0;                // the objective with the highest mean_spearman
+  int papers = 0;                     // the papers' objective (laine-aila, the maximum)
+};
+
+// Throws ParameterError naming a setting out of range before any work.
+void validate(const StudySettings& s);
+
+// The study's objectives (filter x acuity table x norm) in their order.
+std::vector<StudyObjective> study_objectives(const StudySettings& s);
+
+// Every objective and rendered measure of the given patterns (any family:
+// each renders with its own weights), without correlations: the catalog's
+// comparisons.
+std::vector<StudyPattern> measure_patterns(std::vector<StudyPattern> patterns,
+                                           const StudySettings& settings,
+                                           const ReferenceSource& references);
+StudyResult objective_study(const StudySettings& settings, const ReferenceSource& references,
+                            const StudyProgress& progress = {});
+
+}  // namespace aapat

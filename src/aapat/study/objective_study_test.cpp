@@ -1,0 +1,101 @@
+#include "aapat/study/objective_study.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+
+#include "aapat/core/filter_catalog.h"
+#include "aapat/core/metric.h"
+
+namespace aapat {
+namespace {
+
+StudySettings small() {
+  StudySettings s;
+  s.budgets = {2};
+  s.patterns = 8;
+  s.acuities = {"laine-aila", "uniform:step=10"};
+  s.norms = {Metric::kMaxNorm, 2};
+  s.scenes = {"halfplane", "disc"};
+  s.size = 16;
+  s.frames = 3;
+  s.starts = 2;
+  s.resamples = 50;
+  s.reference.samples = 16;
+  return s;
+}
+
+// The study's parts: every objective on every pattern is the metric's E2;
+// the correlations are in [-1, 1] with their intervals around them; the
+// same settings give the same study on any thread count.
+TEST(ObjectiveStudy, SmallStudyIsConsistentAndDeterministic) {
+  const StudySettings s = small();
+  const StudyResult r = objective_study(s, render_reference);
+  ASSERT_EQ(r.objectives.size(), 4u);
+  EXPECT_EQ(r.objectives[static_cast<size_t>(r.papers)].name(), "laine-aila Linf");
+  ASSERT_EQ(r.budgets.size(), 1u);
+  const BudgetStudy& b = r.budgets[0];
+  EXPECT_GE(b.patterns.size(), 8u);
+  for (const StudyPattern& p : b.patterns) {
+    EXPECT_EQ(p.pattern.sets[0].size(), 2u) << p.name;
+    ASSERT_EQ(p.objective.size(), 4u);
+    const Metric papers(make_filter("mitchell"), laine_aila_acuity());
+    EXPECT_EQ(p.objective[0], papers.evaluate(p.pattern).e2) << p.name;
+    ASSERT_EQ(p.measures.size(), 2u);
+    for (const auto& m : p.measures) {
+      EXPECT_GE(m[0], 0);
+      EXPECT_GE(m[1], 0);
+      EXPECT_LE(m[1], 255);
+    }
+    EXPECT_EQ(p.profile.size(), 180u);
+  }
+  EXPECT_EQ(b.correlations.size(), 4u * 2u * kStudyMeasures.size());
+  for (const StudyCorrelation& c : b.correlations) {
+    if (std::isnan(c.r.spearman.value)) continue;
+    EXPECT_GE(c.r.spearman.value, -1);
+    EXPECT_LE(c.r.spearman.value, 1);
+    EXPECT_LE(c.r.spearman.low, c.r.spearman.high);
+  }
+  StudyResult one;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = objective_study(s, render_reference);
+  }
+  ASSERT_EQ(one.budgets[0].patterns.size(), b.patterns.size());
+  for (size_t i = 0; i < b.patterns.size(); ++i) {
+    EXPECT_EQ(one.budgets[0].patterns[i].objective, b.patterns[i].objective);
+    EXPECT_EQ(one.budgets[0].patterns[i].measures, b.patterns[i].measures);
+  }
+  EXPECT_EQ(one.mean_spearman, r.mean_spearman);
+  EXPECT_EQ(one.recommended, r.recommended);
+}
+
+TEST(ObjectiveStudy, SettingsOutOfRangeAreNamed) {
+  auto parameter = [](StudySettings s) {
+    try {
+      validate(s);
+    } catch (const ParameterError& e) {
+      return e.parameter();
+    } catch (const Error&) {
+      return std::string("error");
+    }
+    return std::string("accepted");
+  };
+  StudySettings s = small();
+  EXPECT_EQ(parameter(s), "accepted");
+  s.budgets = {0};
+  EXPECT_EQ(parameter(s), "budgets");
+  s = small();
+  s.patterns = 2;
+  EXPECT_EQ(parameter(s), "patterns");
+  s = small();
+  s.scenes = {"teapot"};
+  EXPECT_EQ(parameter(s), "error");
+  s = small();
+  s.acuities = {"cubic"};
+  EXPECT_EQ(parameter(s), "error");
+}
+
+}  // namespace
+}  // namespace aapat
