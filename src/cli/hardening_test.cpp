@@ -215,6 +215,11 @@ TEST(Hardening, ASharingFamilyWithoutAPlacementSearchesThePlacements) {
   EXPECT_LT(doc["e2"].get<double>(), 0.3595);  // Laine-Aila Table 2: best FLIPQUAD sites 0.3591
   EXPECT_EQ(doc["family"], "P(4,1+,2)");
   EXPECT_NE(doc["placement"].get<std::string>().find("left"), std::string::npos);
+  // A fractional n has no all-inside placement to fall back on: every placement
+  // of its cost is searched too (it was refused, found building the catalog).
+  const CliRun q = run({"optimize", "--family", "P(4,1+,1.25)", "--starts", "2", "--json"});
+  ASSERT_EQ(q.code, 0) << q.err;
+  EXPECT_LT(nlohmann::json::parse(q.out)["e2"].get<double>(), 0.5547);  // Hasselgren's scheme A
 }
 
 TEST(Hardening, TheCacheWarnsAndContinuesAndNoCacheStillShares) {

@@ -19,4 +19,18 @@ std::string error_message(F&& f) {
   return "no error";
 }
 
+// The parameter a ParameterError from f names, "error" for another Error,
+// "accepted" when f returns: which setting a validation blamed.
+template <class F>
+std::string error_parameter(F&& f) {
+  try {
+    f();
+  } catch (const ParameterError& e) {
+    return e.parameter();
+  } catch (const Error&) {
+    return "error";
+  }
+  return "accepted";
+}
+
 }  // namespace aapat::testing

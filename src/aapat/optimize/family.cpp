@@ -70,7 +70,7 @@ std::string FamilySpec::text() const {
                      format_cost(n));
 }
 
-FamilySpec parse_family(std::string_view family, std::string_view placement) {
+FamilySpec family_shape(std::string_view family) {
   FamilySpec spec;
   const std::string_view f = trim(family);
   if (!f.starts_with("P(") || !f.ends_with(")"))
@@ -96,6 +96,12 @@ FamilySpec parse_family(std::string_view family, std::string_view placement) {
     throw ParameterError("family",
                          fmt::format(" {}: n = {} is out of range (0, 256]", family, spec.n));
 
+  spec.mirrored = spec.s == 4 && spec.footprint == Footprint{1, true};
+  return spec;
+}
+
+FamilySpec parse_family(std::string_view family, std::string_view placement) {
+  FamilySpec spec = family_shape(family);
   if (placement.empty()) {
     if (spec.n != std::floor(spec.n))
       throw ParameterError("family",

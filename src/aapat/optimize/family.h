@@ -41,6 +41,9 @@ struct FamilySpec {
 // Parses "P(4,1+,1.25)" and "left,right,bottom,top"; checks that the
 // placement's cost equals n and that the sites fit the family, saying why not.
 FamilySpec parse_family(std::string_view family, std::string_view placement);
+// The family alone (s, r, n, mirrored), no sites: what a search over every
+// placement needs before it has one.
+FamilySpec family_shape(std::string_view family);
 
 // A random pattern of the family: inside samples by `kind`, border samples
 // uniform along their edge, weights equal for one-pixel footprints and the

@@ -11,6 +11,7 @@
 #include "aapat/generate/point_generators.h"
 #include "aapat/render/image_error.h"
 #include "aapat/render/reference.h"
+#include "testing/error_message.h"
 
 namespace aapat {
 namespace {
@@ -94,14 +95,7 @@ TEST(Adaptive, Deterministic) {
 }
 
 TEST(Adaptive, SettingsOutOfRangeAreNamed) {
-  auto message = [](AdaptiveSettings a) {
-    try {
-      validate(a);
-    } catch (const ParameterError& e) {
-      return e.parameter();
-    }
-    return std::string("accepted");
-  };
+  auto message = [](AdaptiveSettings a) { return testing::error_parameter([&] { validate(a); }); };
   AdaptiveSettings a = settings(RefinementCriterion::contrast, 0.1);
   EXPECT_EQ(message(a), "accepted");
   a.threshold = 1.5;

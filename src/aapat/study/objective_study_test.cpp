@@ -7,6 +7,7 @@
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/metric.h"
+#include "testing/error_message.h"
 
 namespace aapat {
 namespace {
@@ -72,16 +73,7 @@ TEST(ObjectiveStudy, SmallStudyIsConsistentAndDeterministic) {
 }
 
 TEST(ObjectiveStudy, SettingsOutOfRangeAreNamed) {
-  auto parameter = [](StudySettings s) {
-    try {
-      validate(s);
-    } catch (const ParameterError& e) {
-      return e.parameter();
-    } catch (const Error&) {
-      return std::string("error");
-    }
-    return std::string("accepted");
-  };
+  auto parameter = [](StudySettings s) { return testing::error_parameter([&] { validate(s); }); };
   StudySettings s = small();
   EXPECT_EQ(parameter(s), "accepted");
   s.budgets = {0};

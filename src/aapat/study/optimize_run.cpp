@@ -32,7 +32,7 @@ SeedFunction locked(SeedFunction seeds, std::vector<int> lock) {
 // family without one, every placement of its cost (as the enumeration lists
 // them); otherwise every sample would sit inside and nothing would be shared.
 std::vector<std::string> placements_of(const OptimizeRunSettings& s) {
-  const FamilySpec spec = parse_family(s.family, s.placement);
+  const FamilySpec spec = family_shape(s.family);
   if (!spec.mirrored || !s.placement.empty()) return {s.placement};
   std::vector<std::string> all;
   for (const PlacementConfig& c : enumerate_placements(spec.n)) all.push_back(c.sites());
@@ -51,9 +51,9 @@ LatticeStage lattice_stage(const Metric& metric, const OptimizeRunSettings& s,
     hardware_layout(snap_to_lattice(pattern_of(make_seed(0)), s.lattice, profile->y_down),
                     *profile);
   }
-  const LatticeSearch lat = lattice_search_from(metric, result.best_problem, make_seed, starts,
-                                                s.seed, s.lattice, s.optimizer,
-                                                profile ? profile->y_down : true);
+  const LatticeSearch lat =
+      lattice_search_from(metric, result.best_problem, make_seed, starts, s.seed, s.lattice,
+                          s.optimizer, profile ? profile->y_down : true);
   result.best_problem = lat.best;
   stage.continuous_e2 = result.starts[result.best].run.final_e2;
   stage.snapped_e2 = lat.run.snapped_e2;
