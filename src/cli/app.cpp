@@ -107,6 +107,7 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   add(add_import_command);
   add(add_hardware_table_command);
   add(add_study_command);
+  add(add_sequence_command);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,177 @@
+#include "aapat/temporal/sequence_json.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "aapat/io/atomic_file.h"
+#include "aapat/io/pattern_json.h"
+#include "aapat/temporal/sequence_generators.h"
+
+namespace aapat {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+constexpr std::string_view kFormat = "aapat-sequence";
+constexpr int kVersion = 1;
+
+std::string text_of(std::string_view s) {
+  return json(std::string(s)).dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+[[noreturn]] void fail(std::string_view source, const std::string& message) {
+  throw Error(fmt::format("sequence file {}: {}", source, message));
+}
+
+bool is_jitter(const Sequence& s) {
+  for (const Pattern& p : s.frames)
+    if (p.set_count() != 1 || p.footprint.size != 1 || p.footprint.plus || p.sets[0].size() != 1 ||
+        p.weights[0].size() != 1 || p.weights[0][0] != 1.0 || !p.provenance.empty())
+      return false;
+  return true;
+}
+
+std::string frame_name(const std::string& sequence, size_t f) {
+  return fmt::format("{} frame {}", sequence, f);
+}
+
+// The pattern file's text, indented to sit in the frames array.
+std::string indented(const std::string& text) {
+  std::string out = "    ";
+  for (size_t i = 0; i < text.size(); ++i) {
+    out += text[i];
+    if (text[i] == '\n' && i + 1 < text.size()) out += "    ";
+  }
+  while (!out.empty() && out.back() == '\n') out.pop_back();
+  return out;
+}
+
+}  // namespace
+
+std::string sequence_to_json(const Sequence& s) {
+  validate(s);
+  std::string out = "{\n";
+  out += fmt::format("  \"format\": {},\n  \"version\": {},\n", text_of(kFormat), kVersion);
+  out += fmt::format("  \"name\": {},\n", text_of(s.name));
+  out += fmt::format("  \"description\": {},\n", text_of(s.description));
+  out += fmt::format("  \"family\": {},\n", text_of(family(s.frames[0])));
+  if (is_jitter(s)) {
+    out += "  \"jitter\": [";
+    for (size_t f = 0; f < s.frames.size(); ++f) {
+      const Vec2 v = s.frames[f].sets[0][0];
+      out += fmt::format("{}[{}, {}]", f == 0 ? "\n    " : (f % 4 == 0 ? ",\n    " : ", "),
+                         json(v.x).dump(), json(v.y).dump());
+    }
+    out += "\n  ],\n";
+  } else {
+    out += "  \"frames\": [\n";
+    for (size_t f = 0; f < s.frames.size(); ++f)
+      out += indented(pattern_to_json(s.frames[f])) + (f + 1 < s.frames.size() ? ",\n" : "\n");
+    out += "  ],\n";
+  }
+  out += "  \"provenance\": {";
+  for (size_t i = 0; i < s.provenance.size(); ++i)
+    out += fmt::format("{}\n    {}: {}", i ? "," : "", text_of(s.provenance[i].first),
+                       text_of(s.provenance[i].second));
+  out += s.provenance.empty() ? "}\n}\n" : "\n  }\n}\n";
+  return out;
+}
+
+Sequence sequence_from_json(std::string_view text, std::string_view source) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::exception& e) {
+    fail(source, fmt::format("not valid JSON: {}", e.what()));
+  }
+  if (!doc.is_object()) fail(source, "expected a JSON object at the top level");
+  static const std::vector<std::string> kKeys = {"format", "version", "name",   "description",
+                                                 "family", "jitter",  "frames", "provenance"};
+  for (const auto& [key, value] : doc.items())
+    if (std::find(kKeys.begin(), kKeys.end(), key) == kKeys.end())
+      fail(source, fmt::format("{}: unknown field (known: format, version, name, description, "
+                               "family, jitter, frames, provenance)",
+                               key));
+  for (const char* key : {"format", "version", "name"})
+    if (!doc.contains(key)) fail(source, fmt::format("{}: missing", key));
+  if (doc["format"] != kFormat)
+    fail(source, fmt::format("format: expected \"{}\", got {}", kFormat, doc["format"].dump()));
+  if (doc["version"] != kVersion)
+    fail(source, fmt::format("version: {} is not supported (this aapat reads version {})",
+                             doc["version"].dump(), kVersion));
+  if (doc.contains("jitter") == doc.contains("frames"))
+    fail(source,
+         "give the frames as exactly one of \"jitter\" (one offset per frame) and "
+         "\"frames\" (a pattern per frame)");
+  Sequence s;
+  if (!doc["name"].is_string()) fail(source, "name: expected a string");
+  s.name = doc["name"].get<std::string>();
+  if (doc.contains("description")) {
+    if (!doc["description"].is_string()) fail(source, "description: expected a string");
+    s.description = doc["description"].get<std::string>();
+  }
+  const std::string_view list = doc.contains("jitter") ? "jitter" : "frames";
+  const json& frames = doc[std::string(list)];
+  if (!frames.is_array() || frames.empty())
+    fail(source, fmt::format("{}: expected a non-empty array", list));
+  if (frames.size() > static_cast<size_t>(kMaxSequenceFrames))
+    fail(source, fmt::format("{}: {} frames exceed the limit of {}", list, frames.size(),
+                             kMaxSequenceFrames));
+  for (size_t f = 0; f < frames.size(); ++f) {
+    const std::string field = fmt::format("{}[{}]", list, f);
+    if (list == "jitter") {
+      const json& v = frames[f];
+      if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+        fail(source, field + ": expected [x, y], the offset in pixels");
+      s.frames.push_back(
+          jitter_frame({v[0].get<double>(), v[1].get<double>()}, frame_name(s.name, f)));
+    } else {
+      if (!frames[f].is_object()) fail(source, field + ": expected a pattern object");
+      json frame = frames[f];
+      // A frame needs no format header of its own inside a sequence file.
+      if (!frame.contains("format")) frame["format"] = "aapat-pattern";
+      if (!frame.contains("version")) frame["version"] = 1;
+      if (!frame.contains("name")) frame["name"] = frame_name(s.name, f);
+      s.frames.push_back(pattern_from_json(frame.dump(), fmt::format("{} {}", source, field)));
+    }
+  }
+  if (doc.contains("provenance")) {
+    const json& prov = doc["provenance"];
+    if (!prov.is_object()) fail(source, "provenance: expected an object of strings");
+    for (const auto& [key, value] : prov.items()) {
+      if (!value.is_string()) fail(source, fmt::format("provenance.{}: expected a string", key));
+      s.provenance.emplace_back(key, value.get<std::string>());
+    }
+  }
+  try {
+    validate(s);
+  } catch (const Error& e) {
+    fail(source, e.what());
+  }
+  if (doc.contains("family")) {
+    if (!doc["family"].is_string()) fail(source, "family: expected a string such as \"P(1,1,1)\"");
+    if (doc["family"].get<std::string>() != family(s.frames[0]))
+      fail(source, fmt::format("family: the file says {} but its frames make {}",
+                               doc["family"].get<std::string>(), family(s.frames[0])));
+  }
+  return s;
+}
+
+Sequence load_sequence_file(const std::string& path) {
+  return sequence_from_json(read_file(path, "sequence file"), path);
+}
+
+void save_sequence_file(const Sequence& s, const std::string& path) {
+  write_file_atomically(path, sequence_to_json(s));
+}
+
+Sequence resolve_sequence(const std::string& spec_or_path, const std::optional<Pattern>& pattern) {
+  std::error_code ec;
+  if (spec_or_path.ends_with(".json") || std::filesystem::is_regular_file(spec_or_path, ec))
+    return load_sequence_file(spec_or_path);
+  return make_sequence(spec_or_path, pattern);
+}
+
+}  // namespace aapat
