@@ -16,9 +16,12 @@
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/png_image.h"
+#include "aapat/temporal/sequence_json.h"
+#include "aapat/temporal/taa_render.h"
 #include "cli/animation_options.h"
 #include "cli/commands.h"
 #include "cli/progress.h"
+#include "cli/sequence_options.h"
 
 namespace aapat {
 namespace {
@@ -49,7 +52,19 @@ struct AnimateOptions : AnimationOptions {
   std::string pattern, filter, frames_dir, histogram, gif, mp4;
   int fps = 12;
   bool json = false;
+  // Temporal mode: a sequence accumulated by a model.
+  std::string sequence, csv;
+  ModelOptions model;
+  bool cut = false, still = false;
 };
+
+std::string taa_csv(const TaaResult& r) {
+  std::string csv = "frame,rmse,max_deviation,ssim,flicker\n";
+  for (size_t f = 0; f < r.frames.size(); ++f)
+    csv += fmt::format("{},{:.6f},{},{:.6f},{:.6f}\n", f, r.frames[f].rmse,
+                       r.frames[f].max_deviation, r.frames[f].ssim, r.frames[f].flicker);
+  return csv;
+}
 
 void run_animate(AnimateOptions& o, std::ostream& out) {
   const AnimationSettings a = o.settings();
@@ -72,24 +87,39 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
       if (!dir.empty()) std::filesystem::remove_all(dir, ec);
     }
   } cleanup{temporary_frames ? frames_dir : ""};
+  if (o.pattern.empty() == o.sequence.empty())
+    throw Error("animate: give either --pattern or --sequence (temporal accumulation)");
+  if (o.sequence.empty() && (o.cut || o.still || !o.csv.empty()))
+    throw Error("--cut, --static and --csv belong to the temporal mode: add --sequence");
+  if (!o.sequence.empty() && !o.filter.empty())
+    throw Error("--filter: a sequence's frames reconstruct with their own weights or --resolve");
   Sampling s;
-  s.pattern = resolve_pattern(o.pattern);
+  std::optional<Sequence> sequence;
+  std::optional<Accumulation> model;
+  if (o.sequence.empty()) {
+    s.pattern = resolve_pattern(o.pattern);
+  } else {
+    sequence = resolve_sequence(o.sequence);
+    model = o.model.make();
+  }
   std::optional<Filter> filter;
   if (!o.filter.empty()) filter = make_filter(o.filter);
   if (!frames_dir.empty()) ensure_directory(frames_dir, "--frames-dir");
   Progress bar("animate");
   GreyFrames gif{a.width, a.height, std::max(2, 100 / o.fps), {}};
-  const ImageError e = animate(
-      a, s, filter,
-      [&](int f, const Image& img) {
-        // Written now: ffmpeg reads them; on an error the run's new frames are deleted.
-        if (!frames_dir.empty())
-          write_file_now(fmt::format("{}/frame-{:04d}.png", frames_dir, f),
-                         png_gray_bytes(img.width, img.height, grey_pixels(img)));
-        if (!o.gif.empty()) gif.frames.push_back(grey_pixels(img));
-        bar.update(f + 1, a.frames, "");
-      },
-      o.reference.source());
+  const auto on_frame = [&](int f, const Image& img) {
+    // Written now: ffmpeg reads them; on an error the run's new frames are deleted.
+    if (!frames_dir.empty())
+      write_file_now(fmt::format("{}/frame-{:04d}.png", frames_dir, f),
+                     png_gray_bytes(img.width, img.height, grey_pixels(img)));
+    if (!o.gif.empty()) gif.frames.push_back(grey_pixels(img));
+    bar.update(f + 1, a.frames, "");
+  };
+  std::optional<TaaResult> taa;
+  if (sequence)
+    taa = render_taa(a, *sequence, *model, !o.cut, o.still, on_frame, o.reference.source());
+  const ImageError e = taa ? taa->total : animate(a, s, filter, on_frame, o.reference.source());
+  if (taa && !o.csv.empty()) write_output(o.csv, taa_csv(*taa), out);
   if (!o.gif.empty()) write_gif(o.gif, gif);
   if (!o.mp4.empty()) write_mp4(frames_dir, o.mp4, o.fps);
   if (!o.histogram.empty()) {
@@ -101,18 +131,41 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
   if (o.json) {
     JsonObject doc = json_report("animate");
     doc.update(JsonObject{{"animation", a.animation},
-                          {"pattern", o.pattern},
+                          {"pattern", sequence ? sequence->name : o.pattern},
                           {"filter", filter ? filter->name() : "pattern weights"},
                           {"frames", a.frames},
                           {"width", a.width},
                           {"height", a.height},
                           {"rmse", e.rmse},
                           {"max_deviation", e.max_deviation}});
+    if (taa) {
+      doc["model"] = o.model.text();
+      doc["steady"] = !o.cut;
+      doc["static"] = o.still;
+      doc["mean_ssim"] = taa->mean_ssim;
+      doc["flicker"] = taa->flicker;
+      JsonObject::array_t rows;
+      for (const TaaFrame& f : taa->frames)
+        rows.push_back(JsonObject{{"rmse", f.rmse},
+                                  {"max_deviation", f.max_deviation},
+                                  {"ssim", f.ssim},
+                                  {"flicker", f.flicker}});
+      doc["rows"] = rows;
+    }
     out << json_text(doc);
     return;
   }
+  if (taa) {
+    out << fmt::format(
+        "{} animation{}, {} frames of {}x{}, {} under {}{}: RMSE {:.3f}, max deviation {}, mean "
+        "SSIM {:.4f}, flicker {:.3f} levels per pixel and frame\n",
+        a.animation, o.still ? " (static)" : "", a.frames, a.width, a.height, sequence->name,
+        o.model.text(), o.cut ? " from a cut" : " in steady state", e.rmse, e.max_deviation,
+        taa->mean_ssim, taa->flicker);
+    return;
+  }
   out << fmt::format("{} animation, {} frames of {}x{}, {}: RMSE {:.3f}, max deviation {}\n",
-                     a.animation, a.frames, a.width, a.width, o.pattern, e.rmse, e.max_deviation);
+                     a.animation, a.frames, a.width, a.height, o.pattern, e.rmse, e.max_deviation);
 }
 
 }  // namespace
@@ -123,7 +176,15 @@ Action add_animate_command(CLI::App& app) {
   auto o = std::make_shared<AnimateOptions>();
   cmd->add_option("animation", o->a.animation, "circle (translating) or triangle (rotating)")
       ->required();
-  cmd->add_option("--pattern", o->pattern, "catalog pattern or pattern file")->required();
+  cmd->add_option("--pattern", o->pattern, "catalog pattern or pattern file");
+  cmd->add_option("--sequence", o->sequence,
+                  "temporal mode: a sequence file or generator spec (halton:frames=8, ...), each "
+                  "frame sampled with its phase and accumulated by --model (docs/temporal.md)");
+  o->model.add_to(cmd);
+  cmd->add_flag("--cut", o->cut, "temporal mode: start from a camera cut (default: steady state)");
+  cmd->add_flag("--static", o->still,
+                "temporal mode: no motion, the first frame's scene throughout");
+  cmd->add_option("--csv", o->csv, "temporal mode: per frame RMSE, max deviation, SSIM, flicker");
   cmd->add_option("--filter", o->filter,
                   "reconstruct with this filter (default: the pattern's weights)");
   add_animation_options(cmd, *o);

@@ -2,6 +2,8 @@
 // or polishing of an existing pattern.
 #include <fmt/format.h>
 
+#include <tbb/task_arena.h>
+
 #include <chrono>
 #include <memory>
 #include <ostream>
@@ -16,9 +18,12 @@
 #include "aapat/optimize/lattice_search.h"
 #include "aapat/optimize/multistart.h"
 #include "aapat/study/optimize_run.h"
+#include "aapat/temporal/sequence_json.h"
+#include "aapat/temporal/sequence_optimizer.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
+#include "cli/sequence_options.h"
 
 namespace aapat {
 namespace {
@@ -105,9 +110,87 @@ struct OptimizeOptions {
   double time_limit = 0;
   std::vector<int> lock;
   bool weights_only = false, nonnegative = false, starts_given = false, json = false;
+  // --sequence K: a jitter / alternating-MSAA sequence instead of a pattern.
+  int sequence = 0, samples_per_frame = 1;
+  bool acuity_given = false, norm_given = false;
+  double flicker_weight = 3;
+  ModelOptions model;
 };
 
+// `optimize --sequence K`: the temporal search (temporal/sequence_optimizer.h).
+void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
+  if (!o.pattern.empty() || !o.family.empty())
+    throw Error("--sequence searches K one-pixel frames: give no PATTERN and no --family");
+  if (!o.output.empty() && !o.output.ends_with(".json"))
+    throw Error(fmt::format("--output: '{}' must end in .json (a sequence file)", o.output));
+  if (o.method != "descent" && o.method != "slsqp")
+    throw Error(fmt::format("--method {}: a sequence is searched with slsqp (its epigraph form)",
+                            o.method));
+  // The study's recommended objective unless --acuity / --norm say otherwise
+  // (docs/temporal.md: the Laine-Aila table mispredicts rendered flicker).
+  MetricOptions chosen = o.metric;
+  if (!o.acuity_given) chosen.acuity = "uniform:step=1";
+  if (!o.norm_given) chosen.norm = "2";
+  const Metric metric = chosen.make();
+  SequenceSearch s;
+  s.frames = o.sequence;
+  s.samples_per_frame = o.samples_per_frame;
+  s.model = o.model.make();
+  s.flicker_weight = o.flicker_weight;
+  s.starts = o.starts;
+  s.seed = o.seed;
+  s.iterations = o.iterations;
+  if (!o.api.empty()) s.profile = &api_profile(o.api);
+  SequenceSearchResult r;
+  try {
+    tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
+    arena.execute([&] { r = optimize_sequence(s, metric); });
+  } catch (const ParameterError& e) {
+    throw Error(fmt::format("--{}{}", e.parameter(), e.detail()));
+  }
+  if (!o.output.empty()) save_sequence_file(r.best, o.output);
+  if (o.json) {
+    JsonObject doc = json_report("optimize");
+    doc.update(JsonObject{{"sequence", s.frames},
+                          {"samples_per_frame", s.samples_per_frame},
+                          {"model", o.model.text()},
+                          {"flicker_weight", s.flicker_weight},
+                          {"filter", metric.filter().name()},
+                          {"acuity", metric.acuity().name},
+                          {"norm", format_norm(metric.norm())},
+                          {"seed", s.seed},
+                          {"starts", s.starts},
+                          {"best_start", r.best_start},
+                          {"objective", r.objective},
+                          {"worst_e2", r.worst_e2},
+                          {"flicker", r.flicker},
+                          {"halton_objective", r.halton_objective}});
+    doc["result"] = JsonObject::parse(sequence_to_json(r.best));
+    out << json_text(doc);
+    return;
+  }
+  out << fmt::format("optimized {} frames of {} sample(s) under {} ({}, acuity {}, norm {})\n",
+                     s.frames, s.samples_per_frame, o.model.text(), metric.filter().name(),
+                     metric.acuity().name, format_norm(metric.norm()));
+  out << fmt::format(
+      "J = worst E2 + {} x mean flicker: {:.5f} (worst E2 {:.5f}, mean flicker {:.5f}); "
+      "Halton(2,3) of the same length {:.5f}; best of {} starts: start {}\n",
+      s.flicker_weight, r.objective, r.worst_e2, r.flicker, r.halton_objective, s.starts,
+      r.best_start);
+  if (r.continuous_objective)
+    out << fmt::format("on the 1/16 lattice of {}: J {:.5f} before snapping, {:.5f} after\n", o.api,
+                       *r.continuous_objective, r.objective);
+  for (int f = 0; f < r.best.period(); ++f) {
+    out << fmt::format("  frame {:>3}:", f);
+    for (const Vec2 v : r.best.frames[static_cast<size_t>(f)].sets[0])
+      out << fmt::format(" ({:>9.5f}, {:>9.5f})", v.x, v.y);
+    out << "\n";
+  }
+  if (!o.output.empty()) out << "wrote " << o.output << "\n";
+}
+
 void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ostream& out) {
+  if (o.sequence > 0) return run_sequence_search(o, out);
   if (o.pattern.empty() == o.family.empty())
     throw Error("optimize: give either --family (a search) or a PATTERN to polish");
   if (!o.output.empty() && !is_pattern_path(o.output))
@@ -210,9 +293,27 @@ Action add_optimize_command(CLI::App& app) {
                   "write every start: start, initial E2, final E2, iterations, seconds");
   cmd->add_option("--svg", o->svg, "write a drawing of the best pattern");
   cmd->add_flag("--json", o->json, "print the result as JSON (docs/json.md)");
+  cmd->add_option("--sequence", o->sequence,
+                  "search a sequence of K frames instead (TAA jitter, alternating MSAA; "
+                  "docs/temporal.md): worst steady E2 + mean flicker under --model")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--samples-per-frame", o->samples_per_frame,
+                  "with --sequence: samples in each frame (1: a jitter)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 16));
+  cmd->add_option("--flicker-weight", o->flicker_weight,
+                  "with --sequence: lambda of J = worst E2 + lambda mean flicker")
+      ->capture_default_str();
+  o->model.add_to(cmd);
 
   auto* starts_option = cmd->get_option("--starts");
-  return [o, starts_option](std::ostream& out) { run_optimize(*o, starts_option, out); };
+  auto* acuity_option = cmd->get_option("--acuity");
+  auto* norm_option = cmd->get_option("--norm");
+  return [o, starts_option, acuity_option, norm_option](std::ostream& out) {
+    o->acuity_given = acuity_option->count() > 0;
+    o->norm_given = norm_option->count() > 0;
+    run_optimize(*o, starts_option, out);
+  };
 }
 
 }  // namespace aapat

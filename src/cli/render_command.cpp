@@ -21,9 +21,12 @@
 #include "aapat/io/refinement_map.h"
 #include "aapat/io/scene_json.h"
 #include "aapat/study/render_study.h"
+#include "aapat/temporal/sequence_json.h"
+#include "aapat/temporal/taa_render.h"
 #include "cli/commands.h"
 #include "cli/progress.h"
 #include "cli/reference_options.h"
+#include "cli/sequence_options.h"
 
 namespace aapat {
 namespace {
@@ -41,6 +44,11 @@ struct Options {
   int samples = 16, zoom = 1;
   uint64_t seed = 1;
   bool json = false, grid = false;
+  // Temporal mode: a sequence accumulated over frames of the static scene.
+  std::string sequence;
+  ModelOptions model;
+  int frames = 0;
+  bool cut = false;
   std::vector<std::string> rows{"regular@4",  "n-queens@4",  "jittered@4",
                                 "regular@16", "n-queens@16", "jittered@16"};
   std::vector<std::string> columns{"box", "tent", "gaussian-half"};
@@ -331,6 +339,56 @@ void run_single(const Options& o, std::ostream& out) {
   out << (o.json ? json_text(js) : text);
 }
 
+// --sequence: `frames` frames of the scene, each sampled with its phase and
+// accumulated (temporal/taa_render.h).
+void run_temporal(const Options& o, std::ostream& out) {
+  if (!o.pattern.empty() || !o.generator.empty() || o.grid || !o.adaptive.empty() ||
+      !o.filter.empty())
+    throw Error(
+        "--sequence renders the sequence's frames with their own weights (or --resolve): "
+        "give no --pattern, --generator, --filter, --grid or --adaptive");
+  const auto [w, h] = parse_size(o.size, "--size", 16384);
+  if (!o.output.empty() && !o.output.ends_with(".png"))
+    throw Error(fmt::format("'{}' must end in .png", o.output));
+  const Scene scene = make_view_scene(o, w, h);
+  const Sequence s = resolve_sequence(o.sequence);
+  const Accumulation model = o.model.make();
+  TaaScenes scenes;
+  scenes.scene_at = [&](int) { return scene; };
+  scenes.reference_frame = [](int) { return 0; };
+  scenes.width = w;
+  scenes.height = h;
+  scenes.frames = o.frames > 0 ? o.frames : s.period();
+  scenes.reference = reference_settings(o);
+  scenes.reference.seed -= 7919;  // the single rendering's reference
+  Image last;
+  const TaaResult r = render_taa(
+      scenes, s, model, !o.cut, [&](int, const Image& img) { last = img; }, o.reference.source());
+  if (!o.output.empty()) write_png_gray(o.output, w, h, grey_pixels(last));
+  if (o.json) {
+    JsonObject js = json_report("render");
+    js.update(JsonObject{{"scene", o.scene},
+                         {"width", w},
+                         {"height", h},
+                         {"sequence", s.name},
+                         {"model", o.model.text()},
+                         {"steady", !o.cut},
+                         {"frames", scenes.frames},
+                         {"rmse", r.total.rmse},
+                         {"max_deviation", r.total.max_deviation},
+                         {"mean_ssim", r.mean_ssim},
+                         {"flicker", r.flicker}});
+    out << json_text(js);
+    return;
+  }
+  out << fmt::format(
+      "{} {}x{}, {} under {}, {} frames{}: RMSE {:.3f}, max deviation {}, mean SSIM {:.4f}, "
+      "flicker {:.3f} levels per pixel and frame\n",
+      o.scene, w, h, s.name, o.model.text(), scenes.frames,
+      o.cut ? " from a cut" : " in steady state", r.total.rmse, r.total.max_deviation, r.mean_ssim,
+      r.flicker);
+}
+
 }  // namespace
 
 Action add_render_command(CLI::App& app) {
@@ -393,6 +451,13 @@ Action add_render_command(CLI::App& app) {
       ->check(CLI::Range(1, 16));
   cmd->add_option("--table", o->table, "--grid: also write the error table (markdown)");
   cmd->add_flag("--json", o->json, "print the figures as JSON");
+  cmd->add_option("--sequence", o->sequence,
+                  "temporal mode: a sequence file or generator spec, its frames accumulated by "
+                  "--model over the static scene (docs/temporal.md)");
+  o->model.add_to(cmd);
+  cmd->add_option("--frames", o->frames, "temporal mode: frames rendered (0: the period)")
+      ->check(CLI::Range(0, 4096));
+  cmd->add_flag("--cut", o->cut, "temporal mode: start from a camera cut (default: steady state)");
   // Options of one mode are refused in the other, before any work.
   const std::vector<const CLI::Option*> single_only = {
       cmd->get_option("--pattern"),        cmd->get_option("--generator"),
@@ -416,6 +481,9 @@ Action add_render_command(CLI::App& app) {
                                           "--columns",
                                           opt->get_name())
                             : fmt::format("render: {} is for a --grid sheet", opt->get_name()));
+    if (!o->sequence.empty()) return run_temporal(*o, out);
+    if (o->cut || o->frames)
+      throw Error("--cut and --frames belong to the temporal mode: add --sequence");
     o->grid ? run_grid(*o, out) : run_single(*o, out);
   };
 }

@@ -8,60 +8,20 @@
 #include <memory>
 #include <ostream>
 
-#include "aapat/core/filter_catalog.h"
+#include "aapat/core/hardware_layout.h"
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
+#include "aapat/temporal/sequence_export.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_json.h"
+#include "aapat/temporal/sequence_svg.h"
 #include "aapat/temporal/temporal_metrics.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
+#include "cli/sequence_options.h"
 
 namespace aapat {
 namespace {
-
-struct ModelOptions {
-  std::string model = "ema", resolve;
-  double alpha = 0.1;
-  int window = 0, radius = 1;
-
-  void add_to(CLI::App* cmd) {
-    cmd->add_option("--model", model, "accumulation: ema (history 1 - alpha) or box (a window)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"ema", "box"}));
-    cmd->add_option("--alpha", alpha, "EMA blend factor, the current frame's weight, in (0, 1]")
-        ->capture_default_str();
-    cmd->add_option("--window", window, "box: frames averaged (0: the period)")
-        ->capture_default_str();
-    cmd->add_option("--resolve", resolve,
-                    "resolve each frame over its neighbours' samples with this filter "
-                    "(e.g. gaussian:sigma=0.47,radius=1.5)");
-    cmd->add_option("--resolve-radius", radius, "pixels the resolve reads on each side (1: 3x3)")
-        ->capture_default_str();
-  }
-  Accumulation make() const {
-    Accumulation a;
-    a.kind = model == "box" ? AccumulationKind::box : AccumulationKind::ema;
-    a.alpha = alpha;
-    a.window = window;
-    a.resolve_radius = radius;
-    if (!resolve.empty()) a.resolve = make_filter(resolve);
-    try {
-      validate(a);
-    } catch (const ParameterError& e) {
-      throw Error(fmt::format("--{}{}", e.parameter(), e.detail()));
-    }
-    return a;
-  }
-  std::string text() const {
-    std::string t = model == "box" ? (window ? fmt::format("box of {} frames", window)
-                                             : std::string("box of the period"))
-                                   : fmt::format("EMA alpha {}", alpha);
-    if (!resolve.empty())
-      t += fmt::format(", {} resolve over {}x{}", resolve, 2 * radius + 1, 2 * radius + 1);
-    return t;
-  }
-};
 
 std::optional<Pattern> optional_pattern(const std::string& name) {
   if (name.empty()) return std::nullopt;
@@ -109,6 +69,11 @@ void add_eval(CLI::App* parent, std::function<void(std::ostream&)>& action) {
     bool json = false, prefixes = false;
   };
   auto o = std::make_shared<Options>();
+  // The objective the study recommends (docs/study.md), also for time: the
+  // Laine-Aila table's axis weights mispredict the flicker of rendered edges
+  // at every angle (docs/temporal.md).
+  o->metric.acuity = "uniform:step=1";
+  o->metric.norm = "2";
   cmd->add_option("sequences", o->sequences, "sequence files or generator specs")->required();
   cmd->add_option("--pattern", o->pattern, "for the generators that take a pattern apart");
   o->metric.add_to(cmd);
@@ -220,17 +185,105 @@ void add_phases(CLI::App* parent, std::function<void(std::ostream&)>& action) {
   };
 }
 
+void add_show(CLI::App* parent, std::function<void(std::ostream&)>& action) {
+  auto* cmd = parent->add_subcommand(
+      "show", "draw every frame's samples numbered in time order, and the convergence curve");
+  struct Options {
+    std::vector<std::string> sequences;
+    std::string pattern, output, curve;
+    MetricOptions metric;
+    ModelOptions model;
+    int frames = 0;
+  };
+  auto o = std::make_shared<Options>();
+  o->metric.acuity = "uniform:step=1";
+  o->metric.norm = "2";
+  cmd->add_option("sequences", o->sequences,
+                  "sequence files or generator specs (the drawing: the first)")
+      ->required();
+  cmd->add_option("--pattern", o->pattern, "for the generators that take a pattern apart");
+  cmd->add_option("-o,--output", o->output, "the frames' samples (.svg)");
+  cmd->add_option("--curve", o->curve, "E2 after a cut, frame by frame, every sequence (.svg)");
+  cmd->add_option("--curve-frames", o->frames, "frames of the curve (0: until it settles)")
+      ->capture_default_str();
+  o->metric.add_to(cmd);
+  o->model.add_to(cmd);
+  action = [o, cmd](std::ostream& out) {
+    if (!cmd->parsed()) return;
+    if (o->output.empty() && o->curve.empty())
+      throw Error("show: give -o FILE.svg and/or --curve FILE.svg");
+    for (const std::string* path : {&o->output, &o->curve})
+      if (!path->empty() && *path != "-" && !path->ends_with(".svg"))
+        throw Error(fmt::format("'{}' must end in .svg", *path));
+    const std::optional<Pattern> pattern = optional_pattern(o->pattern);
+    std::vector<Sequence> list;
+    for (const std::string& spec : o->sequences) list.push_back(resolve_sequence(spec, pattern));
+    if (!o->output.empty()) write_output(o->output, sequence_svg(list.front()), out);
+    if (!o->curve.empty()) {
+      const Metric metric = o->metric.make();
+      const Accumulation model = o->model.make();
+      std::vector<CurveSeries> series;
+      int frames = o->frames;
+      if (frames == 0)  // one length for all: the longest automatic curve
+        for (const Sequence& s : list)
+          frames = std::max(frames,
+                            static_cast<int>(evaluate_temporal(s, model, metric).cut_curve.size()));
+      for (const Sequence& s : list)
+        series.push_back({s.name, evaluate_temporal(s, model, metric, frames).cut_curve});
+      write_output(o->curve,
+                   convergence_svg(series, fmt::format("E2 after a cut, {}", o->model.text())),
+                   out);
+    }
+    for (const std::string* path : {&o->output, &o->curve})
+      if (!path->empty() && *path != "-") out << "wrote " << *path << "\n";
+  };
+}
+
+void add_export(CLI::App* parent, std::function<void(std::ostream&)>& action) {
+  auto* cmd = parent->add_subcommand(
+      "export",
+      "a jitter as a constant array (HLSL, GLSL, C++), or alternating MSAA frames for an "
+      "API profile");
+  struct Options {
+    std::string sequence, pattern, language = "hlsl", y = "down", api, output = "-";
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("sequence", o->sequence, "sequence file or generator spec")->required();
+  cmd->add_option("--pattern", o->pattern, "for the generators that take a pattern apart");
+  cmd->add_option("--language", o->language, "jitter arrays: hlsl, glsl or c++")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"hlsl", "glsl", "c++", "cpp"}));
+  cmd->add_option("--y", o->y, "jitter arrays: +y down (screen rows) or up (aapat's convention)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"down", "up"}));
+  cmd->add_option("--api", o->api,
+                  "several samples per frame: the profile (d3d12-tier1, d3d12-tier2, vulkan, "
+                  "metal, gl); each frame snapped to its 1/16 lattice");
+  cmd->add_option("-o,--output", o->output, "file to write (- for stdout)")->capture_default_str();
+  action = [o, cmd](std::ostream& out) {
+    if (!cmd->parsed()) return;
+    const Sequence s = resolve_sequence(o->sequence, optional_pattern(o->pattern));
+    const std::string text =
+        o->api.empty() ? export_jitter(s, parse_export_language(o->language), o->y == "down")
+                       : export_msaa_sequence(s, api_profile(o->api));
+    write_output(o->output, text, out);
+    if (o->output != "-") out << "wrote " << o->output << "\n";
+  };
+}
+
 }  // namespace
 
 Action add_sequence_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "sequence",
-      "patterns over time: TAA and upscaler jitter, alternating MSAA (docs/temporal.md)");
+  auto* cmd = app.add_subcommand("sequence",
+                                 "patterns over time: TAA and upscaler jitter, alternating MSAA: "
+                                 "generate, eval, show, export, phases (docs/temporal.md)");
   cmd->require_subcommand(1);
-  auto actions = std::make_shared<std::vector<std::function<void(std::ostream&)>>>(3);
+  auto actions = std::make_shared<std::vector<std::function<void(std::ostream&)>>>(5);
   add_generate(cmd, (*actions)[0]);
   add_eval(cmd, (*actions)[1]);
-  add_phases(cmd, (*actions)[2]);
+  add_show(cmd, (*actions)[2]);
+  add_export(cmd, (*actions)[3]);
+  add_phases(cmd, (*actions)[4]);
   return [actions](std::ostream& out) {
     for (auto& a : *actions) a(out);
   };

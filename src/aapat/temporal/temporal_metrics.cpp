@@ -60,9 +60,9 @@ double kernel_flicker(const Metric& metric, const Kernel& before, const Kernel& 
     double running = 0, integral = 0;
     for (size_t j = 0; j + 1 < n; ++j) {
       running += c[order[j]];
-      integral += running * running * (p[order[j + 1]] - p[order[j]]);
+      integral += std::abs(running) * (p[order[j + 1]] - p[order[j]]);
     }
-    values[static_cast<size_t>(angle)] = metric.weight_sq(angle) * integral;
+    values[static_cast<size_t>(angle)] = metric.weight_sq(angle) * integral * integral;
   }
   return combine_over_angles(values, metric.norm());
 }

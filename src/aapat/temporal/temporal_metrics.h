@@ -7,13 +7,16 @@
 //    ghat_k(a), the weight of frame k's accumulated samples on one side (the
 //    step response of the metric). Its change Delta(a) = ghat_k(a) -
 //    ghat_{k-1}(a) is a step function that vanishes far from the samples, so
-//      F_k(theta)^2 = int Delta(a)^2 da
-//    is finite and exact: the sum over the sorted projections of (the
-//    running sum of signed weights)^2 times the gap to the next projection.
-//    F_k combines over angles like E1 (W(theta)^2 F^2, the metric's norm)
-//    and over kernels by the maximum; flicker is the worst and the mean over
-//    the period's transitions k-1 -> k (cyclic). A box window of the whole
-//    period shows the same image every frame: flicker 0;
+//      F_k(theta) = int |Delta(a)| da
+//    is finite and exact: the sum over the sorted projections of |the
+//    running sum of signed weights| times the gap to the next projection.
+//    It is the mean absolute change of the pixels an edge crosses, which is
+//    what a rendered flicker measure averages (the L2 form, int Delta^2,
+//    predicted rendered flicker no better; docs/temporal.md). F_k combines
+//    over angles like E1 (W(theta) F, the metric's norm) and over kernels by
+//    the maximum; flicker is the mean and the worst over the period's
+//    transitions k-1 -> k (cyclic). A box window of the whole period shows
+//    the same image every frame: flicker 0;
 //  - the mean offset of the samples (a non-zero mean shifts the image) and
 //    the largest centroid of a steady frame's accumulated kernel;
 //  - every prefix of the samples in time order (pixel 0's samples, frame 0
@@ -59,7 +62,7 @@ TemporalReport evaluate_temporal(const Sequence& s, const Accumulation& a, const
 
 // E2 of a set of kernels (the largest over kernels).
 double kernels_e2(const Metric& metric, const std::vector<Kernel>& kernels);
-// F(theta)^2 combined over angles for the change from kernel `before` to
+// F(theta) combined over angles for the change from kernel `before` to
 // kernel `after` (the flicker of one kernel between two frames).
 double kernel_flicker(const Metric& metric, const Kernel& before, const Kernel& after);
 

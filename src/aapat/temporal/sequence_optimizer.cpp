@@ -1,0 +1,401 @@
+#include "aapat/temporal/sequence_optimizer.h"
+
+#include <fmt/format.h>
+#include <nlopt.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numeric>
+
+#include "aapat/core/gradient.h"
+#include "aapat/core/lattice.h"
+#include "aapat/optimize/family.h"
+#include "aapat/temporal/sequence_generators.h"
+#include "aapat/temporal/temporal_metrics.h"
+
+namespace aapat {
+namespace {
+
+constexpr double kBound = 0.5 - 1e-6;  // a jitter stays inside its pixel
+
+// Everything one evaluation of the epigraph's constraints needs, allocated once.
+struct Epigraph {
+  const Metric& metric;
+  int frames, per_frame, samples;
+  bool maximum;                            // the max over angles (else an L_p mean)
+  std::vector<std::vector<double>> phase;  // phase[k][f]: frame f's weight at steady frame k
+  double lambda;
+  // Scratch.
+  std::vector<double> p, w, dp, dw, values;
+  std::vector<std::vector<double>> dv;  // per angle, d(term)/dp per sample
+  std::vector<size_t> order;
+
+  Epigraph(const Metric& m, const SequenceSearch& s)
+      : metric(m),
+        frames(s.frames),
+        per_frame(s.samples_per_frame),
+        samples(s.frames * s.samples_per_frame),
+        maximum(std::isinf(m.norm())),
+        lambda(s.flicker_weight) {
+    for (int k = 0; k < frames; ++k) phase.push_back(phase_weights(s.model, frames, k, true));
+    const size_t n = static_cast<size_t>(samples), angles = static_cast<size_t>(m.angle_count());
+    p.resize(n), w.resize(n), dp.resize(n), dw.resize(n), order.resize(n);
+    values.resize(angles);
+    dv.assign(angles, std::vector<double>(n));
+  }
+  int angles() const { return metric.angle_count(); }
+  // Terms per E2 block and per flicker block.
+  int terms() const { return maximum ? angles() : 1; }
+  size_t constraint_count() const { return static_cast<size_t>(2 * frames * terms()); }
+  // The positions, s, and one flicker bound t_k per transition.
+  size_t variable_count() const { return static_cast<size_t>(2 * samples + 1 + frames); }
+  size_t s_index() const { return static_cast<size_t>(2 * samples); }
+
+  void project(const double* x, int angle) {
+    const double nx = -metric.sin(angle), ny = metric.cos(angle);
+    for (int j = 0; j < samples; ++j) p[static_cast<size_t>(j)] = x[2 * j] * nx + x[2 * j + 1] * ny;
+  }
+
+  // The change of the step response between two frames (weights c):
+  // F = sum_j |R_j| (p_(j+1) - p_(j)) over the sorted projections, R_j the
+  // running sum, so dF/dp_(j) = |R_(j-1)| - |R_j|. Returns F^2 and d(F^2)/dp.
+  double flicker_squared(const std::vector<double>& c) {
+    std::iota(order.begin(), order.end(), size_t{0});
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return p[a] < p[b]; });
+    double running = 0, f = 0;
+    for (size_t j = 0; j < order.size(); ++j) {
+      const size_t m = order[j];
+      const double left = std::abs(running);
+      running += c[m];
+      dp[m] = left - (j + 1 < order.size() ? std::abs(running) : 0.0);
+      if (j + 1 < order.size()) f += std::abs(running) * (p[order[j + 1]] - p[m]);
+    }
+    for (double& d : dp) d *= 2 * f;
+    return f * f;
+  }
+
+  // Writes one block of constraint values (term - bound) and their gradients:
+  // `value` fills values[angle] = W^2 X^2 and dv[angle] = its derivative in p.
+  template <class Value>
+  void block(const double* x, size_t bound, size_t first, double* result, double* grad,
+             Value&& value) {
+    const size_t n = variable_count();
+    for (int a = 0; a < angles(); ++a) {
+      project(x, a);
+      values[static_cast<size_t>(a)] = metric.weight_sq(a) * value();
+      for (int j = 0; j < samples; ++j)
+        dv[static_cast<size_t>(a)][static_cast<size_t>(j)] =
+            metric.weight_sq(a) * dp[static_cast<size_t>(j)];
+    }
+    // d(term)/d(v_a) for each angle.
+    auto emit = [&](size_t row, double term, auto&& coefficient) {
+      result[row] = term - x[bound];
+      if (!grad) return;
+      double* g = grad + row * n;
+      std::fill(g, g + n, 0.0);
+      for (int a = 0; a < angles(); ++a) {
+        const double c = coefficient(a);
+        if (c == 0) continue;
+        const double nx = -metric.sin(a), ny = metric.cos(a);
+        for (int j = 0; j < samples; ++j) {
+          const double d = c * dv[static_cast<size_t>(a)][static_cast<size_t>(j)];
+          g[2 * j] += d * nx;
+          g[2 * j + 1] += d * ny;
+        }
+      }
+      g[bound] = -1;
+    };
+    if (maximum) {
+      for (int a = 0; a < angles(); ++a) {
+        const double v = values[static_cast<size_t>(a)], root = std::sqrt(v);
+        emit(first + static_cast<size_t>(a), root,
+             [&](int b) { return b == a && v > 1e-300 ? 0.5 / root : 0.0; });
+      }
+      return;
+    }
+    // ((1/M) sum v^(p/2))^(1/p), scaled by the largest v.
+    const double norm = metric.norm(), top = *std::max_element(values.begin(), values.end());
+    const double combined = combine_over_angles(values, norm);
+    if (!(top > 1e-300)) {
+      emit(first, combined, [](int) { return 0.0; });
+      return;
+    }
+    double mean = 0;
+    for (double v : values) mean += std::pow(v / top, norm / 2);
+    mean /= angles();
+    const double scale = 0.5 / angles() / std::sqrt(top) * std::pow(mean, 1 / norm - 1);
+    emit(first, combined, [&](int a) {
+      const double v = values[static_cast<size_t>(a)];
+      return v > 0 ? scale * std::pow(v / top, norm / 2 - 1) : 0.0;
+    });
+  }
+
+  void constraints(const double* x, double* result, double* grad) {
+    const size_t s = s_index();
+    for (int k = 0; k < frames; ++k) {
+      for (int j = 0; j < samples; ++j)
+        w[static_cast<size_t>(j)] =
+            phase[static_cast<size_t>(k)][static_cast<size_t>(j / per_frame)] / per_frame;
+      block(x, s, static_cast<size_t>(k * terms()), result, grad,
+            [&] { return e1_squared_gradient(metric.filter(), p, w, dp, dw); });
+    }
+    std::vector<double> c(static_cast<size_t>(samples));
+    for (int k = 0; k < frames; ++k) {
+      const auto& now = phase[static_cast<size_t>(k)];
+      const auto& before = phase[static_cast<size_t>((k + frames - 1) % frames)];
+      for (int j = 0; j < samples; ++j) {
+        const size_t f = static_cast<size_t>(j / per_frame);
+        c[static_cast<size_t>(j)] = (now[f] - before[f]) / per_frame;
+      }
+      block(x, s + 1 + static_cast<size_t>(k), static_cast<size_t>((frames + k) * terms()), result,
+            grad, [&] { return flicker_squared(c); });
+    }
+  }
+};
+
+Sequence sequence_of(const std::vector<double>& x, const SequenceSearch& s,
+                     const std::string& name) {
+  Sequence out{name, "", {}, {}};
+  for (int f = 0; f < s.frames; ++f) {
+    std::vector<Vec2> at;
+    for (int i = 0; i < s.samples_per_frame; ++i) {
+      const size_t j = static_cast<size_t>(f * s.samples_per_frame + i);
+      at.push_back({x[2 * j], x[2 * j + 1]});
+    }
+    out.frames.push_back(
+        single_pixel_pattern(fmt::format("{} frame {}", name, f), at,
+                             std::vector<double>(at.size(), 1.0 / s.samples_per_frame)));
+  }
+  return out;
+}
+
+double nlopt_objective(unsigned n, const double* x, double* grad, void* data) {
+  const auto& e = *static_cast<const Epigraph*>(data);
+  // s + lambda * the mean of the transitions' flicker bounds.
+  const double each = e.lambda / e.frames;
+  double value = x[e.s_index()];
+  for (int k = 0; k < e.frames; ++k) value += each * x[e.s_index() + 1 + static_cast<size_t>(k)];
+  if (grad) {
+    std::fill(grad, grad + n, 0.0);
+    grad[e.s_index()] = 1;
+    for (int k = 0; k < e.frames; ++k) grad[e.s_index() + 1 + static_cast<size_t>(k)] = each;
+  }
+  return value;
+}
+
+void nlopt_constraints(unsigned, double* result, unsigned, const double* x, double* grad,
+                       void* data) {
+  static_cast<Epigraph*>(data)->constraints(x, result, grad);
+}
+
+// One start: SLSQP from `start`, never ending worse than it began.
+std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
+                              std::vector<double> x) {
+  Epigraph e(metric, s);
+  const size_t n = e.variable_count(), m = e.constraint_count();
+  // s and t start at the largest term, so the start is feasible.
+  x.resize(n, 0.0);
+  std::vector<double> c(m);
+  e.constraints(x.data(), c.data(), nullptr);
+  const size_t per_block = static_cast<size_t>(e.terms());
+  for (size_t i = 0; i < m; ++i) {
+    const size_t bound = i < m / 2 ? e.s_index() : e.s_index() + 1 + (i - m / 2) / per_block;
+    x[bound] = std::max(x[bound], c[i]);  // c = term - 0
+  }
+  std::vector<double> lo(n, -kBound), hi(n, kBound);
+  for (size_t i = e.s_index(); i < n; ++i) lo[i] = 0, hi[i] = HUGE_VAL;
+  std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(
+      nlopt_create(NLOPT_LD_SLSQP, static_cast<unsigned>(n)), nlopt_destroy);
+  nlopt_set_lower_bounds(opt.get(), lo.data());
+  nlopt_set_upper_bounds(opt.get(), hi.data());
+  nlopt_set_min_objective(opt.get(), nlopt_objective, &e);
+  const std::vector<double> tolerance(m, 1e-12);
+  nlopt_add_inequality_mconstraint(opt.get(), static_cast<unsigned>(m), nlopt_constraints, &e,
+                                   tolerance.data());
+  nlopt_set_ftol_rel(opt.get(), 1e-12);
+  nlopt_set_xtol_rel(opt.get(), 1e-12);
+  nlopt_set_maxeval(opt.get(), s.iterations);
+  std::vector<double> start = x;
+  double value = 0;
+  nlopt_optimize(opt.get(), x.data(), &value);  // any stop: compared with the start below
+  for (size_t i = 0; i < e.s_index(); ++i) x[i] = std::clamp(x[i], -kBound, kBound);
+  x.resize(e.s_index());
+  start.resize(e.s_index());
+  const double got = sequence_objective(sequence_of(x, s, "x"), s, metric).objective;
+  const double before = sequence_objective(sequence_of(start, s, "x"), s, metric).objective;
+  return got <= before ? x : start;
+}
+
+// Single 1/16 steps of one coordinate while J falls (first improvement, in
+// a fixed order: deterministic).
+Sequence lattice_polish(Sequence seq, const SequenceSearch& s, const Metric& metric) {
+  const bool y_down = s.profile->y_down;
+  const double step = 1.0 / kLatticeSteps;
+  // The addressable square (core/lattice.h): x in [-1/2, 1/2 - 1/16], y by the API.
+  const double x_lo = -0.5, x_hi = 0.5 - step, y_lo = y_down ? -0.5 + step : -0.5,
+               y_hi = y_down ? 0.5 : 0.5 - step;
+  double best = sequence_objective(seq, s, metric).objective;
+  for (int pass = 0; pass < 200; ++pass) {
+    bool moved = false;
+    for (Pattern& frame : seq.frames)
+      for (Vec2& v : frame.sets[0])
+        for (int axis = 0; axis < 2; ++axis)
+          for (double d : {-step, step}) {
+            double& c = axis == 0 ? v.x : v.y;
+            const double old = c, lo = axis == 0 ? x_lo : y_lo, hi = axis == 0 ? x_hi : y_hi;
+            if (old + d < lo - 1e-12 || old + d > hi + 1e-12) continue;
+            c = old + d;
+            const double j = sequence_objective(seq, s, metric).objective;
+            if (j < best - 1e-12) {
+              best = j;
+              moved = true;
+            } else {
+              c = old;
+            }
+          }
+    if (!moved) break;
+  }
+  return seq;
+}
+
+}  // namespace
+
+void validate(const SequenceSearch& s) {
+  if (s.frames < 1 || s.frames > kMaxSequenceFrames)
+    throw ParameterError("sequence",
+                         fmt::format(" {}: expected 1 to {} frames", s.frames, kMaxSequenceFrames));
+  if (s.samples_per_frame < 1 || s.samples_per_frame > 16)
+    throw ParameterError("samples-per-frame",
+                         fmt::format(" {}: expected 1 to 16", s.samples_per_frame));
+  if (s.frames * s.samples_per_frame > 1024)
+    throw ParameterError("sequence", fmt::format(" {} frames of {} samples: at most 1024 samples "
+                                                 "in all",
+                                                 s.frames, s.samples_per_frame));
+  validate(s.model);
+  if (s.model.resolve)
+    throw ParameterError("resolve",
+                         ": the search moves samples under a model without a resolve "
+                         "(a resolve's weights move with the samples); evaluate the "
+                         "result with one (aapat sequence eval --resolve)");
+  if (!(s.flicker_weight >= 0 && s.flicker_weight <= 1000))
+    throw ParameterError("flicker-weight",
+                         fmt::format(" {}: expected a weight from 0 to 1000", s.flicker_weight));
+  if (s.starts < 1 || s.starts > 100000)
+    throw ParameterError("starts", fmt::format(" {}: expected 1 to 100000", s.starts));
+  if (s.iterations < 1)
+    throw ParameterError("iterations", fmt::format(" {}: at least 1", s.iterations));
+  if (s.profile && s.samples_per_frame > s.profile->max_samples)
+    throw ParameterError(
+        "api", fmt::format(" {} takes at most {} samples per pixel, not {}", s.profile->name,
+                           s.profile->max_samples, s.samples_per_frame));
+}
+
+SequenceObjective sequence_objective(const Sequence& seq, const SequenceSearch& s,
+                                     const Metric& metric) {
+  const int period = seq.period();
+  std::vector<std::vector<Kernel>> steady;
+  SequenceObjective out;
+  for (int k = 0; k < period; ++k) {
+    steady.push_back(accumulated_kernels(seq, s.model, k, true));
+    out.worst_e2 = std::max(out.worst_e2, kernels_e2(metric, steady.back()));
+  }
+  for (int k = 0; k < period; ++k) {
+    const auto& before = steady[static_cast<size_t>((k + period - 1) % period)];
+    double transition = 0;  // the worst kernel's
+    for (size_t i = 0; i < before.size(); ++i)
+      transition = std::max(transition,
+                            kernel_flicker(metric, before[i], steady[static_cast<size_t>(k)][i]));
+    out.flicker += transition / period;
+  }
+  out.objective = out.worst_e2 + s.flicker_weight * out.flicker;
+  return out;
+}
+
+void sequence_terms(const SequenceSearch& s, const Metric& metric,
+                    const std::vector<double>& positions, std::vector<double>& values,
+                    std::vector<double>& jacobian) {
+  validate(s);
+  Epigraph e(metric, s);
+  const size_t n = e.variable_count(), m = e.constraint_count(), free = e.s_index();
+  if (positions.size() != free)
+    throw Error(
+        fmt::format("sequence_terms: {} coordinates for {} samples", positions.size(), e.samples));
+  std::vector<double> x = positions, grad(m * n);
+  x.resize(n, 0.0);
+  values.assign(m, 0.0);
+  e.constraints(x.data(), values.data(), grad.data());
+  jacobian.assign(m * free, 0.0);
+  for (size_t i = 0; i < m; ++i)
+    std::copy(grad.begin() + static_cast<long>(i * n),
+              grad.begin() + static_cast<long>(i * n + free),
+              jacobian.begin() + static_cast<long>(i * free));
+}
+
+SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& metric) {
+  validate(s);
+  const std::string name = fmt::format("aapat-sequence-{}x{}", s.frames, s.samples_per_frame);
+  // Start 0: Halton (2, 3) from index 1, consecutive points per frame.
+  std::vector<double> halton;
+  for (int i = 1; i <= s.frames * s.samples_per_frame; ++i)
+    halton.push_back(std::clamp(radical_inverse_of(uint64_t(i), 2) - 0.5, -kBound, kBound)),
+        halton.push_back(std::clamp(radical_inverse_of(uint64_t(i), 3) - 0.5, -kBound, kBound));
+  std::vector<std::vector<double>> found(static_cast<size_t>(s.starts));
+  std::vector<double> objective(static_cast<size_t>(s.starts));
+  tbb::parallel_for(0, s.starts, [&](int start) {
+    std::vector<double> x = halton;
+    if (start > 0) {
+      std::mt19937_64 rng = start_rng(s.seed, static_cast<uint64_t>(start));
+      std::uniform_real_distribution<double> u(-kBound, kBound);
+      for (double& v : x) v = u(rng);
+    }
+    found[static_cast<size_t>(start)] = run_start(s, metric, x);
+    objective[static_cast<size_t>(start)] =
+        sequence_objective(sequence_of(found[static_cast<size_t>(start)], s, name), s, metric)
+            .objective;
+  });
+  const size_t best =
+      static_cast<size_t>(std::min_element(objective.begin(), objective.end()) - objective.begin());
+  SequenceSearchResult r;
+  r.best = sequence_of(found[best], s, name);
+  r.best_start = static_cast<int>(best);
+  r.halton_objective = sequence_objective(sequence_of(halton, s, name), s, metric).objective;
+  if (s.profile) {
+    r.continuous_objective = objective[best];
+    for (Pattern& frame : r.best.frames) {
+      frame = snap_to_lattice(frame, kLatticeSteps, s.profile->y_down);
+      frame.provenance.clear();  // the sequence's provenance says it
+    }
+    r.best = lattice_polish(r.best, s, metric);
+  }
+  const SequenceObjective j = sequence_objective(r.best, s, metric);
+  r.objective = j.objective;
+  r.worst_e2 = j.worst_e2;
+  r.flicker = j.flicker;
+  r.best.description =
+      fmt::format("{} frames of {} sample(s) optimized for worst E2 + {} x mean flicker", s.frames,
+                  s.samples_per_frame, s.flicker_weight);
+  auto& why = r.best.provenance;
+  why = {
+      {"optimizer", "aapat optimize --sequence (SLSQP on the epigraph)"},
+      {"frames", std::to_string(s.frames)},
+      {"samples_per_frame", std::to_string(s.samples_per_frame)},
+      {"model", s.model.kind == AccumulationKind::box ? fmt::format("box:window={}", s.model.window)
+                                                      : fmt::format("ema:alpha={}", s.model.alpha)},
+      {"flicker_weight", fmt::format("{}", s.flicker_weight)},
+      {"filter", metric.filter().name()},
+      {"acuity", metric.acuity().name},
+      {"norm", format_norm(metric.norm())},
+      {"seed", std::to_string(s.seed)},
+      {"starts", std::to_string(s.starts)},
+      {"start", std::to_string(r.best_start)},
+      {"worst_e2", fmt::format("{:.6f}", r.worst_e2)},
+      {"flicker", fmt::format("{:.6f}", r.flicker)}};
+  if (s.profile) why.emplace_back("api", s.profile->name);
+  validate(r.best);
+  return r;
+}
+
+}  // namespace aapat

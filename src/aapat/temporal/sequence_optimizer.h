@@ -1,0 +1,77 @@
+// The search for a sequence (`aapat optimize --sequence K`): the positions of
+// every sample of K one-pixel frames (one sample each for a TAA or upscaler
+// jitter, several for alternating MSAA, equal weights within a frame)
+// minimizing
+//     J = worst steady-state E2 + flicker_weight * mean flicker
+// under an accumulation model (temporal_metrics.h: the steady frames' E2 and
+// the flicker between consecutive ones). In epigraph form, as the pattern
+// optimizer's --method slsqp: minimize s + lambda mean_k t_k over the
+// positions, s and the t_k, subject to every term of every steady frame's
+// E2 <= s and every term of transition k's flicker <= t_k, where a term is
+// W E1 (or W F) at
+// one angle for the maximum over angles, or the frame's combination over
+// angles for an L_p mean. Each term has its analytic gradient: E1^2 by
+// core/gradient.h, and the flicker's F = sum_j |R_j| (p_(j+1) - p_(j)) over
+// the sorted projections (R_j the running sum of the changes of the
+// samples' weights between the frames) by dF/dp_(j) = |R_(j-1)| - |R_j|.
+// NLopt's SLSQP solves it.
+//
+// Multi-start: start 0 is Halton(2, 3) from index 1 (split into frames of
+// the samples per frame), the others uniform random from start_rng(seed, i);
+// the best J wins, ties to the lower start, so the result is the same at any
+// thread count. With an API profile, each frame is then snapped to the
+// 1/16-pixel lattice and polished by single lattice steps while J falls.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "aapat/core/hardware_layout.h"
+#include "aapat/core/metric.h"
+#include "aapat/temporal/accumulation.h"
+
+namespace aapat {
+
+struct SequenceSearch {
+  int frames = 8;
+  int samples_per_frame = 1;
+  Accumulation model;         // no resolve: its weights move with the samples
+  double flicker_weight = 3;  // lambda
+  int starts = 16;
+  uint64_t seed = 1;
+  int iterations = 2000;                // NLopt evaluations per start
+  const ApiProfile* profile = nullptr;  // snap to its lattice
+};
+
+struct SequenceSearchResult {
+  Sequence best;
+  double objective = 0;              // J of the result
+  double worst_e2 = 0, flicker = 0;  // flicker: the mean over the period's transitions
+  int best_start = 0;
+  double halton_objective = 0;  // J of start 0, the Halton sequence, before the search
+  std::optional<double> continuous_objective;  // before snapping, with a profile
+};
+
+// Throws Error (ParameterError naming the setting) for settings out of range.
+void validate(const SequenceSearch& s);
+
+// J of a sequence under the search's model (worst steady E2, mean flicker).
+// The mean flicker, not the worst: rendered flicker (the mean change of the
+// error over pixels and frames) follows the mean (docs/temporal.md).
+struct SequenceObjective {
+  double objective = 0, worst_e2 = 0, flicker = 0;
+};
+SequenceObjective sequence_objective(const Sequence& s, const SequenceSearch& search,
+                                     const Metric& metric);
+
+SequenceSearchResult optimize_sequence(const SequenceSearch& search, const Metric& metric);
+
+// The epigraph's constraints (each term minus its bound) at positions x (x,
+// y per sample, frame by frame) with every bound 0, and their Jacobian, one
+// row per constraint over the positions only: for the gradient tests.
+void sequence_terms(const SequenceSearch& search, const Metric& metric,
+                    const std::vector<double>& positions, std::vector<double>& values,
+                    std::vector<double>& jacobian);
+
+}  // namespace aapat

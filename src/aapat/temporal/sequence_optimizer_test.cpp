@@ -1,0 +1,114 @@
+#include "aapat/temporal/sequence_optimizer.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <random>
+
+#include "aapat/core/acuity.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/temporal/sequence_json.h"
+#include "aapat/temporal/temporal_metrics.h"
+#include "testing/error_message.h"
+
+namespace aapat {
+namespace {
+
+const Metric& uniform_l2() {
+  static const Metric m(make_filter("mitchell"), uniform_acuity(6), 2);
+  return m;
+}
+const Metric& paper_max() {
+  static const Metric m(make_filter("mitchell"), laine_aila_acuity());
+  return m;
+}
+
+// Every constraint's gradient against central differences, for the maximum
+// over angles and an L2 mean, E2 and flicker blocks, one and two samples
+// per frame, EMA and a short box window.
+TEST(SequenceOptimizer, ConstraintGradientsMatchFiniteDifferences) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-0.45, 0.45);
+  for (const Metric* metric : {&paper_max(), &uniform_l2()})
+    for (int per_frame : {1, 2}) {
+      SequenceSearch s;
+      s.frames = 4;
+      s.samples_per_frame = per_frame;
+      if (per_frame == 2) {
+        s.model.kind = AccumulationKind::box;
+        s.model.window = 3;
+      }
+      std::vector<double> x(static_cast<size_t>(2 * s.frames * per_frame));
+      for (double& v : x) v = u(rng);
+      std::vector<double> values, jacobian, plus, minus, unused;
+      sequence_terms(s, *metric, x, values, jacobian);
+      const size_t m = values.size(), n = x.size();
+      const double h = 1e-6;
+      for (size_t j = 0; j < n; ++j) {
+        std::vector<double> xp = x, xm = x;
+        xp[j] += h;
+        xm[j] -= h;
+        sequence_terms(s, *metric, xp, plus, unused);
+        sequence_terms(s, *metric, xm, minus, unused);
+        for (size_t i = 0; i < m; ++i)
+          EXPECT_NEAR(jacobian[i * n + j], (plus[i] - minus[i]) / (2 * h), 2e-6)
+              << "constraint " << i << " coordinate " << j << " per frame " << per_frame;
+      }
+    }
+}
+
+// The search ends at or below its Halton start, reports the J it returns,
+// and gives the same file for 1 and 2 threads.
+TEST(SequenceOptimizer, BeatsItsHaltonStartDeterministically) {
+  SequenceSearch s;
+  s.frames = 4;
+  s.starts = 6;
+  s.flicker_weight = 2;
+  std::string first;
+  for (int threads : {1, 2}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const SequenceSearchResult r = optimize_sequence(s, uniform_l2());
+    EXPECT_LE(r.objective, r.halton_objective);
+    EXPECT_NEAR(sequence_objective(r.best, s, uniform_l2()).objective, r.objective, 1e-15);
+    const std::string text = sequence_to_json(r.best);
+    if (first.empty()) first = text;
+    EXPECT_EQ(text, first) << threads;
+  }
+}
+
+// With an API profile every frame's samples end on the 1/16 lattice.
+TEST(SequenceOptimizer, AnApiProfileKeepsEveryFrameOnTheLattice) {
+  SequenceSearch s;
+  s.frames = 2;
+  s.samples_per_frame = 2;
+  s.starts = 3;
+  s.profile = &api_profile("d3d12-tier2");
+  const SequenceSearchResult r = optimize_sequence(s, paper_max());
+  ASSERT_TRUE(r.continuous_objective.has_value());
+  for (const Pattern& f : r.best.frames)
+    for (const Vec2 v : f.sets[0]) {
+      EXPECT_EQ(v.x * 16, std::round(v.x * 16));
+      EXPECT_EQ(v.y * 16, std::round(v.y * 16));
+    }
+}
+
+TEST(SequenceOptimizer, BadSettingsAreNamed) {
+  using testing::error_parameter;
+  SequenceSearch s;
+  s.frames = 0;
+  EXPECT_EQ(error_parameter([&] { validate(s); }), "sequence");
+  s.frames = 8;
+  s.flicker_weight = std::nan("");
+  EXPECT_EQ(error_parameter([&] { validate(s); }), "flicker-weight");
+  s.flicker_weight = 1;
+  s.model.resolve = make_filter("gaussian");
+  EXPECT_EQ(error_parameter([&] { validate(s); }), "resolve");
+  s.model.resolve.reset();
+  s.samples_per_frame = 16;
+  s.profile = &api_profile("metal");
+  EXPECT_EQ(error_parameter([&] { validate(s); }), "api");
+}
+
+}  // namespace
+}  // namespace aapat

@@ -1,0 +1,25 @@
+// The accumulation model's options, shared by `aapat sequence eval` and
+// `aapat optimize --sequence`: --model, --alpha, --window, --resolve,
+// --resolve-radius.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "aapat/temporal/accumulation.h"
+
+namespace aapat {
+
+struct ModelOptions {
+  std::string model = "ema", resolve;
+  double alpha = 0.1;
+  int window = 0, radius = 1;
+
+  void add_to(CLI::App* cmd);
+  // Throws Error naming the flag of a setting out of range.
+  Accumulation make() const;
+  // "EMA alpha 0.1, gaussian resolve over 3x3", for reports.
+  std::string text() const;
+};
+
+}  // namespace aapat
