@@ -55,6 +55,8 @@ done
 # Which objective predicts rendered error: 30+ patterns at 2, 4 and 8 samples per pixel.
 "$aapat" study --budgets 2,4,8 --patterns 30 --table docs/study-correlations.md \
   --csv docs/study-correlations.csv --html docs/study-report.html >/dev/null
+# Jitter and alternating-MSAA sequences under box, EMA and EMA + resolve, and rendered TAA.
+AAPAT="$aapat" "$root/scripts/temporal-table.sh" docs/temporal-table.md >/dev/null
 "$aapat" hardware-table > docs/hardware-table.md
 # Every registry of specs, as aapat list prints it (the same entries the parsers use).
 "$aapat" list > docs/registry.txt

@@ -15,6 +15,8 @@
 #include "aapat/io/json_report.h"
 #include "aapat/render/scene.h"
 #include "aapat/render/texture_filter.h"
+#include "aapat/temporal/sequence_generators.h"
+#include "aapat/temporal/sequence_json.h"
 #include "cli/commands.h"
 
 namespace aapat {
@@ -52,7 +54,12 @@ std::vector<Section> sections() {
       section("texture_filters", "texture filters (aapat render --texture-filter)",
               texture_filter_registry()),
       section("api_profiles", "API profiles (aapat export --api, optimize --api)",
-              profile_registry())};
+              profile_registry()),
+      section("sequences", "sequences (aapat sequence, animate --sequence; or a .json sequence file)",
+              sequence_registry()),
+      Section{"aapat_sequences",
+              "optimized sequences (data/sequences, docs/temporal.md)",
+              sequence_catalog()}};
 }
 
 JsonObject info_json(const SpecInfo& info) {

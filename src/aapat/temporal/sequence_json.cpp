@@ -9,6 +9,10 @@
 #include "aapat/io/pattern_json.h"
 #include "aapat/temporal/sequence_generators.h"
 
+namespace aapat::embedded {
+extern const std::vector<std::pair<std::string_view, std::string_view>> kAapatSequences;
+}  // namespace aapat::embedded
+
 namespace aapat {
 namespace {
 
@@ -167,7 +171,20 @@ void save_sequence_file(const Sequence& s, const std::string& path) {
   write_file_atomically(path, sequence_to_json(s));
 }
 
+std::vector<SpecInfo> sequence_catalog() {
+  std::vector<SpecInfo> out;
+  for (const auto& [name, text] : embedded::kAapatSequences) {
+    const json doc = json::parse(text);
+    out.push_back({std::string(name), doc.value("description", ""),
+                   fmt::format("aapat: data/sequences/{}.json", name), {}});
+  }
+  return out;
+}
+
 Sequence resolve_sequence(const std::string& spec_or_path, const std::optional<Pattern>& pattern) {
+  for (const auto& [name, text] : embedded::kAapatSequences)
+    if (name == spec_or_path)
+      return sequence_from_json(text, fmt::format("data/sequences/{}.json", name));
   std::error_code ec;
   if (spec_or_path.ends_with(".json") || std::filesystem::is_regular_file(spec_or_path, ec))
     return load_sequence_file(spec_or_path);

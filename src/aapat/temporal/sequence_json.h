@@ -10,6 +10,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "aapat/core/spec.h"
 
 #include "aapat/temporal/sequence.h"
 
@@ -23,9 +26,14 @@ Sequence load_sequence_file(const std::string& path);
 // Written atomically: a failed write leaves no file.
 void save_sequence_file(const Sequence& s, const std::string& path);
 
-// A sequence file (a path ending in .json or naming a file) or a generator
-// spec (temporal/sequence_generators.h), with `pattern` for the generators
-// that take one apart.
+// The optimized sequences committed under data/sequences/ (made by
+// scripts/make-sequences.sh, embedded in the binary), by name: aapat-taa-8,
+// aapat-taa-16, with a line each saying what they are.
+std::vector<SpecInfo> sequence_catalog();
+
+// A sequence file (a path ending in .json or naming a file), a name of the
+// sequence catalog, or a generator spec (temporal/sequence_generators.h),
+// with `pattern` for the generators that take one apart.
 Sequence resolve_sequence(const std::string& spec_or_path,
                           const std::optional<Pattern>& pattern = {});
 

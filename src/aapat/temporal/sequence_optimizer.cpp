@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <span>
 
 #include "aapat/core/gradient.h"
 #include "aapat/core/lattice.h"
@@ -26,6 +27,7 @@ struct Epigraph {
   const Metric& metric;
   int frames, per_frame, samples;
   bool maximum;                            // the max over angles (else an L_p mean)
+  bool mean_e2;                            // the mean over phases (else the worst)
   std::vector<std::vector<double>> phase;  // phase[k][f]: frame f's weight at steady frame k
   double lambda;
   // Scratch.
@@ -39,6 +41,7 @@ struct Epigraph {
         per_frame(s.samples_per_frame),
         samples(s.frames * s.samples_per_frame),
         maximum(std::isinf(m.norm())),
+        mean_e2(s.frame_measure == FrameMeasure::mean),
         lambda(s.flicker_weight) {
     for (int k = 0; k < frames; ++k) phase.push_back(phase_weights(s.model, frames, k, true));
     const size_t n = static_cast<size_t>(samples), angles = static_cast<size_t>(m.angle_count());
@@ -51,8 +54,13 @@ struct Epigraph {
   int terms() const { return maximum ? angles() : 1; }
   size_t constraint_count() const { return static_cast<size_t>(2 * frames * terms()); }
   // The positions, s, and one flicker bound t_k per transition.
-  size_t variable_count() const { return static_cast<size_t>(2 * samples + 1 + frames); }
+  // The positions, then the E2 bounds (one s for the worst frame, or s_k per
+  // phase for the mean), then one flicker bound t_k per transition.
+  size_t e2_bounds() const { return mean_e2 ? static_cast<size_t>(frames) : 1; }
+  size_t variable_count() const { return static_cast<size_t>(2 * samples + frames) + e2_bounds(); }
   size_t s_index() const { return static_cast<size_t>(2 * samples); }
+  size_t e2_bound(int k) const { return s_index() + (mean_e2 ? static_cast<size_t>(k) : 0); }
+  size_t flicker_bound(int k) const { return s_index() + e2_bounds() + static_cast<size_t>(k); }
 
   void project(const double* x, int angle) {
     const double nx = -metric.sin(angle), ny = metric.cos(angle);
@@ -134,12 +142,11 @@ struct Epigraph {
   }
 
   void constraints(const double* x, double* result, double* grad) {
-    const size_t s = s_index();
     for (int k = 0; k < frames; ++k) {
       for (int j = 0; j < samples; ++j)
         w[static_cast<size_t>(j)] =
             phase[static_cast<size_t>(k)][static_cast<size_t>(j / per_frame)] / per_frame;
-      block(x, s, static_cast<size_t>(k * terms()), result, grad,
+      block(x, e2_bound(k), static_cast<size_t>(k * terms()), result, grad,
             [&] { return e1_squared_gradient(metric.filter(), p, w, dp, dw); });
     }
     std::vector<double> c(static_cast<size_t>(samples));
@@ -150,8 +157,8 @@ struct Epigraph {
         const size_t f = static_cast<size_t>(j / per_frame);
         c[static_cast<size_t>(j)] = (now[f] - before[f]) / per_frame;
       }
-      block(x, s + 1 + static_cast<size_t>(k), static_cast<size_t>((frames + k) * terms()), result,
-            grad, [&] { return flicker_squared(c); });
+      block(x, flicker_bound(k), static_cast<size_t>((frames + k) * terms()), result, grad,
+            [&] { return flicker_squared(c); });
     }
   }
 };
@@ -176,12 +183,16 @@ double nlopt_objective(unsigned n, const double* x, double* grad, void* data) {
   const auto& e = *static_cast<const Epigraph*>(data);
   // s + lambda * the mean of the transitions' flicker bounds.
   const double each = e.lambda / e.frames;
-  double value = x[e.s_index()];
-  for (int k = 0; k < e.frames; ++k) value += each * x[e.s_index() + 1 + static_cast<size_t>(k)];
-  if (grad) {
-    std::fill(grad, grad + n, 0.0);
-    grad[e.s_index()] = 1;
-    for (int k = 0; k < e.frames; ++k) grad[e.s_index() + 1 + static_cast<size_t>(k)] = each;
+  const double per_e2 = 1.0 / static_cast<double>(e.e2_bounds());
+  if (grad) std::fill(grad, grad + n, 0.0);
+  double value = 0;
+  for (size_t i = 0; i < e.e2_bounds(); ++i) {
+    value += per_e2 * x[e.s_index() + i];
+    if (grad) grad[e.s_index() + i] = per_e2;
+  }
+  for (int k = 0; k < e.frames; ++k) {
+    value += each * x[e.flicker_bound(k)];
+    if (grad) grad[e.flicker_bound(k)] = each;
   }
   return value;
 }
@@ -202,7 +213,8 @@ std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
   e.constraints(x.data(), c.data(), nullptr);
   const size_t per_block = static_cast<size_t>(e.terms());
   for (size_t i = 0; i < m; ++i) {
-    const size_t bound = i < m / 2 ? e.s_index() : e.s_index() + 1 + (i - m / 2) / per_block;
+    const size_t bound = i < m / 2 ? e.e2_bound(static_cast<int>(i / per_block))
+                                   : e.flicker_bound(static_cast<int>((i - m / 2) / per_block));
     x[bound] = std::max(x[bound], c[i]);  // c = term - 0
   }
   std::vector<double> lo(n, -kBound), hi(n, kBound);
@@ -293,14 +305,86 @@ void validate(const SequenceSearch& s) {
                            s.profile->max_samples, s.samples_per_frame));
 }
 
+namespace {
+
+double frame_term(const SequenceObjective& o, const SequenceSearch& s) {
+  return s.frame_measure == FrameMeasure::mean ? o.mean_e2 : o.worst_e2;
+}
+
+// Every steady phase reads the same samples (all the frames') with other
+// weights, so each angle's projections are sorted once for all the phases'
+// E1 and all the transitions' flicker: O(angles (N log N + K N)) instead of
+// O(angles K N log N). One-pixel frames without a resolve only.
+SequenceObjective one_pixel_objective(const Sequence& seq, const SequenceSearch& s,
+                                      const Metric& metric) {
+  const int period = seq.period();
+  std::vector<double> x, y, w;  // every sample, its frame's weight within the frame
+  std::vector<int> frame;
+  for (int f = 0; f < period; ++f) {
+    const Kernel k = make_kernel(seq.frames[static_cast<size_t>(f)], 0);
+    for (int i = 0; i < k.size(); ++i) {
+      x.push_back(k.x[static_cast<size_t>(i)]);
+      y.push_back(k.y[static_cast<size_t>(i)]);
+      w.push_back(k.w[static_cast<size_t>(i)]);
+      frame.push_back(f);
+    }
+  }
+  const size_t n = w.size(), angles = static_cast<size_t>(metric.angle_count());
+  std::vector<std::vector<double>> phase;
+  for (int k = 0; k < period; ++k) phase.push_back(phase_weights(s.model, period, k, true));
+  std::vector<double> p(n), weight(n), e1(angles * static_cast<size_t>(period)),
+      flicker(angles * static_cast<size_t>(period));
+  std::vector<size_t> order(n);
+  for (size_t a = 0; a < angles; ++a) {
+    const double nx = -metric.sin(static_cast<int>(a)), ny = metric.cos(static_cast<int>(a));
+    for (size_t j = 0; j < n; ++j) p[j] = x[j] * nx + y[j] * ny;
+    std::iota(order.begin(), order.end(), size_t{0});
+    std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return p[i] < p[j]; });
+    const double w2 = metric.weight_sq(static_cast<int>(a));
+    for (int k = 0; k < period; ++k) {
+      const auto& now = phase[static_cast<size_t>(k)];
+      const auto& before = phase[static_cast<size_t>((k + period - 1) % period)];
+      for (size_t j = 0; j < n; ++j) weight[j] = now[static_cast<size_t>(frame[j])] * w[j];
+      e1[static_cast<size_t>(k) * angles + a] =
+          w2 * e1_squared_in_order(metric.filter(), p, weight, order);
+      double running = 0, integral = 0;
+      for (size_t j = 0; j + 1 < n; ++j) {
+        const size_t m = order[j];
+        running +=
+            (now[static_cast<size_t>(frame[m])] - before[static_cast<size_t>(frame[m])]) * w[m];
+        integral += std::abs(running) * (p[order[j + 1]] - p[m]);
+      }
+      flicker[static_cast<size_t>(k) * angles + a] = w2 * integral * integral;
+    }
+  }
+  SequenceObjective out;
+  for (int k = 0; k < period; ++k) {
+    const auto at = [&](const std::vector<double>& v) {
+      return std::span<const double>(v).subspan(static_cast<size_t>(k) * angles, angles);
+    };
+    const double e2 = combine_over_angles(at(e1), metric.norm());
+    out.worst_e2 = std::max(out.worst_e2, e2);
+    out.mean_e2 += e2 / period;
+    out.flicker += combine_over_angles(at(flicker), metric.norm()) / period;
+  }
+  out.objective = frame_term(out, s) + s.flicker_weight * out.flicker;
+  return out;
+}
+
+}  // namespace
+
 SequenceObjective sequence_objective(const Sequence& seq, const SequenceSearch& s,
                                      const Metric& metric) {
   const int period = seq.period();
+  if (seq.frames[0].set_count() == 1 && seq.frames[0].footprint.size == 1 && !s.model.resolve)
+    return one_pixel_objective(seq, s, metric);
   std::vector<std::vector<Kernel>> steady;
   SequenceObjective out;
   for (int k = 0; k < period; ++k) {
     steady.push_back(accumulated_kernels(seq, s.model, k, true));
-    out.worst_e2 = std::max(out.worst_e2, kernels_e2(metric, steady.back()));
+    const double e2 = kernels_e2(metric, steady.back());
+    out.worst_e2 = std::max(out.worst_e2, e2);
+    out.mean_e2 += e2 / period;
   }
   for (int k = 0; k < period; ++k) {
     const auto& before = steady[static_cast<size_t>((k + period - 1) % period)];
@@ -310,7 +394,7 @@ SequenceObjective sequence_objective(const Sequence& seq, const SequenceSearch& 
                             kernel_flicker(metric, before[i], steady[static_cast<size_t>(k)][i]));
     out.flicker += transition / period;
   }
-  out.objective = out.worst_e2 + s.flicker_weight * out.flicker;
+  out.objective = frame_term(out, s) + s.flicker_weight * out.flicker;
   return out;
 }
 
@@ -336,7 +420,9 @@ void sequence_terms(const SequenceSearch& s, const Metric& metric,
 
 SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& metric) {
   validate(s);
-  const std::string name = fmt::format("aapat-sequence-{}x{}", s.frames, s.samples_per_frame);
+  const std::string name = s.samples_per_frame == 1
+                               ? fmt::format("aapat-taa-{}", s.frames)
+                               : fmt::format("aapat-msaa-{}x{}", s.frames, s.samples_per_frame);
   // Start 0: Halton (2, 3) from index 1, consecutive points per frame.
   std::vector<double> halton;
   for (int i = 1; i <= s.frames * s.samples_per_frame; ++i)
@@ -373,6 +459,7 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
   const SequenceObjective j = sequence_objective(r.best, s, metric);
   r.objective = j.objective;
   r.worst_e2 = j.worst_e2;
+  r.mean_e2 = j.mean_e2;
   r.flicker = j.flicker;
   r.best.description =
       fmt::format("{} frames of {} sample(s) optimized for worst E2 + {} x mean flicker", s.frames,

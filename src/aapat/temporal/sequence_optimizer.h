@@ -2,7 +2,7 @@
 // every sample of K one-pixel frames (one sample each for a TAA or upscaler
 // jitter, several for alternating MSAA, equal weights within a frame)
 // minimizing
-//     J = worst steady-state E2 + flicker_weight * mean flicker
+//     J = worst (or mean) steady-state E2 + flicker_weight * mean flicker
 // under an accumulation model (temporal_metrics.h: the steady frames' E2 and
 // the flicker between consecutive ones). In epigraph form, as the pattern
 // optimizer's --method slsqp: minimize s + lambda mean_k t_k over the
@@ -33,11 +33,16 @@
 
 namespace aapat {
 
+// The frames' E2 in J: the worst steady frame, or the mean over the phases
+// (which rendered RMSE over many frames follows more closely; docs/temporal.md).
+enum class FrameMeasure { worst, mean };
+
 struct SequenceSearch {
   int frames = 8;
   int samples_per_frame = 1;
   Accumulation model;         // no resolve: its weights move with the samples
   double flicker_weight = 3;  // lambda
+  FrameMeasure frame_measure = FrameMeasure::worst;
   int starts = 16;
   uint64_t seed = 1;
   int iterations = 2000;                // NLopt evaluations per start
@@ -46,8 +51,8 @@ struct SequenceSearch {
 
 struct SequenceSearchResult {
   Sequence best;
-  double objective = 0;              // J of the result
-  double worst_e2 = 0, flicker = 0;  // flicker: the mean over the period's transitions
+  double objective = 0;                           // J of the result
+  double worst_e2 = 0, mean_e2 = 0, flicker = 0;  // flicker: the mean over the transitions
   int best_start = 0;
   double halton_objective = 0;  // J of start 0, the Halton sequence, before the search
   std::optional<double> continuous_objective;  // before snapping, with a profile
@@ -60,7 +65,7 @@ void validate(const SequenceSearch& s);
 // The mean flicker, not the worst: rendered flicker (the mean change of the
 // error over pixels and frames) follows the mean (docs/temporal.md).
 struct SequenceObjective {
-  double objective = 0, worst_e2 = 0, flicker = 0;
+  double objective = 0, worst_e2 = 0, mean_e2 = 0, flicker = 0;
 };
 SequenceObjective sequence_objective(const Sequence& s, const SequenceSearch& search,
                                      const Metric& metric);

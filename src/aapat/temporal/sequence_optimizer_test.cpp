@@ -8,6 +8,7 @@
 
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter_catalog.h"
+#include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/temporal_metrics.h"
 #include "testing/error_message.h"
@@ -38,6 +39,7 @@ TEST(SequenceOptimizer, ConstraintGradientsMatchFiniteDifferences) {
       if (per_frame == 2) {
         s.model.kind = AccumulationKind::box;
         s.model.window = 3;
+        s.frame_measure = FrameMeasure::mean;  // a bound per phase
       }
       std::vector<double> x(static_cast<size_t>(2 * s.frames * per_frame));
       for (double& v : x) v = u(rng);
@@ -75,6 +77,29 @@ TEST(SequenceOptimizer, BeatsItsHaltonStartDeterministically) {
     if (first.empty()) first = text;
     EXPECT_EQ(text, first) << threads;
   }
+}
+
+// The one-pixel fast path (one sort per angle for every phase) against the
+// accumulated kernels' E2 and flicker, phase by phase.
+TEST(SequenceOptimizer, TheObjectiveIsTheAccumulatedKernelsErrors) {
+  for (const char* spec : {"halton:frames=8", "r2:frames=5", "msaa-alternating:samples=2,frames=4"})
+    for (const Metric* metric : {&paper_max(), &uniform_l2()}) {
+      const Sequence seq = make_sequence(spec);
+      SequenceSearch s;
+      s.flicker_weight = 1.5;
+      double worst = 0, flicker = 0;
+      for (int k = 0; k < seq.period(); ++k) {
+        const auto now = accumulated_kernels(seq, s.model, k, true);
+        const auto before =
+            accumulated_kernels(seq, s.model, (k + seq.period() - 1) % seq.period(), true);
+        worst = std::max(worst, kernels_e2(*metric, now));
+        flicker += kernel_flicker(*metric, before[0], now[0]) / seq.period();
+      }
+      const SequenceObjective j = sequence_objective(seq, s, *metric);
+      EXPECT_NEAR(j.worst_e2, worst, 1e-13) << spec;
+      EXPECT_NEAR(j.flicker, flicker, 1e-13) << spec;
+      EXPECT_NEAR(j.objective, worst + 1.5 * flicker, 1e-13) << spec;
+    }
 }
 
 // With an API profile every frame's samples end on the 1/16 lattice.

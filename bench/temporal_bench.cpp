@@ -1,0 +1,52 @@
+// Temporal E2 evaluations per second (issue 16): one evaluation is the
+// sequence's objective under EMA alpha 0.1, the accumulated kernel of every
+// steady phase built and its E2 taken, plus the flicker of every transition
+// (temporal/sequence_optimizer.h), for K = 8, 16, 64 Halton jitter frames.
+// Results and the machine: docs/benchmarks.md.
+#include <benchmark/benchmark.h>
+
+#include "aapat/core/acuity.h"
+#include "aapat/core/filter_catalog.h"
+#include "aapat/temporal/sequence_generators.h"
+#include "aapat/temporal/sequence_optimizer.h"
+#include "aapat/temporal/temporal_metrics.h"
+
+namespace aapat {
+namespace {
+
+void TemporalObjective(benchmark::State& state, const char* acuity, double norm) {
+  const Metric metric(make_filter("mitchell"), make_acuity(acuity), norm);
+  const int k = static_cast<int>(state.range(0));
+  const Sequence s = make_sequence("halton:frames=" + std::to_string(k));
+  SequenceSearch search;
+  search.frames = k;
+  for (auto _ : state) benchmark::DoNotOptimize(sequence_objective(s, search, metric).objective);
+  state.SetItemsProcessed(state.iterations());
+  state.counters["frames"] = k;
+}
+
+BENCHMARK_CAPTURE(TemporalObjective, uniform_1deg_l2, "uniform:step=1", 2.0)
+    ->Arg(8)
+    ->Arg(16)
+    ->Arg(64)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(TemporalObjective, laine_aila_max, "laine-aila", Metric::kMaxNorm)
+    ->Arg(8)
+    ->Arg(16)
+    ->Arg(64)
+    ->Unit(benchmark::kMicrosecond);
+
+// One phase's E2 alone (the per-frame evaluation the curve repeats).
+void TemporalFrameE2(benchmark::State& state) {
+  const Metric metric(make_filter("mitchell"), make_acuity("uniform:step=1"), 2.0);
+  const int k = static_cast<int>(state.range(0));
+  const Sequence s = make_sequence("halton:frames=" + std::to_string(k));
+  Accumulation ema;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(kernels_e2(metric, accumulated_kernels(s, ema, 0, true)));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(TemporalFrameE2)->Arg(8)->Arg(16)->Arg(64)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace aapat

@@ -1,0 +1,115 @@
+// `aapat sequence`, `optimize --sequence` and the temporal modes of animate
+// and render from the command line: results, files, and bad input named
+// with nothing written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "aapat/temporal/sequence_json.h"
+#include "testing/cli_run.h"
+
+namespace aapat {
+namespace {
+
+using testing::run;
+using testing::temp_path;
+
+TEST(SequenceCli, GenerateWritesAFileThatEvalReads) {
+  const std::string path = temp_path("h.json");
+  ASSERT_EQ(run({"sequence", "generate", "halton:frames=8", "-o", path}).code, 0);
+  EXPECT_EQ(load_sequence_file(path).period(), 8);
+  const auto r = run({"sequence", "eval", path, "aapat-taa-8", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["command"], "sequence eval");
+  EXPECT_EQ(doc["acuity"], "uniform:step=1,weight=1");
+  ASSERT_EQ(doc["rows"].size(), 2u);
+  // data/sequences/aapat-taa-8.json beats Halton(2,3) of 8 phases on both (docs/temporal.md).
+  EXPECT_LT(doc["rows"][1]["worst_e2"].get<double>(), doc["rows"][0]["worst_e2"].get<double>());
+  EXPECT_LT(doc["rows"][1]["mean_flicker"].get<double>(),
+            doc["rows"][0]["mean_flicker"].get<double>());
+  EXPECT_NEAR(doc["rows"][0]["worst_e2"].get<double>(), 0.1347, 5e-5);
+}
+
+TEST(SequenceCli, PhasesAndExport) {
+  EXPECT_EQ(run({"sequence", "phases", "--ratio", "2"}).out, "32\n");
+  EXPECT_EQ(run({"sequence", "phases", "--render", "1280", "--display", "1920"}).out, "18\n");
+  const auto hlsl = run({"sequence", "export", "halton:frames=2"});
+  ASSERT_EQ(hlsl.code, 0) << hlsl.err;
+  // Halton(2,3) index 1: (1/2, 1/3) - 1/2 = (0, -1/6); +y down: 1/6.
+  EXPECT_NE(hlsl.out.find("float2(0, 0.16666666666666669)"), std::string::npos) << hlsl.out;
+  const auto msaa =
+      run({"sequence", "export", "msaa-alternating:samples=2,frames=2", "--api", "gl"});
+  ASSERT_EQ(msaa.code, 0) << msaa.err;
+  EXPECT_NE(msaa.out.find("---- frame 1 ----"), std::string::npos);
+  EXPECT_NE(
+      run({"sequence", "export", "msaa-alternating"}).err.find("export it for an API profile"),
+      std::string::npos);
+}
+
+TEST(SequenceCli, OptimizeWritesASequenceThatBeatsHalton) {
+  const std::string path = temp_path("o.json");
+  const auto r = run({"optimize", "--sequence", "4", "--starts", "4", "--flicker-weight", "1", "-o",
+                      path, "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_LE(doc["objective"].get<double>(), doc["halton_objective"].get<double>());
+  EXPECT_EQ(load_sequence_file(path).name, "aapat-taa-4");
+}
+
+TEST(SequenceCli, TemporalRenderingReportsEveryMeasure) {
+  const std::string csv = temp_path("frames.csv");
+  const auto r = run({"animate", "circle", "--sequence", "halton:frames=4", "--frames", "4",
+                      "--size", "24", "--reference-samples", "16", "--no-cache", "--csv", csv});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("in steady state: RMSE"), std::string::npos) << r.out;
+  EXPECT_TRUE(testing::slurp(csv).starts_with("frame,rmse,max_deviation,ssim,flicker\n"));
+  const auto still = run({"render", "spiral", "--size", "24x24", "--sequence", "r2:frames=4",
+                          "--reference-samples", "16", "--no-cache", "--json"});
+  ASSERT_EQ(still.code, 0) << still.err;
+  EXPECT_EQ(nlohmann::json::parse(still.out)["frames"], 4);
+}
+
+// Every refusal names the problem, exits non-zero and leaves no file.
+TEST(SequenceCli, BadInputIsNamedAndWritesNothing) {
+  const std::string out = temp_path("never.json");
+  struct Case {
+    std::vector<std::string> args;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {{"sequence", "eval", "halton", "--alpha", "0"},
+       "--alpha 0: the blend factor must lie in (0, 1]"},
+      {{"sequence", "eval", "halton", "--alpha", "nan"}, "--alpha nan"},
+      {{"sequence", "eval", "halton", "--window", "-1"}, "--window -1"},
+      {{"sequence", "generate", "halton:frames=2000", "-o", out}, "frames"},
+      {{"sequence", "generate", "split:frames=2", "-o", out}, "give the pattern to take apart"},
+      {{"sequence", "generate", "split:frames=3", "--pattern", "rgss", "-o", out},
+       "4 samples do not split into 3 frames"},
+      {{"sequence", "eval", "no-such-thing"}, "unknown sequence 'no-such-thing'"},
+      {{"optimize", "--sequence", "4", "--resolve", "gaussian", "-o", out},
+       "--resolve: the search moves samples under a model without a resolve"},
+      {{"optimize", "--sequence", "4", "--samples-per-frame", "16", "--api", "metal", "-o", out},
+       "--api metal takes at most"},
+      {{"animate", "circle", "--sequence", "halton", "--pattern", "rgss"},
+       "give either --pattern or --sequence"},
+      {{"sequence", "phases", "--ratio", "0.5"}, "--ratio 0.5"},
+  };
+  for (const Case& c : cases) {
+    const auto r = run(c.args);
+    EXPECT_NE(r.code, 0) << c.args[1];
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << c.args[1];
+  }
+  const std::string bad = temp_path("bad.json");
+  std::ofstream(bad)
+      << R"({"format": "aapat-sequence", "version": 1, "name": "b", "jitter": [[0, 0.9]]})";
+  EXPECT_NE(
+      run({"sequence", "eval", bad}).err.find("sequence file " + bad + ": sequence b: frame 0"),
+      std::string::npos);
+}
+
+}  // namespace
+}  // namespace aapat
