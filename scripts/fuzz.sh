@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build/asan}
-seconds=${AAPAT_FUZZ_SECONDS:-20}
+seconds=${AAPAT_FUZZ_SECONDS:-10}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 status=0

@@ -5,7 +5,7 @@
 # installed package builds and runs the example in examples/ and that the
 # study's report page works in headless Chromium, then fuzzes each
 # parser for a fixed budget under ASan + UBSan (scripts/fuzz.sh;
-# AAPAT_FUZZ_SECONDS per target, default 20). This is what CI runs (.ci/run).
+# AAPAT_FUZZ_SECONDS per target, default 10). This is what CI runs (.ci/run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
