@@ -258,14 +258,25 @@ void add_export(CLI::App* parent, std::function<void(std::ostream&)>& action) {
       ->check(CLI::IsMember({"down", "up"}));
   cmd->add_option("--api", o->api,
                   "several samples per frame: the profile (d3d12-tier1, d3d12-tier2, vulkan, "
-                  "metal, gl); each frame snapped to its 1/16 lattice");
+                  "metal, gl, or all); each frame snapped to its 1/16 lattice");
   cmd->add_option("-o,--output", o->output, "file to write (- for stdout)")->capture_default_str();
   action = [o, cmd](std::ostream& out) {
     if (!cmd->parsed()) return;
     const Sequence s = resolve_sequence(o->sequence, optional_pattern(o->pattern));
-    const std::string text =
-        o->api.empty() ? export_jitter(s, parse_export_language(o->language), o->y == "down")
-                       : export_msaa_sequence(s, api_profile(o->api));
+    std::string text;
+    if (o->api.empty()) {
+      text = export_jitter(s, parse_export_language(o->language), o->y == "down");
+    } else if (o->api == "all") {  // every profile that holds the frames
+      for (const ApiProfile& profile : api_profiles()) {
+        try {
+          text += export_msaa_sequence(s, profile) + "\n";
+        } catch (const Error& e) {
+          text += fmt::format("// {}: not exported: {}\n\n", profile.name, e.what());
+        }
+      }
+    } else {
+      text = export_msaa_sequence(s, api_profile(o->api));
+    }
     write_output(o->output, text, out);
     if (o->output != "-") out << "wrote " << o->output << "\n";
   };
