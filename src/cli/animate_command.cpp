@@ -61,8 +61,9 @@ struct AnimateOptions : AnimationOptions {
 std::string taa_csv(const TaaResult& r) {
   std::string csv = "frame,rmse,max_deviation,ssim,flicker\n";
   for (size_t f = 0; f < r.frames.size(); ++f)
-    csv += fmt::format("{},{:.6f},{},{:.6f},{:.6f}\n", f, r.frames[f].rmse,
-                       r.frames[f].max_deviation, r.frames[f].ssim, r.frames[f].flicker);
+    csv += fmt::format("{},{:.6f},{},{},{:.6f}\n", f, r.frames[f].rmse, r.frames[f].max_deviation,
+                       r.frames[f].ssim ? fmt::format("{:.6f}", *r.frames[f].ssim) : "",
+                       r.frames[f].flicker);
   return csv;
 }
 
@@ -142,13 +143,13 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
       doc["model"] = o.model.text();
       doc["steady"] = !o.cut;
       doc["static"] = o.still;
-      doc["mean_ssim"] = taa->mean_ssim;
+      doc["mean_ssim"] = taa->mean_ssim ? JsonObject(*taa->mean_ssim) : nullptr;
       doc["flicker"] = taa->flicker;
       JsonObject::array_t rows;
       for (const TaaFrame& f : taa->frames)
         rows.push_back(JsonObject{{"rmse", f.rmse},
                                   {"max_deviation", f.max_deviation},
-                                  {"ssim", f.ssim},
+                                  {"ssim", f.ssim ? JsonObject(*f.ssim) : nullptr},
                                   {"flicker", f.flicker}});
       doc["rows"] = rows;
     }
@@ -158,10 +159,10 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
   if (taa) {
     out << fmt::format(
         "{} animation{}, {} frames of {}x{}, {} under {}{}: RMSE {:.3f}, max deviation {}, mean "
-        "SSIM {:.4f}, flicker {:.3f} levels per pixel and frame\n",
+        "SSIM {}, flicker {:.3f} levels per pixel and frame\n",
         a.animation, o.still ? " (static)" : "", a.frames, a.width, a.height, sequence->name,
         o.model.text(), o.cut ? " from a cut" : " in steady state", e.rmse, e.max_deviation,
-        taa->mean_ssim, taa->flicker);
+        taa->mean_ssim ? fmt::format("{:.4f}", *taa->mean_ssim) : "-", taa->flicker);
     return;
   }
   out << fmt::format("{} animation, {} frames of {}x{}, {}: RMSE {:.3f}, max deviation {}\n",

@@ -376,17 +376,17 @@ void run_temporal(const Options& o, std::ostream& out) {
                          {"frames", scenes.frames},
                          {"rmse", r.total.rmse},
                          {"max_deviation", r.total.max_deviation},
-                         {"mean_ssim", r.mean_ssim},
+                         {"mean_ssim", r.mean_ssim ? JsonObject(*r.mean_ssim) : nullptr},
                          {"flicker", r.flicker}});
     out << json_text(js);
     return;
   }
   out << fmt::format(
-      "{} {}x{}, {} under {}, {} frames{}: RMSE {:.3f}, max deviation {}, mean SSIM {:.4f}, "
+      "{} {}x{}, {} under {}, {} frames{}: RMSE {:.3f}, max deviation {}, mean SSIM {}, "
       "flicker {:.3f} levels per pixel and frame\n",
       o.scene, w, h, s.name, o.model.text(), scenes.frames,
-      o.cut ? " from a cut" : " in steady state", r.total.rmse, r.total.max_deviation, r.mean_ssim,
-      r.flicker);
+      o.cut ? " from a cut" : " in steady state", r.total.rmse, r.total.max_deviation,
+      r.mean_ssim ? fmt::format("{:.4f}", *r.mean_ssim) : "-", r.flicker);
 }
 
 }  // namespace

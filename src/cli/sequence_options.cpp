@@ -15,10 +15,8 @@ void ModelOptions::add_to(CLI::App* cmd) {
   cmd->add_option("--window", window, "box: frames averaged (0: the period)")
       ->capture_default_str();
   cmd->add_option("--resolve", resolve,
-                  "resolve each frame over its neighbours' samples with this filter "
-                  "(e.g. gaussian:sigma=0.47,radius=1.5)");
-  cmd->add_option("--resolve-radius", radius, "pixels the resolve reads on each side (1: 3x3)")
-      ->capture_default_str();
+                  "resolve each frame over every sample within this filter's support, the "
+                  "neighbours' too (e.g. gaussian:sigma=0.47,radius=1.5: 3x3 pixels)");
 }
 
 Accumulation ModelOptions::make() const {
@@ -26,7 +24,6 @@ Accumulation ModelOptions::make() const {
   a.kind = model == "box" ? AccumulationKind::box : AccumulationKind::ema;
   a.alpha = alpha;
   a.window = window;
-  a.resolve_radius = radius;
   if (!resolve.empty()) a.resolve = make_filter(resolve);
   try {
     validate(a);
@@ -40,8 +37,7 @@ std::string ModelOptions::text() const {
   std::string t = model == "box" ? (window ? fmt::format("box of {} frames", window)
                                            : std::string("box of the period"))
                                  : fmt::format("EMA alpha {}", alpha);
-  if (!resolve.empty())
-    t += fmt::format(", {} resolve over {}x{}", resolve, 2 * radius + 1, 2 * radius + 1);
+  if (!resolve.empty()) t += fmt::format(", {} resolve", resolve);
   return t;
 }
 

@@ -1,6 +1,5 @@
 // The accumulation model's options, shared by `aapat sequence eval` and
-// `aapat optimize --sequence`: --model, --alpha, --window, --resolve,
-// --resolve-radius.
+// `aapat optimize --sequence`: --model, --alpha, --window, --resolve.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -13,12 +12,12 @@ namespace aapat {
 struct ModelOptions {
   std::string model = "ema", resolve;
   double alpha = 0.1;
-  int window = 0, radius = 1;
+  int window = 0;
 
   void add_to(CLI::App* cmd);
   // Throws Error naming the flag of a setting out of range.
   Accumulation make() const;
-  // "EMA alpha 0.1, gaussian resolve over 3x3", for reports.
+  // "EMA alpha 0.1, gaussian:... resolve", for reports.
   std::string text() const;
 };
 

@@ -31,10 +31,12 @@ FrameKernel own_kernel(const Pattern& frame, int pixel) {
 }
 
 // The resolve of one frame at pixel (px, py) of its tile: every physical
-// sample of the (2R+1)^2 pixels around it, weighted by h(dx) h(dy) and
+// sample within the filter's support, weighted by h(dx) h(dy) and
 // normalized. A border sample that two pixels list is read once.
-FrameKernel resolved_kernel(const Pattern& frame, int pixel, const Filter& h, int radius) {
+FrameKernel resolved_kernel(const Pattern& frame, int pixel, const Filter& h) {
   const int px = pixel % frame.tile_w, py = pixel / frame.tile_w;
+  const int radius =
+      static_cast<int>(std::ceil(h.radius() + 0.5));     // pixels whose samples it may reach
   std::map<std::pair<long long, long long>, Vec2> seen;  // by position, rounded to 1e-9
   FrameKernel out;
   double total = 0;
@@ -69,9 +71,11 @@ void validate(const Accumulation& a) {
                                                a.window, kMaxSequenceFrames));
   if (!(a.alpha > 0 && a.alpha <= 1))
     throw ParameterError("alpha", fmt::format(" {}: the blend factor must lie in (0, 1]", a.alpha));
-  if (a.resolve_radius < 0 || a.resolve_radius > 4)
-    throw ParameterError("resolve-radius",
-                         fmt::format(" {}: expected 0 to 4 pixels", a.resolve_radius));
+  if (a.resolve && a.resolve->radius() > kMaxResolveRadius)
+    throw ParameterError("resolve",
+                         fmt::format(" {}: its radius {} exceeds the {} pixels a resolve "
+                                     "may read",
+                                     a.resolve->name(), a.resolve->radius(), kMaxResolveRadius));
 }
 
 std::vector<double> weights_after_cut(const Accumulation& a, int period, int k) {
@@ -144,8 +148,8 @@ std::vector<Kernel> accumulated_kernels(const Sequence& s, const Accumulation& a
       const double u = phase[static_cast<size_t>(f)];
       if (u == 0) continue;
       const Pattern& frame = s.frames[static_cast<size_t>(f)];
-      const FrameKernel fk = a.resolve ? resolved_kernel(frame, pixel, *a.resolve, a.resolve_radius)
-                                       : own_kernel(frame, pixel);
+      const FrameKernel fk =
+          a.resolve ? resolved_kernel(frame, pixel, *a.resolve) : own_kernel(frame, pixel);
       for (size_t i = 0; i < fk.at.size(); ++i) {
         at.push_back(fk.at[i]);
         w.push_back(u * fk.w[i]);

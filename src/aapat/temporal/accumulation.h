@@ -6,11 +6,12 @@
 //    alpha (1 - alpha)^j; after a camera cut at frame 0 (H_0 = F_0, so frame 0
 //    keeps (1 - alpha)^k), or in steady state, where the frames of one phase
 //    of the period sum to alpha (1 - alpha)^d / (1 - (1 - alpha)^K);
-//  - optionally each frame first resolved spatially: its samples of the
-//    (2 radius + 1)^2 pixels around the output pixel weighted by a filter
-//    h(dx) h(dy) and normalized (a TAA resolve: it reads the neighbours'
-//    samples exactly as a wide kernel does), instead of its pattern's own
-//    kernel.
+//  - optionally each frame first resolved spatially: every sample within the
+//    filter's support around the output point (the neighbours' samples
+//    too), weighted by h(dx) h(dy) and normalized (a TAA resolve: it reads
+//    the neighbours' samples exactly as a wide kernel does, and exactly as
+//    the renderer reconstructs with a filter), instead of its pattern's own
+//    kernel. A Gaussian of radius 1.5 reads 3x3 pixels.
 #pragma once
 
 #include <optional>
@@ -28,8 +29,9 @@ struct Accumulation {
   int window = 0;                 // box: the frames averaged (0: the sequence's period)
   double alpha = 0.1;             // EMA: the current frame's weight, in (0, 1]
   std::optional<Filter> resolve;  // each frame resolved over its neighbours' samples
-  int resolve_radius = 1;         // pixels on each side the resolve reads (1: 3x3)
 };
+// A resolve filter reads at most this far from the output point (pixels).
+inline constexpr double kMaxResolveRadius = 4;
 // Throws ParameterError naming the setting out of range.
 void validate(const Accumulation& a);
 

@@ -62,7 +62,11 @@ TaaResult render_taa(const TaaScenes& settings, const Sequence& s, const Accumul
     for (int i = 0; i < 256; ++i) r.total.count[i] += e.count[i];
     r.total.max_deviation = std::max(r.total.max_deviation, e.max_deviation);
     pixels += static_cast<double>(shown.values.size());
-    TaaFrame frame{e.rmse, e.max_deviation, ssim(shown, reference), 0};
+    TaaFrame frame{e.rmse, e.max_deviation, std::nullopt, 0};
+    if (shown.width >= kSsimWindow && shown.height >= kSsimWindow) {
+      frame.ssim = ssim(shown, reference);
+      ssim_sum += *frame.ssim;
+    }
     std::vector<int> error(shown.values.size());
     for (size_t i = 0; i < error.size(); ++i)
       error[i] = grey_level(shown.values[i]) - grey_level(reference.values[i]);
@@ -73,12 +77,11 @@ TaaResult render_taa(const TaaScenes& settings, const Sequence& s, const Accumul
       flicker_sum += frame.flicker;
     }
     previous_error = std::move(error);
-    ssim_sum += frame.ssim;
     r.frames.push_back(frame);
     if (on_frame) on_frame(f, shown);
   }
   summarize(r.total, pixels);
-  r.mean_ssim = ssim_sum / settings.frames;
+  if (r.frames.front().ssim) r.mean_ssim = ssim_sum / settings.frames;
   r.flicker = settings.frames > 1 ? flicker_sum / (settings.frames - 1) : 0;
   return r;
 }

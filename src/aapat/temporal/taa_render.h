@@ -16,6 +16,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "aapat/render/animation.h"
@@ -26,15 +27,15 @@ namespace aapat {
 struct TaaFrame {
   double rmse = 0;
   int max_deviation = 0;
-  double ssim = 0;
-  double flicker = 0;  // 0 for the first frame
+  std::optional<double> ssim;  // none for images under the SSIM window (render/ssim.h)
+  double flicker = 0;          // 0 for the first frame
 };
 
 struct TaaResult {
   std::vector<TaaFrame> frames;
-  ImageError total;      // every frame's deviations together (animate's figures)
-  double mean_ssim = 0;  // over frames
-  double flicker = 0;    // over frames 1, 2, ...
+  ImageError total;                 // every frame's deviations together (animate's figures)
+  std::optional<double> mean_ssim;  // over frames
+  double flicker = 0;               // over frames 1, 2, ...
 };
 
 // `steady`: the history has run forever (frame f shows phase f mod K in
