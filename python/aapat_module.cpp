@@ -23,6 +23,7 @@ arrays. Specs name filters, acuity tables, generators and scenes
   bind_points(m);
   bind_render(m);
   bind_studies(m);
+  bind_temporal(m);
 }
 
 }  // namespace aapat::python

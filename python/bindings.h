@@ -25,6 +25,7 @@ void bind_optimize(py::module_& m);
 void bind_points(py::module_& m);
 void bind_render(py::module_& m);
 void bind_studies(py::module_& m);
+void bind_temporal(py::module_& m);
 
 // (n, 2) array <-> points.
 std::vector<Vec2> to_points(const Array& a, const char* what);

@@ -1,0 +1,41 @@
+"""Sequences from Python: the CLI's numbers and files, numpy offsets, errors."""
+import json
+
+import numpy as np
+import pytest
+
+import aapat
+
+
+def test_halton_offsets_are_the_upscalers():
+    s = aapat.sequence("halton:frames=4")
+    assert s.period == 4
+    assert s.offsets.shape == (4, 1, 2)
+    # Halton(2,3) from index 1, minus 1/2: (0, -1/6), (-1/4, 1/6), ...
+    assert s.offsets[0, 0] == pytest.approx([0.0, 1 / 3 - 0.5])
+    assert s.offsets[1, 0] == pytest.approx([-0.25, 2 / 3 - 0.5])
+
+
+def test_eval_equals_the_cli(aapat_cli):
+    cli = json.loads(aapat_cli("sequence", "eval", "aapat-taa-8", "--alpha", "0.1", "--json"))
+    row = cli["rows"][0]
+    py = aapat.sequence_eval("aapat-taa-8", alpha=0.1)
+    assert py["worst_e2"] == row["worst_e2"]
+    assert py["flicker"] == row["mean_flicker"]
+    assert np.array_equal(py["cut_curve"], np.array(row["cut_curve"]))
+
+
+def test_optimize_equals_the_cli_file(aapat_cli, tmp_path):
+    out = str(tmp_path / "seq.json")
+    aapat_cli("optimize", "--sequence", "4", "--starts", "3", "--flicker-weight", "2", "-o", out)
+    r = aapat.optimize_sequence(frames=4, starts=3, flicker_weight=2)
+    with open(out) as f:
+        assert r["sequence"].to_json() == f.read()
+    assert r["objective"] <= r["halton_objective"]
+
+
+def test_bad_settings_raise_aapat_error():
+    with pytest.raises(aapat.Error, match="alpha"):
+        aapat.sequence_eval("halton:frames=4", alpha=0)
+    with pytest.raises(aapat.Error, match="unknown sequence"):
+        aapat.sequence("nothing")
