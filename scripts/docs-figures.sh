@@ -55,6 +55,8 @@ done
 # Which objective predicts rendered error: 30+ patterns at 2, 4 and 8 samples per pixel.
 "$aapat" study --budgets 2,4,8 --patterns 30 --table docs/study-correlations.md \
   --csv docs/study-correlations.csv --html docs/study-report.html >/dev/null
+# The aapat catalog against the published and standard patterns of each cost.
+AAPAT="$aapat" "$root/scripts/catalog-table.sh" docs/catalog-table.md >/dev/null
 # Jitter and alternating-MSAA sequences under box, EMA and EMA + resolve, and rendered TAA.
 AAPAT="$aapat" "$root/scripts/temporal-table.sh" docs/temporal-table.md >/dev/null
 "$aapat" hardware-table > docs/hardware-table.md

@@ -4,7 +4,7 @@
 # mean of W E1 over every degree, uniform weights, Mitchell-Netravali), free
 # and on each API's 1/16-pixel lattice. The files carry their provenance and
 # are committed; the build embeds them as the catalog's aapat-* patterns.
-# Not part of the test suite: about 40 minutes on 2 cores.
+# Not part of the test suite: about an hour and a half on 2 cores.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 aapat=${AAPAT:-$root/build/release/aapat}
@@ -12,13 +12,19 @@ out=$root/data/patterns
 mkdir -p "$out"
 objective=(--acuity uniform:step=1 --norm 2)
 starts=${AAPAT_CATALOG_STARTS:-64}
+# The sharing family searches every placement of its cost (up to 38) and the
+# 2x2 kernels have up to 32 free samples: fewer starts each.
+shared_starts=${AAPAT_CATALOG_SHARED_STARTS:-4}
+tile_starts=${AAPAT_CATALOG_2X2_STARTS:-16}
 search() {  # name family [optimize options...]
-  local name=$1 family=$2
+  local name=$1 family=$2 count=$starts
   shift 2
+  [[ $family == "P(4,1+,"* ]] && count=$shared_starts
+  [[ $family == "P(4,4,"* ]] && count=$tile_starts
   # AAPAT_CATALOG_RESUME=1 keeps the files already written (an interrupted run).
   if [ "${AAPAT_CATALOG_RESUME:-0}" = 1 ] && [ -f "$out/$name.json" ]; then return; fi
   echo "== $name ($family $*)"
-  "$aapat" optimize --family "$family" "${objective[@]}" --starts "$starts" --seed 1 "$@" \
+  "$aapat" optimize --family "$family" "${objective[@]}" --starts "$count" --seed 1 "$@" \
     -o "$out/$name.json" | tail -1
 }
 # One pixel, 1 to 16 samples: free, and on the lattice of every API that holds it

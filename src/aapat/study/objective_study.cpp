@@ -163,21 +163,27 @@ std::vector<StudyObjective> study_objectives(const StudySettings& s) {
 
 namespace {
 
-// Every scene's frames and their references (from the cache when there is one).
+// Every scene's frames and their references (from the cache when there is
+// one). A 2x2 or 4x4 footprint reconstructs at the pixel corners (the
+// renderer's Image::offset 1/2), so its references are rendered there too:
+// `shifted`, when any pattern needs them.
 struct SceneFrames {
   std::vector<std::vector<Scene>> frames;
-  std::vector<std::vector<Image>> references;
+  std::vector<std::vector<Image>> references, shifted;
 };
 SceneFrames scene_frames(const StudySettings& s, const ReferenceSource& references,
-                         const StudyProgress& progress) {
+                         const StudyProgress& progress, bool shifted = false) {
   SceneFrames out;
   for (size_t sc = 0; sc < s.scenes.size(); ++sc) {
     out.frames.push_back(frames_of(s.scenes[sc], s.size, s.frames));
     out.references.emplace_back();
+    out.shifted.emplace_back();
     for (size_t f = 0; f < out.frames.back().size(); ++f) {
       ReferenceSettings ref = s.reference;
       ref.seed += 7919 * (f + 1);
       out.references.back().push_back(references(out.frames.back()[f], s.size, s.size, ref, 0));
+      if (shifted)
+        out.shifted.back().push_back(references(out.frames.back()[f], s.size, s.size, ref, 0.5));
     }
     if (progress)
       progress(static_cast<int>(sc + 1), static_cast<int>(s.scenes.size()), "references");
@@ -196,8 +202,15 @@ void measure(std::vector<StudyPattern>& patterns, const StudySettings& s,
   for (StudyPattern& p : patterns) p.measures.assign(s.scenes.size(), {});
   tbb::parallel_for(size_t{0}, patterns.size() * s.scenes.size(), [&](size_t task) {
     const size_t i = task / s.scenes.size(), sc = task % s.scenes.size();
+    const bool corner = patterns[i].pattern.footprint.size != 1;
+    if (corner && scenes.shifted[sc].empty())
+      throw Error(
+          fmt::format("study: {} reconstructs at pixel corners and no reference was "
+                      "rendered there",
+                      patterns[i].pattern.name));
     patterns[i].measures[sc] =
-        render_measures(patterns[i].pattern, scenes.frames[sc], scenes.references[sc], s.size);
+        render_measures(patterns[i].pattern, scenes.frames[sc],
+                        corner ? scenes.shifted[sc] : scenes.references[sc], s.size);
   });
   tbb::parallel_for(size_t{0}, patterns.size(), [&](size_t i) {
     StudyPattern& p = patterns[i];
@@ -213,7 +226,9 @@ std::vector<StudyPattern> measure_patterns(std::vector<StudyPattern> patterns,
                                            const StudySettings& s,
                                            const ReferenceSource& references) {
   validate(s);
-  measure(patterns, s, study_objectives(s), scene_frames(s, references, {}));
+  bool corner = false;
+  for (const StudyPattern& p : patterns) corner = corner || p.pattern.footprint.size != 1;
+  measure(patterns, s, study_objectives(s), scene_frames(s, references, {}, corner));
   return patterns;
 }
 
