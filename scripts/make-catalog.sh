@@ -4,7 +4,7 @@
 # mean of W E1 over every degree, uniform weights, Mitchell-Netravali), free
 # and on each API's 1/16-pixel lattice. The files carry their provenance and
 # are committed; the build embeds them as the catalog's aapat-* patterns.
-# Not part of the test suite: about an hour and a half on 2 cores.
+# Not part of the test suite: about 2 h 15 min on 2 cores (docs/benchmarks.md).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 aapat=${AAPAT:-$root/build/release/aapat}

@@ -19,7 +19,8 @@ namespace {
 constexpr const char* kStyle = R"(
 body { font: 14px/1.45 system-ui, sans-serif; margin: 24px auto; max-width: 1100px; color: #222; }
 h1 { font-size: 22px; } h2 { font-size: 18px; margin-top: 36px; border-top: 1px solid #ccc; padding-top: 12px; }
-figure { display: inline-block; margin: 8px 12px 8px 0; vertical-align: top; }
+figure { display: inline-block; margin: 8px 12px 8px 0; vertical-align: top; max-width: 100%; }
+figure svg { max-width: 100%; height: auto; }
 figcaption { font-size: 12px; color: #555; max-width: 420px; }
 table { border-collapse: collapse; font-size: 12px; margin: 8px 0; }
 td, th { border: 1px solid #ddd; padding: 2px 6px; text-align: right; }
