@@ -115,6 +115,7 @@ struct OptimizeOptions {
   bool acuity_given = false, norm_given = false;
   double flicker_weight = 3;
   std::string frame_measure = "worst";
+  bool equal_weights = false;
   ModelOptions model;
 };
 
@@ -139,6 +140,7 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   s.model = o.model.make();
   s.flicker_weight = o.flicker_weight;
   s.frame_measure = o.frame_measure == "mean" ? FrameMeasure::mean : FrameMeasure::worst;
+  s.optimize_weights = !o.equal_weights;
   s.starts = o.starts;
   s.seed = o.seed;
   s.iterations = o.iterations;
@@ -186,8 +188,10 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
                        *r.continuous_objective, r.objective);
   for (int f = 0; f < r.best.period(); ++f) {
     out << fmt::format("  frame {:>3}:", f);
-    for (const Vec2 v : r.best.frames[static_cast<size_t>(f)].sets[0])
-      out << fmt::format(" ({:>9.5f}, {:>9.5f})", v.x, v.y);
+    const Pattern& frame = r.best.frames[static_cast<size_t>(f)];
+    for (size_t i = 0; i < frame.sets[0].size(); ++i)
+      out << fmt::format(" ({:>9.5f}, {:>9.5f})", frame.sets[0][i].x, frame.sets[0][i].y)
+          << (frame.sets[0].size() > 1 ? fmt::format(" w {:.4f}", frame.weights[0][i]) : "");
     out << "\n";
   }
   if (!o.output.empty()) out << "wrote " << o.output << "\n";
@@ -308,6 +312,9 @@ Action add_optimize_command(CLI::App& app) {
   cmd->add_option("--flicker-weight", o->flicker_weight,
                   "with --sequence: lambda of J = worst E2 + lambda mean flicker")
       ->capture_default_str();
+  cmd->add_flag("--equal-weights", o->equal_weights,
+                "with --sequence and several samples per frame: keep each frame's weights equal "
+                "(default: they move, summing to 1)");
   cmd->add_option(
          "--frame-measure", o->frame_measure,
          "with --sequence: the frames' E2 in J, worst (steady frame) or mean (over phases)")

@@ -11,6 +11,7 @@
 #include "aapat/core/hardware_layout.h"
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
+#include "aapat/io/point_set_file.h"
 #include "aapat/temporal/sequence_export.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_json.h"
@@ -246,6 +247,7 @@ void add_export(CLI::App* parent, std::function<void(std::ostream&)>& action) {
       "API profile");
   struct Options {
     std::string sequence, pattern, language = "hlsl", y = "down", api, output = "-";
+    bool points = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("sequence", o->sequence, "sequence file or generator spec")->required();
@@ -259,12 +261,18 @@ void add_export(CLI::App* parent, std::function<void(std::ostream&)>& action) {
   cmd->add_option("--api", o->api,
                   "several samples per frame: the profile (d3d12-tier1, d3d12-tier2, vulkan, "
                   "metal, gl, or all); each frame snapped to its 1/16 lattice");
+  cmd->add_flag("--points", o->points,
+                "the samples of pixel 0 in time order, in [0, 1)^2, as a point CSV: its first m "
+                "rows are the prefix of m samples, for aapat spectrum and discrepancy");
   cmd->add_option("-o,--output", o->output, "file to write (- for stdout)")->capture_default_str();
   action = [o, cmd](std::ostream& out) {
     if (!cmd->parsed()) return;
     const Sequence s = resolve_sequence(o->sequence, optional_pattern(o->pattern));
     std::string text;
-    if (o->api.empty()) {
+    if (o->points) {
+      if (!o->api.empty()) throw Error("--points writes the samples alone: give no --api");
+      text = point_csv(sequence_points(s));
+    } else if (o->api.empty()) {
       text = export_jitter(s, parse_export_language(o->language), o->y == "down");
     } else if (o->api == "all") {  // every profile that holds the frames
       for (const ApiProfile& profile : api_profiles()) {

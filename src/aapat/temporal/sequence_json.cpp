@@ -175,8 +175,10 @@ std::vector<SpecInfo> sequence_catalog() {
   std::vector<SpecInfo> out;
   for (const auto& [name, text] : embedded::kAapatSequences) {
     const json doc = json::parse(text);
-    out.push_back({std::string(name), doc.value("description", ""),
-                   fmt::format("aapat: data/sequences/{}.json", name), {}});
+    out.push_back({std::string(name),
+                   doc.value("description", ""),
+                   fmt::format("aapat: data/sequences/{}.json", name),
+                   {}});
   }
   return out;
 }

@@ -21,18 +21,22 @@ namespace aapat {
 namespace {
 
 constexpr double kBound = 0.5 - 1e-6;  // a jitter stays inside its pixel
+constexpr double kWeightBound = 2;     // |each free weight| of an MSAA frame
 
 // Everything one evaluation of the epigraph's constraints needs, allocated once.
 struct Epigraph {
   const Metric& metric;
   int frames, per_frame, samples;
+  bool free_weights;                       // each frame's weights move (summing to 1)
   bool maximum;                            // the max over angles (else an L_p mean)
   bool mean_e2;                            // the mean over phases (else the worst)
   std::vector<std::vector<double>> phase;  // phase[k][f]: frame f's weight at steady frame k
   double lambda;
   // Scratch.
-  std::vector<double> p, w, dp, dw, values;
-  std::vector<std::vector<double>> dv;  // per angle, d(term)/dp per sample
+  std::vector<double> p, w, dp, dw, dq, values;
+  std::vector<double> sample_w;          // each sample's weight within its frame (sum 1 per frame)
+  std::vector<std::vector<double>> dv;   // per angle, d(term)/dp per sample
+  std::vector<std::vector<double>> dvw;  // per angle, d(term)/d(sample weight)
   std::vector<size_t> order;
 
   Epigraph(const Metric& m, const SequenceSearch& s)
@@ -40,14 +44,36 @@ struct Epigraph {
         frames(s.frames),
         per_frame(s.samples_per_frame),
         samples(s.frames * s.samples_per_frame),
+        free_weights(s.samples_per_frame > 1 && s.optimize_weights),
         maximum(std::isinf(m.norm())),
         mean_e2(s.frame_measure == FrameMeasure::mean),
         lambda(s.flicker_weight) {
     for (int k = 0; k < frames; ++k) phase.push_back(phase_weights(s.model, frames, k, true));
     const size_t n = static_cast<size_t>(samples), angles = static_cast<size_t>(m.angle_count());
-    p.resize(n), w.resize(n), dp.resize(n), dw.resize(n), order.resize(n);
+    p.resize(n), w.resize(n), dp.resize(n), dw.resize(n), dq.resize(n), order.resize(n);
+    sample_w.assign(n, 1.0 / per_frame);
     values.resize(angles);
     dv.assign(angles, std::vector<double>(n));
+    dvw.assign(angles, std::vector<double>(n));
+  }
+  // Weight variables: per frame, all its weights but the last (which is 1
+  // minus the others), after the positions.
+  size_t weight_variables() const {
+    return free_weights ? static_cast<size_t>(frames * (per_frame - 1)) : 0;
+  }
+  size_t weight_variable(int f, int i) const {
+    return static_cast<size_t>(2 * samples) + static_cast<size_t>(f * (per_frame - 1) + i);
+  }
+  void read_weights(const double* x) {
+    if (!free_weights) return;
+    for (int f = 0; f < frames; ++f) {
+      double rest = 1;
+      for (int i = 0; i + 1 < per_frame; ++i) {
+        sample_w[static_cast<size_t>(f * per_frame + i)] = x[weight_variable(f, i)];
+        rest -= x[weight_variable(f, i)];
+      }
+      sample_w[static_cast<size_t>(f * per_frame + per_frame - 1)] = rest;
+    }
   }
   int angles() const { return metric.angle_count(); }
   // Terms per E2 block and per flicker block.
@@ -57,8 +83,8 @@ struct Epigraph {
   // The positions, then the E2 bounds (one s for the worst frame, or s_k per
   // phase for the mean), then one flicker bound t_k per transition.
   size_t e2_bounds() const { return mean_e2 ? static_cast<size_t>(frames) : 1; }
-  size_t variable_count() const { return static_cast<size_t>(2 * samples + frames) + e2_bounds(); }
-  size_t s_index() const { return static_cast<size_t>(2 * samples); }
+  size_t variable_count() const { return s_index() + static_cast<size_t>(frames) + e2_bounds(); }
+  size_t s_index() const { return static_cast<size_t>(2 * samples) + weight_variables(); }
   size_t e2_bound(int k) const { return s_index() + (mean_e2 ? static_cast<size_t>(k) : 0); }
   size_t flicker_bound(int k) const { return s_index() + e2_bounds() + static_cast<size_t>(k); }
 
@@ -69,7 +95,8 @@ struct Epigraph {
 
   // The change of the step response between two frames (weights c):
   // F = sum_j |R_j| (p_(j+1) - p_(j)) over the sorted projections, R_j the
-  // running sum, so dF/dp_(j) = |R_(j-1)| - |R_j|. Returns F^2 and d(F^2)/dp.
+  // running sum, so dF/dp_(j) = |R_(j-1)| - |R_j| and dF/dc_(j) = the sum
+  // of sign(R_i) gap_i over i >= j. Returns F^2, d(F^2)/dp and d(F^2)/dc (dq).
   double flicker_squared(const std::vector<double>& c) {
     std::iota(order.begin(), order.end(), size_t{0});
     std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return p[a] < p[b]; });
@@ -80,6 +107,19 @@ struct Epigraph {
       running += c[m];
       dp[m] = left - (j + 1 < order.size() ? std::abs(running) : 0.0);
       if (j + 1 < order.size()) f += std::abs(running) * (p[order[j + 1]] - p[m]);
+    }
+    // Backwards: the suffix sums of sign(R_i) gap_i.
+    running = 0;
+    for (size_t j = 0; j < order.size(); ++j) running += c[order[j]];
+    double suffix = 0;
+    for (size_t j = order.size(); j-- > 0;) {
+      const size_t m = order[j];
+      if (j + 1 < order.size()) {
+        const double gap = p[order[j + 1]] - p[m];
+        suffix += (running > 0 ? 1.0 : running < 0 ? -1.0 : 0.0) * gap;
+      }
+      dq[m] = 2 * f * suffix;
+      running -= c[m];
     }
     for (double& d : dp) d *= 2 * f;
     return f * f;
@@ -94,9 +134,12 @@ struct Epigraph {
     for (int a = 0; a < angles(); ++a) {
       project(x, a);
       values[static_cast<size_t>(a)] = metric.weight_sq(a) * value();
-      for (int j = 0; j < samples; ++j)
+      for (int j = 0; j < samples; ++j) {
         dv[static_cast<size_t>(a)][static_cast<size_t>(j)] =
             metric.weight_sq(a) * dp[static_cast<size_t>(j)];
+        dvw[static_cast<size_t>(a)][static_cast<size_t>(j)] =
+            metric.weight_sq(a) * dq[static_cast<size_t>(j)];
+      }
     }
     // d(term)/d(v_a) for each angle.
     auto emit = [&](size_t row, double term, auto&& coefficient) {
@@ -113,6 +156,13 @@ struct Epigraph {
           g[2 * j] += d * nx;
           g[2 * j + 1] += d * ny;
         }
+        if (free_weights)  // the last weight of a frame is 1 minus the others
+          for (int f = 0; f < frames; ++f) {
+            const auto& dw_a = dvw[static_cast<size_t>(a)];
+            const double last = dw_a[static_cast<size_t>(f * per_frame + per_frame - 1)];
+            for (int i = 0; i + 1 < per_frame; ++i)
+              g[weight_variable(f, i)] += c * (dw_a[static_cast<size_t>(f * per_frame + i)] - last);
+          }
       }
       g[bound] = -1;
     };
@@ -142,39 +192,61 @@ struct Epigraph {
   }
 
   void constraints(const double* x, double* result, double* grad) {
+    read_weights(x);
     for (int k = 0; k < frames; ++k) {
+      const auto& u = phase[static_cast<size_t>(k)];
       for (int j = 0; j < samples; ++j)
         w[static_cast<size_t>(j)] =
-            phase[static_cast<size_t>(k)][static_cast<size_t>(j / per_frame)] / per_frame;
-      block(x, e2_bound(k), static_cast<size_t>(k * terms()), result, grad,
-            [&] { return e1_squared_gradient(metric.filter(), p, w, dp, dw); });
+            u[static_cast<size_t>(j / per_frame)] * sample_w[static_cast<size_t>(j)];
+      block(x, e2_bound(k), static_cast<size_t>(k * terms()), result, grad, [&] {
+        const double e1 = e1_squared_gradient(metric.filter(), p, w, dp, dw);
+        for (int j = 0; j < samples; ++j)  // through w_j = u_f sample_w_j
+          dq[static_cast<size_t>(j)] =
+              u[static_cast<size_t>(j / per_frame)] * dw[static_cast<size_t>(j)];
+        return e1;
+      });
     }
-    std::vector<double> c(static_cast<size_t>(samples));
+    std::vector<double> c(static_cast<size_t>(samples)), change(static_cast<size_t>(samples));
     for (int k = 0; k < frames; ++k) {
       const auto& now = phase[static_cast<size_t>(k)];
       const auto& before = phase[static_cast<size_t>((k + frames - 1) % frames)];
       for (int j = 0; j < samples; ++j) {
         const size_t f = static_cast<size_t>(j / per_frame);
-        c[static_cast<size_t>(j)] = (now[f] - before[f]) / per_frame;
+        change[static_cast<size_t>(j)] = now[f] - before[f];
+        c[static_cast<size_t>(j)] =
+            change[static_cast<size_t>(j)] * sample_w[static_cast<size_t>(j)];
       }
-      block(x, flicker_bound(k), static_cast<size_t>((frames + k) * terms()), result, grad,
-            [&] { return flicker_squared(c); });
+      block(x, flicker_bound(k), static_cast<size_t>((frames + k) * terms()), result, grad, [&] {
+        const double f2 = flicker_squared(c);
+        for (int j = 0; j < samples; ++j)  // through c_j = change_f sample_w_j
+          dq[static_cast<size_t>(j)] *= change[static_cast<size_t>(j)];
+        return f2;
+      });
     }
   }
 };
 
+// The sequence of the free variables x (positions, then weight variables).
 Sequence sequence_of(const std::vector<double>& x, const SequenceSearch& s,
                      const std::string& name) {
+  const bool free_weights = s.samples_per_frame > 1 && s.optimize_weights;
+  const size_t positions = static_cast<size_t>(2 * s.frames * s.samples_per_frame);
   Sequence out{name, "", {}, {}};
   for (int f = 0; f < s.frames; ++f) {
     std::vector<Vec2> at;
+    std::vector<double> w(static_cast<size_t>(s.samples_per_frame), 1.0 / s.samples_per_frame);
+    double rest = 1;
     for (int i = 0; i < s.samples_per_frame; ++i) {
       const size_t j = static_cast<size_t>(f * s.samples_per_frame + i);
       at.push_back({x[2 * j], x[2 * j + 1]});
+      if (free_weights && i + 1 < s.samples_per_frame) {
+        w[static_cast<size_t>(i)] =
+            x[positions + static_cast<size_t>(f * (s.samples_per_frame - 1) + i)];
+        rest -= w[static_cast<size_t>(i)];
+      }
     }
-    out.frames.push_back(
-        single_pixel_pattern(fmt::format("{} frame {}", name, f), at,
-                             std::vector<double>(at.size(), 1.0 / s.samples_per_frame)));
+    if (free_weights) w.back() = rest;
+    out.frames.push_back(single_pixel_pattern(fmt::format("{} frame {}", name, f), at, w));
   }
   return out;
 }
@@ -218,6 +290,8 @@ std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
     x[bound] = std::max(x[bound], c[i]);  // c = term - 0
   }
   std::vector<double> lo(n, -kBound), hi(n, kBound);
+  for (size_t i = 2 * static_cast<size_t>(e.samples); i < e.s_index(); ++i)
+    lo[i] = -kWeightBound, hi[i] = kWeightBound;  // weights: negative lobes allowed
   for (size_t i = e.s_index(); i < n; ++i) lo[i] = 0, hi[i] = HUGE_VAL;
   std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(
       nlopt_create(NLOPT_LD_SLSQP, static_cast<unsigned>(n)), nlopt_destroy);
@@ -233,7 +307,8 @@ std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
   std::vector<double> start = x;
   double value = 0;
   nlopt_optimize(opt.get(), x.data(), &value);  // any stop: compared with the start below
-  for (size_t i = 0; i < e.s_index(); ++i) x[i] = std::clamp(x[i], -kBound, kBound);
+  for (size_t i = 0; i < 2 * static_cast<size_t>(e.samples); ++i)
+    x[i] = std::clamp(x[i], -kBound, kBound);
   x.resize(e.s_index());
   start.resize(e.s_index());
   const double got = sequence_objective(sequence_of(x, s, "x"), s, metric).objective;
@@ -399,15 +474,15 @@ SequenceObjective sequence_objective(const Sequence& seq, const SequenceSearch& 
 }
 
 void sequence_terms(const SequenceSearch& s, const Metric& metric,
-                    const std::vector<double>& positions, std::vector<double>& values,
+                    const std::vector<double>& variables, std::vector<double>& values,
                     std::vector<double>& jacobian) {
   validate(s);
   Epigraph e(metric, s);
   const size_t n = e.variable_count(), m = e.constraint_count(), free = e.s_index();
-  if (positions.size() != free)
-    throw Error(
-        fmt::format("sequence_terms: {} coordinates for {} samples", positions.size(), e.samples));
-  std::vector<double> x = positions, grad(m * n);
+  if (variables.size() != free)
+    throw Error(fmt::format("sequence_terms: {} variables for {} samples (expected {})",
+                            variables.size(), e.samples, free));
+  std::vector<double> x = variables, grad(m * n);
   x.resize(n, 0.0);
   values.assign(m, 0.0);
   e.constraints(x.data(), values.data(), grad.data());
@@ -428,6 +503,10 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
   for (int i = 1; i <= s.frames * s.samples_per_frame; ++i)
     halton.push_back(std::clamp(radical_inverse_of(uint64_t(i), 2) - 0.5, -kBound, kBound)),
         halton.push_back(std::clamp(radical_inverse_of(uint64_t(i), 3) - 0.5, -kBound, kBound));
+  const size_t positions = halton.size();
+  if (s.samples_per_frame > 1 && s.optimize_weights)  // every frame's weights start equal
+    halton.resize(positions + static_cast<size_t>(s.frames * (s.samples_per_frame - 1)),
+                  1.0 / s.samples_per_frame);
   std::vector<std::vector<double>> found(static_cast<size_t>(s.starts));
   std::vector<double> objective(static_cast<size_t>(s.starts));
   tbb::parallel_for(0, s.starts, [&](int start) {
@@ -435,7 +514,7 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
     if (start > 0) {
       std::mt19937_64 rng = start_rng(s.seed, static_cast<uint64_t>(start));
       std::uniform_real_distribution<double> u(-kBound, kBound);
-      for (double& v : x) v = u(rng);
+      for (size_t i = 0; i < positions; ++i) x[i] = u(rng);
     }
     found[static_cast<size_t>(start)] = run_start(s, metric, x);
     objective[static_cast<size_t>(start)] =

@@ -1,6 +1,7 @@
 // The search for a sequence (`aapat optimize --sequence K`): the positions of
 // every sample of K one-pixel frames (one sample each for a TAA or upscaler
-// jitter, several for alternating MSAA, equal weights within a frame)
+// jitter, several for alternating MSAA, whose weights within a frame move
+// too unless optimize_weights is off)
 // minimizing
 //     J = worst (or mean) steady-state E2 + flicker_weight * mean flicker
 // under an accumulation model (temporal_metrics.h: the steady frames' E2 and
@@ -43,6 +44,9 @@ struct SequenceSearch {
   Accumulation model;         // no resolve: its weights move with the samples
   double flicker_weight = 3;  // lambda
   FrameMeasure frame_measure = FrameMeasure::worst;
+  // With several samples per frame, each frame's weights move too (summing
+  // to 1; negative lobes allowed); else they stay equal.
+  bool optimize_weights = true;
   int starts = 16;
   uint64_t seed = 1;
   int iterations = 2000;                // NLopt evaluations per start
@@ -72,11 +76,13 @@ SequenceObjective sequence_objective(const Sequence& s, const SequenceSearch& se
 
 SequenceSearchResult optimize_sequence(const SequenceSearch& search, const Metric& metric);
 
-// The epigraph's constraints (each term minus its bound) at positions x (x,
-// y per sample, frame by frame) with every bound 0, and their Jacobian, one
-// row per constraint over the positions only: for the gradient tests.
+// The epigraph's constraints (each term minus its bound) at the free
+// variables (x, y per sample, frame by frame; then, when the weights move,
+// each frame's weights but its last, which is 1 minus the others) with
+// every bound 0, and their Jacobian, one row per constraint over those
+// variables: for the gradient tests.
 void sequence_terms(const SequenceSearch& search, const Metric& metric,
-                    const std::vector<double>& positions, std::vector<double>& values,
+                    const std::vector<double>& variables, std::vector<double>& values,
                     std::vector<double>& jacobian);
 
 }  // namespace aapat

@@ -43,6 +43,9 @@ TEST(SequenceOptimizer, ConstraintGradientsMatchFiniteDifferences) {
       }
       std::vector<double> x(static_cast<size_t>(2 * s.frames * per_frame));
       for (double& v : x) v = u(rng);
+      // Two samples per frame: the first's weight is a variable (the second's is 1 minus it).
+      if (per_frame == 2)
+        for (int f = 0; f < s.frames; ++f) x.push_back(0.5 + 0.4 * u(rng));
       std::vector<double> values, jacobian, plus, minus, unused;
       sequence_terms(s, *metric, x, values, jacobian);
       const size_t m = values.size(), n = x.size();

@@ -20,8 +20,9 @@ int default_curve_frames(const Accumulation& a, int period) {
   return std::min(std::max(fade, 2 * period) + period, 4096);
 }
 
-// The samples of pixel 0 of every frame, in time order, in [0, 1)^2.
-std::vector<Vec2> prefix_points(const Sequence& s) {
+}  // namespace
+
+std::vector<Vec2> sequence_points(const Sequence& s) {
   std::vector<Vec2> out;
   for (const Pattern& p : s.frames)
     for (const Vec2 v : p.sets[0])
@@ -29,8 +30,6 @@ std::vector<Vec2> prefix_points(const Sequence& s) {
                      std::clamp(v.y + 0.5, 0.0, std::nextafter(1.0, 0.0))});
   return out;
 }
-
-}  // namespace
 
 double kernels_e2(const Metric& metric, const std::vector<Kernel>& kernels) {
   std::vector<double> e2;
@@ -136,7 +135,7 @@ TemporalReport evaluate_temporal(const Sequence& s, const Accumulation& a, const
       }
       r.worst_centroid = std::max(r.worst_centroid, std::hypot(cx, cy));
     }
-  r.prefixes = prefix_measures(prefix_points(s));
+  r.prefixes = prefix_measures(sequence_points(s));
   return r;
 }
 

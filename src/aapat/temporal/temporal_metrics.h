@@ -66,6 +66,11 @@ double kernels_e2(const Metric& metric, const std::vector<Kernel>& kernels);
 // kernel `after` (the flicker of one kernel between two frames).
 double kernel_flicker(const Metric& metric, const Kernel& before, const Kernel& after);
 
+// The samples of pixel 0 of every frame in time order, moved to [0, 1)^2:
+// the points whose prefixes are measured (and `sequence export --points`
+// writes for aapat spectrum and discrepancy).
+std::vector<Vec2> sequence_points(const Sequence& s);
+
 // The per-axis stratification and discrepancies of the prefixes of `points`
 // (in [0, 1)^2): every prefix up to kAllPrefixesUpTo, then the whole set.
 std::vector<PrefixMeasure> prefix_measures(const std::vector<Vec2>& points);
