@@ -47,6 +47,12 @@ TEST(SequenceCli, PhasesAndExport) {
   EXPECT_NE(
       run({"sequence", "export", "msaa-alternating"}).err.find("export it for an API profile"),
       std::string::npos);
+  // The time-ordered samples as a point CSV: Halton(2,3) from index 1 in [0, 1)^2.
+  const std::string csv = temp_path("points.csv");
+  ASSERT_EQ(run({"sequence", "export", "halton:frames=3", "--points", "-o", csv}).code, 0);
+  const auto discrepancy = run({"discrepancy", csv, "--measure", "star", "--json"});
+  ASSERT_EQ(discrepancy.code, 0) << discrepancy.err;
+  EXPECT_EQ(nlohmann::json::parse(discrepancy.out)["points"], 3);
 }
 
 TEST(SequenceCli, OptimizeWritesASequenceThatBeatsHalton) {
