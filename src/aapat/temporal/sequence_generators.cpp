@@ -60,18 +60,29 @@ const Pattern& one_pixel(const std::optional<Pattern>& p, std::string_view what)
   return *p;
 }
 
+double torus_distance_squared(Vec2 a, Vec2 b) {
+  double dx = std::abs(a.x - b.x), dy = std::abs(a.y - b.y);
+  dx = std::min(dx, 1 - dx);
+  dy = std::min(dy, 1 - dy);
+  return dx * dx + dy * dy;
+}
+
+// How far a candidate lies from the samples taken (the squared torus distance
+// to the nearest); for the first, minus its distance to the centre, so the
+// larger the better either way.
+double spread(Vec2 candidate, const std::vector<Vec2>& taken) {
+  if (taken.empty()) return -torus_distance_squared(candidate, {0, 0});
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const Vec2 v : taken) nearest = std::min(nearest, torus_distance_squared(candidate, v));
+  return nearest;
+}
+
 // The samples of `p` ordered: each next one the remaining sample that keeps
 // the prefix most stratified per axis (the fewest samples in one of m equal
 // strata of x and of y), ties to the farthest from those taken (torus), then
 // the lower index; the first the nearest the centre.
 std::vector<Vec2> rooks_order(std::vector<Vec2> left) {
   std::vector<Vec2> taken;
-  auto torus = [](Vec2 a, Vec2 b) {
-    double dx = std::abs(a.x - b.x), dy = std::abs(a.y - b.y);
-    dx = std::min(dx, 1 - dx);
-    dy = std::min(dy, 1 - dy);
-    return dx * dx + dy * dy;
-  };
   while (!left.empty()) {
     const int m = static_cast<int>(taken.size()) + 1;
     size_t best = 0;
@@ -88,9 +99,7 @@ std::vector<Vec2> rooks_order(std::vector<Vec2> left) {
       }
       worst = std::max({worst, ++sx[static_cast<size_t>(stratum(left[i].x))],
                         ++sy[static_cast<size_t>(stratum(left[i].y))]});
-      double far =
-          taken.empty() ? -torus(left[i], {0, 0}) : std::numeric_limits<double>::infinity();
-      for (const Vec2 v : taken) far = std::min(far, torus(left[i], v));
+      const double far = spread(left[i], taken);
       if (worst < best_score || (worst == best_score && far > best_far)) {
         best_score = worst;
         best_far = far;
@@ -106,19 +115,11 @@ std::vector<Vec2> rooks_order(std::vector<Vec2> left) {
 // Farthest point first (torus distance), starting nearest the centre.
 std::vector<Vec2> blue_noise_order(std::vector<Vec2> left) {
   std::vector<Vec2> taken;
-  auto torus = [](Vec2 a, Vec2 b) {
-    double dx = std::abs(a.x - b.x), dy = std::abs(a.y - b.y);
-    dx = std::min(dx, 1 - dx);
-    dy = std::min(dy, 1 - dy);
-    return dx * dx + dy * dy;
-  };
   while (!left.empty()) {
     size_t best = 0;
     double best_far = -std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < left.size(); ++i) {
-      double far =
-          taken.empty() ? -torus(left[i], {0, 0}) : std::numeric_limits<double>::infinity();
-      for (const Vec2 v : taken) far = std::min(far, torus(left[i], v));
+      const double far = spread(left[i], taken);
       if (far > best_far) best_far = far, best = i;
     }
     taken.push_back(left[best]);
