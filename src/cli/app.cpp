@@ -3,14 +3,18 @@
 #include <fmt/format.h>
 
 #include <tbb/global_control.h>
+#include <tbb/info.h>
 
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
 
+#include "aapat/work/checkpoint.h"
 #include "aapat/core/geometry.h"
+#include "aapat/work/work_items.h"
 #include "aapat/io/atomic_file.h"
 #include "aapat/version.h"
 #include "cli/commands.h"
@@ -71,7 +75,29 @@ void write_output(const std::string& path, const std::string& content, std::ostr
   }
 }
 
-int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+namespace {
+
+// The command a checkpoint belongs to: the arguments less those that do not
+// change a result (--threads, --checkpoint), and the version.
+std::string fingerprint(int argc, const char* const* argv) {
+  std::string text = "aapat " AAPAT_VERSION;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--threads" || arg == "--checkpoint") {
+      ++i;
+      continue;
+    }
+    if (arg.starts_with("--threads=") || arg.starts_with("--checkpoint=")) continue;
+    text += " ";
+    text += arg;
+  }
+  return text;
+}
+
+}  // namespace
+
+int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+              WorkEngine* engine) {
   CLI::App app{
       "aapat: design antialiasing sample patterns (Laine-Aila E2 metric, Hasselgren schemes)",
       "aapat"};
@@ -83,6 +109,13 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
                  "threads for every parallel step, before the command (0: all cores; the "
                  "results are the same for any count)")
       ->check(CLI::Range(0, 1024));
+  // A long run keeps its finished work items, and resumes from them.
+  std::string checkpoint_path;
+  app.add_option("--checkpoint", checkpoint_path,
+                 "keep every finished work item in FILE and resume from it when run again with "
+                 "the same command (the same output as a run that never stopped); before the "
+                 "command")
+      ->type_name("FILE");
   std::vector<std::pair<CLI::App*, Action>> commands;
   auto add = [&](auto adder) {
     const size_t before = app.get_subcommands({}).size();
@@ -121,17 +154,39 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   struct ResetWarnings {
     ~ResetWarnings() { g_warnings = nullptr; }
   } reset;
+  LocalEngine local;
+  WorkEngine& items = engine ? *engine : local;
+  // An engine's own threads (an MPI rank's main thread) come on top of --threads.
   std::optional<tbb::global_control> limit;
-  if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
+  if (threads > 0 || items.service_threads() > 0)
+    limit.emplace(
+        tbb::global_control::max_allowed_parallelism,
+        (threads > 0 ? threads : tbb::info::default_concurrency()) + items.service_threads());
+  bool agreed = false;
   try {
     // A command writes all its files or, when it fails, none.
     OutputTransaction outputs;
-    for (auto& [sub, action] : commands)
-      if (sub->parsed()) action(out);
+    std::unique_ptr<Checkpoint> checkpoint;
+    if (!checkpoint_path.empty() && items.root())
+      checkpoint = std::make_unique<Checkpoint>(checkpoint_path, fingerprint(argc, argv));
+    if (checkpoint && checkpoint->restored() > 0)
+      err << fmt::format("aapat: resuming from {}: {} work items done\n", checkpoint_path,
+                         checkpoint->restored());
+    {
+      const WorkSession session(items, checkpoint.get());
+      for (auto& [sub, action] : commands)
+        if (sub->parsed()) action(out);
+    }
     out.flush();
+    // Every process of the run agrees first: a failure anywhere writes nothing.
+    std::string message;
+    agreed = true;
+    if (items.agree(kExitOk, message) != kExitOk) throw Error(message);
     outputs.commit();
   } catch (...) {
-    err << "aapat: error: " << describe_current_exception() << "\n";
+    std::string message = describe_current_exception();
+    if (!agreed) items.agree(kExitError, message);
+    err << "aapat: error: " << message << "\n";
     return kExitError;
   }
   return kExitOk;

@@ -6,14 +6,30 @@
 #include <cstdio>
 
 namespace aapat {
+namespace {
+bool g_lines = false;
+}  // namespace
 
-Progress::Progress(std::string label) : label_(std::move(label)), active_(::isatty(2) == 1) {}
+void Progress::print_lines() {
+  g_lines = true;
+}
+
+Progress::Progress(std::string label)
+    : label_(std::move(label)), active_(!g_lines && ::isatty(2) == 1) {}
 
 Progress::~Progress() {
   if (active_) std::fputs("\n", stderr);
 }
 
 void Progress::update(int done, int total, const std::string& note) {
+  if (g_lines && total > 0) {
+    const int tenths = done * 10 / total;
+    if (tenths == tenths_) return;
+    tenths_ = tenths;
+    std::fputs(fmt::format("{}: {}/{} {}\n", label_, done, total, note).c_str(), stderr);
+    std::fflush(stderr);
+    return;
+  }
   if (!active_ || total <= 0) return;
   constexpr int kWidth = 30;
   const int filled = done * kWidth / total;

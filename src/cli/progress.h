@@ -1,5 +1,6 @@
 // A one-line progress bar on a terminal's stderr; silent when stderr is not a
-// terminal (piped or redirected), so logs and scripts stay clean.
+// terminal (piped or redirected), so logs and scripts stay clean; lines when
+// asked (an MPI job's rank 0).
 #pragma once
 
 #include <string>
@@ -15,10 +16,14 @@ class Progress {
   void update(int done, int total, const std::string& note);
   // The bar as a library job's progress callback.
   StudyProgress callback();
+  // From now on every bar is printed as lines (one per tenth of the job),
+  // terminal or not: rank 0 of an MPI job, whose stderr mpirun forwards.
+  static void print_lines();
 
  private:
   std::string label_;
   bool active_;
+  int tenths_ = -1;  // the last tenth printed as a line
 };
 
 }  // namespace aapat

@@ -111,7 +111,14 @@ bool exists(const std::string& path) {
 
 }  // namespace
 
+std::atomic<bool> g_muted{false};
+
+void mute_outputs() {
+  g_muted = true;
+}
+
 void write_file_atomically(const std::string& path, std::string_view content) {
+  if (g_muted) return;
   const std::string tmp = write_temporary(path, content);
   {
     const std::lock_guard lock(g_mutex);
@@ -124,6 +131,7 @@ void write_file_atomically(const std::string& path, std::string_view content) {
 }
 
 void write_file_now(const std::string& path, std::string_view content, bool keep_on_rollback) {
+  if (g_muted) return;
   const bool existed = exists(path);
   const std::string tmp = write_temporary(path, content);
   rename_into_place(tmp, path);
@@ -153,6 +161,7 @@ std::string read_file(const std::string& path, std::string_view what, size_t max
 }
 
 void ensure_directory(const std::string& path, std::string_view what) {
+  if (g_muted) return;
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (std::filesystem::exists(status)) {

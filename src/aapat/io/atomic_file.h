@@ -47,6 +47,10 @@ class OutputTransaction {
   void commit();
 };
 
+// From now on writes and folders are not made: a process of an MPI job other
+// than rank 0, which computes what rank 0 writes (src/cluster).
+void mute_outputs();
+
 // Installs SIGINT and SIGTERM handlers that delete the temporary files of
 // writes in flight, then end the process as the signal would.
 void remove_temporaries_on_signals();

@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 
+#include "aapat/work/work_items.h"
 #include "aapat/io/atomic_file.h"
 
 namespace aapat {
@@ -47,21 +48,26 @@ ReferenceSource cached_references(std::string dir, Warn warn) {
     const std::string key = key_text(scene, width, height, r, offset);
     const std::string path = fmt::format("{}/reference-{:016x}.bin", dir, fnv1a(key));
     const size_t bytes = sizeof(double) * static_cast<size_t>(width) * height;
-    std::error_code ec;
-    if (std::filesystem::is_regular_file(path, ec)) {
+    // The lookup is one work item (work/work_items.h), so that every process
+    // of a cluster run agrees on whether the reference is rendered.
+    const std::string head = std::string(kMagic) + key;
+    const std::string found = run_as_one_item([&] {
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(path, ec)) return std::string();
       std::string data;
       try {
         data = read_file(path, "cached reference", kMagic.size() + key.size() + bytes);
       } catch (const Error&) {  // unreadable: recomputed below
       }
-      const std::string head = std::string(kMagic) + key;
       // A file that is not exactly this reference (collision, older format) is recomputed.
-      if (data.size() == head.size() + bytes && data.compare(0, head.size(), head) == 0) {
-        Image image{width, height, offset,
-                    std::vector<double>(static_cast<size_t>(width) * height)};
-        std::memcpy(image.values.data(), data.data() + head.size(), bytes);
-        return image;
-      }
+      if (data.size() == head.size() + bytes && data.compare(0, head.size(), head) == 0)
+        return data.substr(head.size());
+      return std::string();
+    });
+    if (bytes > 0 && found.size() == bytes) {
+      Image image{width, height, offset, std::vector<double>(static_cast<size_t>(width) * height)};
+      std::memcpy(image.values.data(), found.data(), bytes);
+      return image;
     }
     Image image = render_reference(scene, width, height, r, offset);
     if (*unwritable) return image;

@@ -1,13 +1,14 @@
 #include "aapat/optimize/lattice_search.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
+#include "aapat/work/byte_codec.h"
 #include "aapat/core/lattice.h"
+#include "aapat/work/work_items.h"
 #include "aapat/optimize/descent.h"
 #include "aapat/optimize/family.h"
+#include "aapat/optimize/multistart.h"
 #include "aapat/optimize/objective.h"
 
 namespace aapat {
@@ -88,18 +89,31 @@ LatticeRun lattice_descent(const Metric& metric, Problem& problem, int steps,
 LatticeSearch lattice_search(const Metric& metric, int starts,
                              const std::function<Problem(int)>& make_start, int steps,
                              const OptimizerSettings& settings, bool y_down) {
-  std::vector<Problem> problems(starts);
-  std::vector<LatticeRun> runs(starts);
-  tbb::parallel_for(0, starts, [&](int i) {
-    problems[i] = make_start(i);
-    runs[i] = lattice_descent(metric, problems[i], steps, settings, y_down);
+  // Each start is a work item (work/work_items.h); the winner is rebuilt
+  // from its start and its values.
+  const std::vector<std::string> results = run_work_items(starts, [&](int i) {
+    Problem problem = make_start(i);
+    const LatticeRun run = lattice_descent(metric, problem, steps, settings, y_down);
+    ByteWriter w;
+    w.put(run.snapped_e2).put(run.final_e2).put<int32_t>(run.moves);
+    put_problem_values(w, problem);
+    return w.take();
   });
   LatticeSearch r;
   r.starts = starts;
-  for (int i = 0; i < starts; ++i)
-    if (i == 0 || runs[i].final_e2 < runs[r.best_start].final_e2) r.best_start = i;
-  r.best = problems[r.best_start];
-  r.run = runs[r.best_start];
+  for (int i = 0; i < starts; ++i) {
+    ByteReader reader(results[static_cast<size_t>(i)]);
+    LatticeRun run;
+    run.snapped_e2 = reader.get<double>();
+    run.final_e2 = reader.get<double>();
+    run.moves = reader.get<int32_t>();
+    if (i == 0 || run.final_e2 < r.run.final_e2) {
+      r.best_start = i;
+      r.run = run;
+      r.best = make_start(i);
+      get_problem_values(reader, r.best);
+    }
+  }
   return r;
 }
 

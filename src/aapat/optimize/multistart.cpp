@@ -6,9 +6,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <mutex>
 #include <optional>
 
+#include "aapat/work/byte_codec.h"
+#include "aapat/work/work_items.h"
 #include "aapat/optimize/anneal.h"
 #include "aapat/optimize/descent.h"
 #include "aapat/optimize/family.h"
@@ -23,63 +24,136 @@ SeedFunction family_seeds(const FamilySpec& spec, SeedKind kind, uint64_t seed,
   };
 }
 
+void put_problem_values(ByteWriter& w, const Problem& problem) {
+  w.put<uint64_t>(problem.generators.size());
+  for (const Generator& g : problem.generators)
+    w.put(g.pos.x).put(g.pos.y).put<int32_t>(static_cast<int>(g.freedom)).put(g.limit);
+  w.put_all(problem.weights);
+}
+
+void get_problem_values(ByteReader& r, Problem& problem) {
+  if (r.get<uint64_t>() != problem.generators.size())
+    throw Error("optimize: a start's result does not fit its seed (another aapat version?)");
+  for (Generator& g : problem.generators) {
+    g.pos.x = r.get<double>();
+    g.pos.y = r.get<double>();
+    g.freedom = static_cast<Freedom>(r.get<int32_t>());
+    g.limit = r.get<double>();
+  }
+  problem.weights = r.get_all<double>();
+}
+
+namespace {
+
+// A start's outcome as bytes: its run and the problem's values (positions,
+// freedoms, weights); the structure is rebuilt from its seed function.
+std::string encode_start(const StartRecord& record, const Problem& problem) {
+  ByteWriter w;
+  w.put<uint8_t>(1).put(record.run.initial_e2).put(record.run.final_e2);
+  w.put<int32_t>(record.run.iterations).put<int32_t>(record.run.evaluations).put(record.seconds);
+  put_problem_values(w, problem);
+  return w.take();
+}
+
+// A start the deadline skipped.
+std::string skipped_start() {
+  return std::string(1, '\0');
+}
+
+std::optional<StartRecord> decode_start(int start, const std::string& bytes, Problem& problem) {
+  ByteReader r(bytes);
+  if (r.get<uint8_t>() == 0) return std::nullopt;
+  StartRecord record{start, {}, 0};
+  record.run.initial_e2 = r.get<double>();
+  record.run.final_e2 = r.get<double>();
+  record.run.iterations = r.get<int32_t>();
+  record.run.evaluations = r.get<int32_t>();
+  record.seconds = r.get<double>();
+  get_problem_values(r, problem);
+  r.finish();
+  return record;
+}
+
+double final_e2_of(const std::string& bytes) {
+  ByteReader r(bytes);
+  if (r.get<uint8_t>() == 0) return INFINITY;
+  r.get<double>();
+  return r.get<double>();
+}
+
+}  // namespace
+
 MultiStartResult multistart(const Metric& metric, int starts, uint64_t seed,
                             const SeedFunction& make_seed, const OptimizerSettings& settings,
                             int threads, const ProgressFunction& progress) {
   const Objective objective(metric);
-  std::vector<std::optional<StartRecord>> records(starts);
-  std::vector<std::optional<Problem>> results(starts);
-  std::mutex mutex;
-  int finished = 0;
-  double best_so_far = INFINITY;
   std::optional<tbb::global_control> limit;
   if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
-  tbb::parallel_for(0, starts, [&](int i) {
-    if (past(settings)) return;
-    const auto t0 = std::chrono::steady_clock::now();
-    Problem problem = make_seed(i);
-    RunResult run;
-    if (settings.method == Method::kAnneal) {
-      auto rng = start_rng(seed ^ 0xa11ea1ULL, i);
-      run = anneal(objective, problem, settings, rng);
-    } else {
-      run = descend(objective, problem, settings);
-    }
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    records[i] = StartRecord{i, run, seconds};
-    results[i] = std::move(problem);
-    if (progress) {
-      std::lock_guard lock(mutex);
-      best_so_far = std::min(best_so_far, run.final_e2);
-      progress(++finished, starts, best_so_far);
-    }
-  });
+  // Each start is a work item (work/work_items.h): it may run on another
+  // process, or come from a checkpoint.
+  double best_so_far = INFINITY;
+  const std::vector<std::string> outcomes = run_work_items(
+      starts,
+      [&](int i) {
+        if (past(settings)) return skipped_start();
+        const auto t0 = std::chrono::steady_clock::now();
+        Problem problem = make_seed(i);
+        RunResult run;
+        if (settings.method == Method::kAnneal) {
+          auto rng = start_rng(seed ^ 0xa11ea1ULL, i);
+          run = anneal(objective, problem, settings, rng);
+        } else {
+          run = descend(objective, problem, settings);
+        }
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return encode_start(StartRecord{i, run, seconds}, problem);
+      },
+      [&](int done, int total, const std::string& result) {
+        best_so_far = std::min(best_so_far, final_e2_of(result));
+        if (progress) progress(done, total, best_so_far);
+      });
   MultiStartResult out;
-  for (int i = 0; i < starts; ++i)
-    if (records[i]) out.starts.push_back(*records[i]);
+  std::vector<std::optional<Problem>> results(starts);
+  for (int i = 0; i < starts; ++i) {
+    Problem problem = make_seed(i);
+    if (auto record = decode_start(i, outcomes[static_cast<size_t>(i)], problem)) {
+      out.starts.push_back(*record);
+      results[static_cast<size_t>(i)] = std::move(problem);
+    }
+  }
   if (out.starts.empty()) return out;
-  // The heuristic's best few starts, polished by the minimax descent (in
-  // parallel); the lowest E2 after polishing wins, ties to the lower start.
+  // The heuristic's best few starts, polished by the minimax descent (each a
+  // work item; past the deadline an item keeps its start as it is); the
+  // lowest E2 after polishing wins, ties to the lower start.
   std::vector<int> order(out.starts.size());
   for (size_t j = 0; j < order.size(); ++j) order[j] = static_cast<int>(j);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     return out.starts[a].run.final_e2 < out.starts[b].run.final_e2;
   });
-  const bool polish = settings.polish && settings.method == Method::kDescent && !past(settings);
+  const bool polish = settings.polish && settings.method == Method::kDescent;
   const int polished = polish ? std::min<int>(settings.polish_count, order.size()) : 0;
-  std::vector<double> before(polished);
-  tbb::parallel_for(0, polished, [&](int r) {
-    StartRecord& rec = out.starts[order[r]];
-    Problem& problem = *results[rec.start];
-    OptimizerSettings minimax = settings;
-    minimax.method = Method::kMinimax;
-    before[r] = rec.run.final_e2;
-    const RunResult more = descend(objective, problem, minimax);
-    rec.run.final_e2 = more.final_e2;
-    rec.run.iterations += more.iterations;
-    rec.run.evaluations += more.evaluations;
+  const std::vector<std::string> polishes = run_work_items(polished, [&](int r) {
+    const StartRecord& rec = out.starts[order[r]];
+    Problem problem = *results[rec.start];
+    StartRecord after = rec;
+    if (!past(settings)) {
+      OptimizerSettings minimax = settings;
+      minimax.method = Method::kMinimax;
+      const RunResult more = descend(objective, problem, minimax);
+      after.run.final_e2 = more.final_e2;
+      after.run.iterations += more.iterations;
+      after.run.evaluations += more.evaluations;
+    }
+    return encode_start(after, problem);
   });
+  std::vector<double> before(polished);
+  for (int r = 0; r < polished; ++r) {
+    StartRecord& rec = out.starts[order[r]];
+    before[r] = rec.run.final_e2;
+    Problem& problem = *results[rec.start];
+    rec = *decode_start(rec.start, polishes[static_cast<size_t>(r)], problem);
+  }
   for (size_t j = 0; j < out.starts.size(); ++j)
     if (out.best < 0 || out.starts[j].run.final_e2 < out.starts[out.best].run.final_e2)
       out.best = static_cast<int>(j);

@@ -9,6 +9,7 @@
 #include <functional>
 #include <vector>
 
+#include "aapat/work/byte_codec.h"
 #include "aapat/core/metric.h"
 #include "aapat/optimize/family.h"
 #include "aapat/optimize/problem.h"
@@ -39,8 +40,16 @@ SeedFunction family_seeds(const FamilySpec& spec, SeedKind kind, uint64_t seed,
 // Called after each finished start with (finished, total, best E2 so far).
 using ProgressFunction = std::function<void(int, int, double)>;
 
+// Every start is a work item (work/work_items.h): the starts may run on other
+// processes or come from a checkpoint, with the same result.
 MultiStartResult multistart(const Metric& metric, int starts, uint64_t seed,
                             const SeedFunction& make_seed, const OptimizerSettings& settings,
                             int threads, const ProgressFunction& progress = {});
+
+// A problem's values (positions, freedoms, weights) as bytes, and back onto a
+// problem of the same structure (rebuilt from its seed function): how a
+// search's result travels as a work item's result.
+void put_problem_values(ByteWriter& w, const Problem& problem);
+void get_problem_values(ByteReader& r, Problem& problem);
 
 }  // namespace aapat

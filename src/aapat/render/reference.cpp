@@ -1,6 +1,10 @@
 #include "aapat/render/reference.h"
 
+#include <cstring>
+
+#include "aapat/work/byte_codec.h"
 #include "aapat/core/filter_catalog.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 
@@ -10,7 +14,27 @@ Image render_reference(const Scene& scene, int width, int height, const Referenc
   s.generator = "jittered";
   s.samples = r.samples;
   s.seed = r.seed;
-  return render(scene, width, height, s, make_filter(r.filter), nullptr, offset);
+  const Filter filter = make_filter(r.filter);
+  if (width < 1 || height < 1) return render(scene, width, height, s, filter, nullptr, offset);
+  // Each block of rows is a work item (work/work_items.h): a reference may be
+  // rendered by many processes, the same bits as by one.
+  const int bands = (height + kRenderBlockRows - 1) / kRenderBlockRows;
+  const std::vector<std::string> rows = run_work_items(bands, [&](int band) {
+    const int j0 = band * kRenderBlockRows;
+    const Image part = render_rows(scene, width, height, s, filter, offset, j0,
+                                   std::min(height, j0 + kRenderBlockRows));
+    ByteWriter w;
+    w.put_all(part.values);
+    return w.take();
+  });
+  Image img{width, height, offset, {}};
+  img.values.reserve(static_cast<size_t>(width) * height);
+  for (const std::string& band : rows) {
+    ByteReader reader(band);
+    const std::vector<double> values = reader.get_all<double>();
+    img.values.insert(img.values.end(), values.begin(), values.end());
+  }
+  return img;
 }
 
 }  // namespace aapat

@@ -167,13 +167,23 @@ ShadingPoint parse_shading_point(std::string_view text) {
   throw ParameterError("shading-point", fmt::format(" '{}': use centre or centroid", text));
 }
 
-Image render(const Scene& scene, int width, int height, const Sampling& s,
-             const std::optional<Filter>& filter, RenderStats* stats, double offset) {
+namespace {
+
+// Rows [row_begin, row_end) of the image (all of them with a pattern's own
+// kernels); the image returned holds those rows alone.
+Image render_band(const Scene& scene, int width, int height, const Sampling& s,
+                  const std::optional<Filter>& filter, RenderStats* stats, double offset,
+                  int row_begin, int row_end) {
   if (width < 1 || height < 1 || width > 16384 || height > 16384)
     throw ParameterError("size", fmt::format(": {}x{} is out of range 1..16384", width, height));
   if (!s.pattern && s.generator.empty()) throw Error("render: give a pattern or a generator");
   if (!filter && !s.pattern) throw Error("render: a per-pixel generator needs a filter");
-  Image img{width, height, 0.0, std::vector<double>(static_cast<size_t>(width) * height)};
+  if (row_begin < 0 || row_begin % kRenderBlockRows != 0 || row_end <= row_begin ||
+      row_end > height || (!filter && (row_begin != 0 || row_end != height)))
+    throw Error(fmt::format("render: rows {} to {} of {} are not a band of whole blocks", row_begin,
+                            row_end, height));
+  const int rows = row_end - row_begin;
+  Image img{width, rows, 0.0, std::vector<double>(static_cast<size_t>(width) * rows)};
   const PixelSampler sampler(scene, s);
   Counts counts;
   const bool plain = s.shading.exact() && !has_texture(scene);  // nothing to count but samples
@@ -209,9 +219,9 @@ Image render(const Scene& scene, int width, int height, const Sampling& s,
     // filter's radius with weight h(dx) h(dy); the sums are normalized at the end.
     img.offset = offset;
     const int reach = static_cast<int>(std::floor(filter->radius() + 0.5)) + (offset != 0 ? 1 : 0);
-    constexpr int kBlock = 8;
-    tbb::parallel_for(0, (height + kBlock - 1) / kBlock, [&](int block) {
-      const int j0 = block * kBlock, j1 = std::min(height, j0 + kBlock);
+    constexpr int kBlock = kRenderBlockRows;
+    tbb::parallel_for(0, (rows + kBlock - 1) / kBlock, [&](int block) {
+      const int j0 = row_begin + block * kBlock, j1 = std::min(row_end, j0 + kBlock);
       std::vector<double> sum(static_cast<size_t>(j1 - j0) * width, 0.0), weight(sum.size(), 0.0);
       std::vector<Sample> samples;
       std::vector<double> hx(2 * reach + 1), hy(2 * reach + 1);
@@ -240,7 +250,7 @@ Image render(const Scene& scene, int width, int height, const Sampling& s,
       for (int j = j0; j < j1; ++j)
         for (int i = 0; i < width; ++i) {
           const size_t k = static_cast<size_t>(j - j0) * width + i;
-          img.values[static_cast<size_t>(j) * width + i] =
+          img.values[static_cast<size_t>(j - row_begin) * width + i] =
               weight[k] != 0 ? sum[k] / weight[k] : 0.0;
         }
     });
@@ -253,6 +263,18 @@ Image render(const Scene& scene, int width, int height, const Sampling& s,
     stats->shadings_per_pixel = plain ? stats->samples_per_pixel : double(counts.shadings) / pixels;
   }
   return img;
+}
+
+}  // namespace
+
+Image render(const Scene& scene, int width, int height, const Sampling& s,
+             const std::optional<Filter>& filter, RenderStats* stats, double offset) {
+  return render_band(scene, width, height, s, filter, stats, offset, 0, height);
+}
+
+Image render_rows(const Scene& scene, int width, int height, const Sampling& s,
+                  const Filter& filter, double offset, int row_begin, int row_end) {
+  return render_band(scene, width, height, s, filter, nullptr, offset, row_begin, row_end);
 }
 
 }  // namespace aapat

@@ -69,4 +69,13 @@ struct RenderStats {
 Image render(const Scene& scene, int width, int height, const Sampling& sampling,
              const std::optional<Filter>& filter, RenderStats* stats = nullptr, double offset = 0);
 
+// With a filter, the rows are rendered in independent blocks of this many.
+inline constexpr int kRenderBlockRows = 8;
+// Rows [row_begin, row_end) of render(scene, width, height, sampling, filter,
+// nullptr, offset), bit for bit, as an image of those rows alone; row_begin
+// is a multiple of kRenderBlockRows. A reference renders in such bands, each
+// a work item (render/reference.h).
+Image render_rows(const Scene& scene, int width, int height, const Sampling& sampling,
+                  const Filter& filter, double offset, int row_begin, int row_end);
+
 }  // namespace aapat

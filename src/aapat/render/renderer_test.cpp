@@ -3,12 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <set>
 
 #include "aapat/analyze/discrepancy.h"
 #include "aapat/core/filter_catalog.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/render/image_error.h"
+#include "aapat/render/reference.h"
+#include "aapat/render/scene.h"
 
 namespace aapat {
 namespace {
@@ -144,6 +147,40 @@ TEST(ImageError, RmseMaxDeviationAndHistogramOnTheLevelScale) {
   EXPECT_EQ(err[0], 255);  // top-left is row 1: (0, 1) with no error
   EXPECT_EQ(err[1], 0);    // (1, 1): 10% off, black
   EXPECT_THROW(compare(a, Image{1, 1, 0, {0}}), Error);
+}
+
+// A reference renders in bands of rows, each a work item that may run on
+// another process: the bands put together are the whole image, bit for bit,
+// and render_reference (banded) equals the one-piece rendering.
+TEST(Renderer, BandsOfRowsAreTheWholeImageBitForBit) {
+  const Scene scene = make_scene("circles", 37, 29);
+  Sampling s;
+  s.generator = "jittered";
+  s.samples = 16;
+  s.seed = 77;
+  for (const double offset : {0.0, 0.5}) {
+    const Image whole = render(scene, 37, 29, s, make_filter("mitchell"), nullptr, offset);
+    std::vector<double> joined;
+    for (int j0 = 0; j0 < 29; j0 += kRenderBlockRows) {
+      const Image band = render_rows(scene, 37, 29, s, make_filter("mitchell"), offset, j0,
+                                     std::min(29, j0 + kRenderBlockRows));
+      EXPECT_EQ(band.height, std::min(29, j0 + kRenderBlockRows) - j0);
+      joined.insert(joined.end(), band.values.begin(), band.values.end());
+    }
+    ASSERT_EQ(joined.size(), whole.values.size());
+    EXPECT_EQ(std::memcmp(joined.data(), whole.values.data(), joined.size() * sizeof(double)), 0);
+    ReferenceSettings r;
+    r.samples = 16;
+    r.seed = 77;
+    const Image reference = render_reference(scene, 37, 29, r, offset);
+    EXPECT_EQ(
+        std::memcmp(reference.values.data(), whole.values.data(), joined.size() * sizeof(double)),
+        0);
+  }
+  EXPECT_THROW(render_rows(scene, 37, 29, s, make_filter("box"), 0, 3, 11),
+               Error);  // not a block start
+  EXPECT_THROW(render_rows(scene, 37, 29, s, make_filter("box"), 0, 8, 30),
+               Error);  // past the image
 }
 
 }  // namespace

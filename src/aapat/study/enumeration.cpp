@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "aapat/work/work_items.h"
 #include "aapat/optimize/multistart.h"
 
 namespace aapat {
@@ -28,16 +29,37 @@ Enumeration enumerate_study(const Metric& metric, const EnumerationSettings& set
     for (const auto& c : enumerate_placements(n, settings.rules))
       e.rows.push_back({static_cast<int>(e.rows.size()) + 1, n, c, NAN, {}});
   if (!settings.optimize) return e;
-  for (size_t i = 0; i < e.rows.size(); ++i) {
-    EnumerationRow& row = e.rows[i];
+  // One work item per configuration (work/work_items.h), its starts on the
+  // cores of the process that runs it: configurations differ in cost by
+  // orders of magnitude, so they are handed out one by one.
+  const auto seeds_of = [&](const EnumerationRow& row) {
     const FamilySpec spec =
         parse_family(fmt::format("P(4,1+,{})", format_cost(row.n)), row.config.sites());
-    const MultiStartResult r =
-        multistart(metric, settings.starts, settings.seed,
-                   family_seeds(spec, SeedKind::kJittered, settings.seed, metric.filter()),
-                   OptimizerSettings{}, 0);
-    row.e2 = r.starts[r.best].run.final_e2;
-    row.best = pattern_of(r.best_problem);
+    return family_seeds(spec, SeedKind::kJittered, settings.seed, metric.filter());
+  };
+  const std::vector<std::string> results = run_work_items(
+      static_cast<int>(e.rows.size()),
+      [&](int i) {
+        const MultiStartResult r =
+            multistart(metric, settings.starts, settings.seed,
+                       seeds_of(e.rows[static_cast<size_t>(i)]), OptimizerSettings{}, 0);
+        ByteWriter w;
+        w.put(r.starts[r.best].run.final_e2).put<int32_t>(r.starts[r.best].start);
+        put_problem_values(w, r.best_problem);
+        return w.take();
+      },
+      [&](int done, int total, const std::string& result) {
+        if (progress)
+          progress(done, total, fmt::format("E2 {:.4f}", ByteReader(result).get<double>()));
+      });
+  for (size_t i = 0; i < e.rows.size(); ++i) {
+    EnumerationRow& row = e.rows[i];
+    ByteReader r(results[i]);
+    row.e2 = r.get<double>();
+    Problem best = seeds_of(row)(r.get<int32_t>());
+    get_problem_values(r, best);
+    r.finish();
+    row.best = pattern_of(best);
     row.best.name = fmt::format("P(4,1+,{})-config-{}", format_cost(row.n), row.id);
     row.best.description = fmt::format("placement {}", row.config.sites());
     row.best.provenance = {{"enumerate", fmt::format("configuration {}", row.id)},
@@ -47,9 +69,6 @@ Enumeration enumerate_study(const Metric& metric, const EnumerationSettings& set
                            {"seed", std::to_string(settings.seed)},
                            {"starts", std::to_string(settings.starts)},
                            {"e2", fmt::format("{:.6f}", row.e2)}};
-    if (progress)
-      progress(static_cast<int>(i + 1), static_cast<int>(e.rows.size()),
-               fmt::format("n = {} E2 {:.4f}", format_cost(row.n), row.e2));
   }
   // Rank within each cost by E2.
   std::stable_sort(e.rows.begin(), e.rows.end(), [](const auto& a, const auto& b) {

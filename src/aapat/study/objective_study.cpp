@@ -9,8 +9,10 @@
 #include <numeric>
 
 #include "aapat/core/acuity.h"
+#include "aapat/work/byte_codec.h"
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/metric.h"
+#include "aapat/work/work_items.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/pattern_json.h"
@@ -200,18 +202,30 @@ void measure(std::vector<StudyPattern>& patterns, const StudySettings& s,
     metrics.emplace_back(make_filter(o.filter), make_acuity(o.acuity), o.norm);
   const Metric degree(make_filter(s.filter), make_acuity("uniform:step=1"));
   for (StudyPattern& p : patterns) p.measures.assign(s.scenes.size(), {});
-  tbb::parallel_for(size_t{0}, patterns.size() * s.scenes.size(), [&](size_t task) {
-    const size_t i = task / s.scenes.size(), sc = task % s.scenes.size();
-    const bool corner = patterns[i].pattern.footprint.size != 1;
-    if (corner && scenes.shifted[sc].empty())
-      throw Error(
-          fmt::format("study: {} reconstructs at pixel corners and no reference was "
-                      "rendered there",
-                      patterns[i].pattern.name));
-    patterns[i].measures[sc] =
-        render_measures(patterns[i].pattern, scenes.frames[sc],
-                        corner ? scenes.shifted[sc] : scenes.references[sc], s.size);
-  });
+  // Every (pattern, scene) is a work item (work/work_items.h).
+  const size_t scene_count = s.scenes.size();
+  const std::vector<std::string> results =
+      run_work_items(static_cast<int>(patterns.size() * scene_count), [&](int task) {
+        const size_t i = static_cast<size_t>(task) / scene_count,
+                     sc = static_cast<size_t>(task) % scene_count;
+        const bool corner = patterns[i].pattern.footprint.size != 1;
+        if (corner && scenes.shifted[sc].empty())
+          throw Error(
+              fmt::format("study: {} reconstructs at pixel corners and no reference was "
+                          "rendered there",
+                          patterns[i].pattern.name));
+        ByteWriter w;
+        for (double m :
+             render_measures(patterns[i].pattern, scenes.frames[sc],
+                             corner ? scenes.shifted[sc] : scenes.references[sc], s.size))
+          w.put(m);
+        return w.take();
+      });
+  for (size_t task = 0; task < results.size(); ++task) {
+    ByteReader r(results[task]);
+    for (double& m : patterns[task / scene_count].measures[task % scene_count]) m = r.get<double>();
+    r.finish();
+  }
   tbb::parallel_for(size_t{0}, patterns.size(), [&](size_t i) {
     StudyPattern& p = patterns[i];
     p.objective.clear();

@@ -1,0 +1,138 @@
+#!/usr/bin/env bash
+# The same command gives the same files on one process and across MPI ranks
+# (mpirun -np 2 and 3, one or two threads a rank), a checkpointed run that is
+# killed resumes to the same files (on one process, and across ranks with
+# another rank count), and a rank that dies fails the run with a message and
+# no output (docs/cluster.md). Usage: scripts/test-cluster.sh AAPAT_BINARY
+# Exit 77 (skipped) without mpirun or without MPI in the binary.
+set -uo pipefail
+aapat=$(realpath "$1")
+command -v mpirun >/dev/null || { echo "mpirun not found: skipped"; exit 77; }
+ldd "$aapat" | grep -q libmpi || { echo "aapat built without MPI: skipped"; exit 77; }
+# Root in containers and CI; more ranks than cores on a 2-core machine.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+export AAPAT_CACHE="$work/cache"
+failures=0
+fail() {
+  echo "FAIL: $*"
+  failures=$((failures + 1))
+}
+
+# run NAME LAUNCH... -- ARGS...: the command's outputs go to NAME/ (stdout as
+# stdout.txt); LAUNCH is empty (one process) or an mpirun prefix.
+run() {
+  local name=$1
+  shift
+  local launch=()
+  while [ "$1" != "--" ]; do
+    launch+=("$1")
+    shift
+  done
+  shift
+  mkdir -p "$name"
+  (cd "$name" && "${launch[@]}" "$aapat" "$@" >stdout.txt 2>stderr.txt) ||
+    { fail "$name exited $?: $(tail -3 "$name/stderr.txt")"; return; }
+}
+same() {  # same REFERENCE OTHER FILE...
+  local ref=$1 other=$2
+  shift 2
+  for f in "$@"; do
+    cmp -s "$ref/$f" "$other/$f" || fail "$other/$f differs from $ref/$f"
+  done
+}
+check() {  # check NAME FILES... -- ARGS...: every scale against one process
+  local name=$1
+  shift
+  local files=()
+  while [ "$1" != "--" ]; do
+    files+=("$1")
+    shift
+  done
+  shift
+  run "$name-ref" -- "$@"
+  run "$name-t1" -- --threads 1 "$@"
+  run "$name-np1" mpirun -np 1 -- "$@"
+  run "$name-np2" mpirun -np 2 -- --threads 1 "$@"
+  run "$name-np3" mpirun -np 3 -- --threads 1 "$@"
+  run "$name-np3t2" mpirun -np 3 -- --threads 2 "$@"
+  for scale in t1 np1 np2 np3 np3t2; do same "$name-ref" "$name-$scale" "${files[@]}"; done
+  echo "$name: the same files at every scale"
+}
+
+check optimize best.json -- optimize --family 'P(4,4,4)' --starts 24 \
+  --seed 5 -o best.json
+check optimize-lattice best.json -- optimize --family 'P(1,1,4)' --starts 6 --lattice 16 --seed 3 \
+  -o best.json
+check enumerate table.csv gallery.svg stdout.txt -- enumerate --cost 1.25,1.5 --optimize --starts 3 \
+  --csv table.csv --gallery gallery.svg
+check reference stdout.txt reference.png error.png -- render circles --pattern msaa-4 --size 48x40 \
+  --reference-samples 64 --no-cache --json --reference reference.png --error error.png -o render.png
+check table3 stdout.txt -- table3 --patterns 40 --iterations 30 --json
+check study table.md table.csv -- study --budgets 4 --patterns 8 --scenes circles spiral --size 24 \
+  --frames 1 --starts 1 --resamples 50 --no-cache --table table.md --csv table.csv
+
+# A run killed midway resumes from its checkpoint to the same files.
+long=(optimize --family 'P(4,4,4)' --starts 1000 --seed 9 -o best.json)
+records() {
+  local n
+  n=$(grep -c '^item ' "$1" 2>/dev/null)
+  echo "${n:-0}"
+}
+killed_run() {  # killed_run NAME SIGNAL LAUNCH...: start, wait for 20 finished items, kill
+  local name=$1 signal=$2
+  shift 2
+  mkdir -p "$name"
+  (cd "$name" && exec "$@" "$aapat" --checkpoint ck "${long[@]}" >/dev/null 2>&1) &
+  local pid=$!
+  for _ in $(seq 600); do
+    [ "$(records "$name/ck")" -ge 20 ] && break
+    sleep 0.05
+  done
+  kill "-$signal" "$pid" 2>/dev/null
+  wait "$pid" 2>/dev/null
+  pkill -9 -f -- "--checkpoint ck optimize" 2>/dev/null  # no rank outlives its mpirun
+  [ -e "$name/best.json" ] && fail "$name: the killed run left best.json"
+  local done_items
+  done_items=$(records "$name/ck")
+  [ "$done_items" -ge 20 ] && [ "$done_items" -lt 1000 ] ||
+    fail "$name: $done_items items in the checkpoint when killed"
+  echo "$name: killed (SIG$signal) with $done_items of 1000 starts in the checkpoint"
+}
+run resume-ref -- "${long[@]}"
+killed_run resume-local KILL
+run resume-local -- --checkpoint ck "${long[@]}"
+grep -q "resuming from ck" resume-local/stderr.txt || fail "resume-local: no word of resuming"
+same resume-ref resume-local best.json
+killed_run resume-mpi TERM mpirun -np 2
+run resume-mpi mpirun -np 3 -- --threads 1 --checkpoint ck "${long[@]}"
+grep -q "resuming from ck" resume-mpi/stderr.txt || fail "resume-mpi: no word of resuming"
+same resume-ref resume-mpi best.json
+echo "checkpoint: killed runs resumed to the same files"
+
+# A rank that dies ends the run: non-zero exit, mpirun names the rank, no output.
+mkdir -p dies
+(cd dies && exec mpirun -np 3 "$aapat" --threads 1 "${long[@]}" >stdout.txt 2>stderr.txt) &
+pid=$!
+victim=""
+for _ in $(seq 200); do
+  for p in $(pgrep -f -- "--starts 1000 --seed 9"); do
+    grep -qz '^OMPI_COMM_WORLD_RANK=2$' "/proc/$p/environ" 2>/dev/null && victim=$p
+  done
+  [ -n "$victim" ] && break
+  sleep 0.05
+done
+sleep 0.5
+[ -n "$victim" ] && kill -9 "$victim"
+wait "$pid"
+status=$?
+[ "$status" -ne 0 ] || fail "dies: mpirun exited 0 after rank 2 was killed"
+grep -q "rank 2" dies/stderr.txt || fail "dies: the message does not name rank 2: $(cat dies/stderr.txt)"
+[ -e dies/best.json ] && fail "dies: best.json written"
+echo "a dead rank: exit $status, $(grep -m1 'rank 2' dies/stderr.txt)"
+
+[ "$failures" -eq 0 ] && echo "cluster: all checks passed"
+exit $((failures > 0))
