@@ -13,8 +13,8 @@
 #include <mutex>
 #include <thread>
 
-#include "aapat/work/byte_codec.h"
 #include "aapat/core/geometry.h"
+#include "aapat/work/byte_codec.h"
 
 namespace aapat {
 namespace {
@@ -28,9 +28,25 @@ using Clock = std::chrono::steady_clock;
 // the command. kVerdict: the status every rank exits with.
 enum Tag : int { kRequest = 1, kAssign, kResult, kResults, kAbort, kFinal, kVerdict };
 
-// How long an idle main thread sleeps between looks: MPI's blocking calls
-// spin, which would take a core from the items.
-constexpr auto kIdle = std::chrono::microseconds(200);
+// How long an idle main thread sleeps between looks at MPI: from kIdle,
+// doubling while nothing happens, up to kIdleMax. MPI's blocking calls spin,
+// which would take a core from the items; each rank keeps items queued
+// beyond its threads, so the longer sleeps cost no item time.
+constexpr auto kIdle = std::chrono::microseconds(50);
+constexpr auto kIdleMax = std::chrono::microseconds(3200);
+
+class Backoff {
+ public:
+  std::chrono::microseconds next() {
+    const auto now = sleep_;
+    sleep_ = std::min(kIdleMax, sleep_ * 2);
+    return now;
+  }
+  void reset() { sleep_ = kIdle; }
+
+ private:
+  std::chrono::microseconds sleep_ = kIdle;
+};
 
 void send(int to, Tag tag, const std::string& bytes) {
   if (bytes.size() > static_cast<size_t>(INT_MAX))
@@ -60,9 +76,10 @@ std::optional<Message> poll(int source) {
 }
 
 Message wait_for_message(int source) {
+  Backoff backoff;
   while (true) {
     if (auto m = poll(source)) return std::move(*m);
-    std::this_thread::sleep_for(kIdle);
+    std::this_thread::sleep_for(backoff.next());
   }
 }
 
@@ -101,6 +118,9 @@ struct MpiEngine::Local {
     double seconds = 0;
   };
   explicit Local(int slots) : slots(slots), arena(slots, 0) {}
+  // Items in the arena at once: one more than its threads, so a thread that
+  // ends an item starts the next without waiting for the main thread.
+  int ahead() const { return slots + 1; }
 
   void launch(const ItemWork& work, int item) {
     ++in_flight;
@@ -130,9 +150,10 @@ struct MpiEngine::Local {
     in_flight -= static_cast<int>(out.size());
     return out;
   }
-  void wait() {
+  // Until an item ends or `sleep` passes.
+  void wait(std::chrono::microseconds sleep = kIdle) {
     std::unique_lock lock(mutex);
-    wake.wait_for(lock, kIdle, [&] { return !done.empty(); });
+    wake.wait_for(lock, sleep, [&] { return !done.empty(); });
   }
   // Waits for the items in flight (they reference the caller's work) and
   // drops their results.
@@ -225,9 +246,10 @@ void MpiEngine::run_root(std::vector<std::optional<std::string>>& results, const
     }
     results[static_cast<size_t>(d.item)] = std::move(d.bytes);
   };
+  Backoff backoff;
   while (true) {
     bool active = false;
-    while (local.in_flight < local.slots && handing_out()) {
+    while (local.in_flight < local.ahead() && handing_out()) {
       ++outstanding[0];
       local.launch(work, pending.front());
       pending.pop_front();
@@ -270,7 +292,11 @@ void MpiEngine::run_root(std::vector<std::optional<std::string>>& results, const
         std::all_of(outstanding.begin(), outstanding.end(), [](int n) { return n == 0; });
     const bool all_stopped = std::all_of(stopped.begin(), stopped.end(), [](bool b) { return b; });
     if (!handing_out() && all_back && all_stopped) break;
-    if (!active) local.wait();
+    if (active) {
+      backoff.reset();
+    } else {
+      local.wait(backoff.next());
+    }
   }
   wall_ += std::chrono::duration<double>(Clock::now() - t0).count();
   if (!left.empty()) throw Error(left);
@@ -291,10 +317,12 @@ void MpiEngine::run_worker(std::vector<std::optional<std::string>>& results, con
   Local& local = *local_;
   {
     ByteWriter b;
-    b.put<int32_t>(local.slots);
+    b.put<int32_t>(local.ahead() + 1);  // and one waiting here for the next free thread
     send(0, kRequest, b.take());
   }
+  std::deque<int> queued;
   bool stop = false;
+  Backoff backoff;
   while (true) {
     bool active = false;
     for (Local::Done& d : local.take()) {
@@ -311,7 +339,7 @@ void MpiEngine::run_worker(std::vector<std::optional<std::string>>& results, con
         if (item < 0) {
           stop = true;
         } else {
-          local.launch(work, item);
+          queued.push_back(item);
         }
       } else if (m->tag == kAbort) {
         local.drain();
@@ -327,7 +355,16 @@ void MpiEngine::run_worker(std::vector<std::optional<std::string>>& results, con
         throw Error(fmt::format("cluster: unexpected message {} from rank 0", m->tag));
       }
     }
-    if (!active) local.wait();
+    while (local.in_flight < local.ahead() && !queued.empty()) {
+      local.launch(work, queued.front());
+      queued.pop_front();
+      active = true;
+    }
+    if (active) {
+      backoff.reset();
+    } else {
+      local.wait(backoff.next());
+    }
   }
 }
 

@@ -9,8 +9,8 @@
 #include <memory>
 #include <mutex>
 
-#include "aapat/work/work_items.h"
 #include "aapat/io/atomic_file.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 namespace {
@@ -52,8 +52,10 @@ ReferenceSource cached_references(std::string dir, Warn warn) {
     // of a cluster run agrees on whether the reference is rendered.
     const std::string head = std::string(kMagic) + key;
     const std::string found = run_as_one_item([&] {
+      // Not empty even for a miss: a checkpoint keeps the answer.
+      const std::string miss(1, '\0');
       std::error_code ec;
-      if (!std::filesystem::is_regular_file(path, ec)) return std::string();
+      if (!std::filesystem::is_regular_file(path, ec)) return miss;
       std::string data;
       try {
         data = read_file(path, "cached reference", kMagic.size() + key.size() + bytes);
@@ -61,12 +63,12 @@ ReferenceSource cached_references(std::string dir, Warn warn) {
       }
       // A file that is not exactly this reference (collision, older format) is recomputed.
       if (data.size() == head.size() + bytes && data.compare(0, head.size(), head) == 0)
-        return data.substr(head.size());
-      return std::string();
+        return '\1' + data.substr(head.size());
+      return miss;
     });
-    if (bytes > 0 && found.size() == bytes) {
+    if (bytes > 0 && found.size() == bytes + 1 && found[0] == '\1') {
       Image image{width, height, offset, std::vector<double>(static_cast<size_t>(width) * height)};
-      std::memcpy(image.values.data(), found.data(), bytes);
+      std::memcpy(image.values.data(), found.data() + 1, bytes);
       return image;
     }
     Image image = render_reference(scene, width, height, r, offset);

@@ -8,11 +8,11 @@
 #include <cmath>
 #include <optional>
 
-#include "aapat/work/byte_codec.h"
-#include "aapat/work/work_items.h"
 #include "aapat/optimize/anneal.h"
 #include "aapat/optimize/descent.h"
 #include "aapat/optimize/family.h"
+#include "aapat/work/byte_codec.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 
@@ -49,20 +49,21 @@ namespace {
 // freedoms, weights); the structure is rebuilt from its seed function.
 std::string encode_start(const StartRecord& record, const Problem& problem) {
   ByteWriter w;
-  w.put<uint8_t>(1).put(record.run.initial_e2).put(record.run.final_e2);
+  w.put(record.run.initial_e2).put(record.run.final_e2);
   w.put<int32_t>(record.run.iterations).put<int32_t>(record.run.evaluations).put(record.seconds);
   put_problem_values(w, problem);
   return w.take();
 }
 
-// A start the deadline skipped.
+// A start the deadline skipped: an empty result, which a checkpoint does not
+// keep (a resumed run runs it).
 std::string skipped_start() {
-  return std::string(1, '\0');
+  return {};
 }
 
 std::optional<StartRecord> decode_start(int start, const std::string& bytes, Problem& problem) {
+  if (bytes.empty()) return std::nullopt;
   ByteReader r(bytes);
-  if (r.get<uint8_t>() == 0) return std::nullopt;
   StartRecord record{start, {}, 0};
   record.run.initial_e2 = r.get<double>();
   record.run.final_e2 = r.get<double>();
@@ -75,8 +76,8 @@ std::optional<StartRecord> decode_start(int start, const std::string& bytes, Pro
 }
 
 double final_e2_of(const std::string& bytes) {
+  if (bytes.empty()) return INFINITY;
   ByteReader r(bytes);
-  if (r.get<uint8_t>() == 0) return INFINITY;
   r.get<double>();
   return r.get<double>();
 }

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 #include <nlopt.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +15,8 @@
 #include "aapat/optimize/family.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/temporal_metrics.h"
+#include "aapat/work/byte_codec.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 namespace {
@@ -507,20 +508,28 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
   if (s.samples_per_frame > 1 && s.optimize_weights)  // every frame's weights start equal
     halton.resize(positions + static_cast<size_t>(s.frames * (s.samples_per_frame - 1)),
                   1.0 / s.samples_per_frame);
-  std::vector<std::vector<double>> found(static_cast<size_t>(s.starts));
-  std::vector<double> objective(static_cast<size_t>(s.starts));
-  tbb::parallel_for(0, s.starts, [&](int start) {
+  // Each start is a work item (work/work_items.h): on any rank of a cluster
+  // run, or from a checkpoint, with the same result.
+  const std::vector<std::string> results = run_work_items(s.starts, [&](int start) {
     std::vector<double> x = halton;
     if (start > 0) {
       std::mt19937_64 rng = start_rng(s.seed, static_cast<uint64_t>(start));
       std::uniform_real_distribution<double> u(-kBound, kBound);
       for (size_t i = 0; i < positions; ++i) x[i] = u(rng);
     }
-    found[static_cast<size_t>(start)] = run_start(s, metric, x);
-    objective[static_cast<size_t>(start)] =
-        sequence_objective(sequence_of(found[static_cast<size_t>(start)], s, name), s, metric)
-            .objective;
+    x = run_start(s, metric, x);
+    ByteWriter w;
+    w.put(sequence_objective(sequence_of(x, s, name), s, metric).objective).put_all(x);
+    return w.take();
   });
+  std::vector<std::vector<double>> found;
+  std::vector<double> objective;
+  for (const std::string& result : results) {
+    ByteReader r(result);
+    objective.push_back(r.get<double>());
+    found.push_back(r.get_all<double>());
+    r.finish();
+  }
   const size_t best =
       static_cast<size_t>(std::min_element(objective.begin(), objective.end()) - objective.begin());
   SequenceSearchResult r;

@@ -31,7 +31,7 @@ std::string one_line(std::string text) {
 
 // Reads the records after the header; returns where the last whole one ends.
 size_t read_records(const std::string& data, size_t at,
-                    std::map<std::pair<int, int>, std::string>& items) {
+                    std::map<std::pair<int, int>, std::string>& items, std::map<int, int>& counts) {
   while (at < data.size()) {
     const size_t eol = data.find('\n', at);
     if (eol == std::string::npos) break;
@@ -39,7 +39,14 @@ size_t read_records(const std::string& data, size_t at,
     unsigned long long size = 0, sum = 0;
     std::istringstream head(data.substr(at, eol - at));
     std::string word;
-    if (!(head >> word >> call >> item >> size >> std::hex >> sum) || word != "item") break;
+    if (!(head >> word)) break;
+    if (word == "set") {  // "set CALL COUNT"
+      if (!(head >> call >> item)) break;
+      counts[call] = item;
+      at = eol + 1;
+      continue;
+    }
+    if (!(head >> call >> item >> size >> std::hex >> sum) || word != "item") break;
     const size_t begin = eol + 1;
     if (size > data.size() || begin + size + 1 > data.size() || data[begin + size] != '\n') break;
     const std::string_view bytes(data.data() + begin, size);
@@ -75,7 +82,7 @@ Checkpoint::Checkpoint(std::string path, std::string fingerprint) : path_(std::m
             "delete the file or name another one",
             path_, other));
       }
-      keep = read_records(data, header.size(), items_);
+      keep = read_records(data, header.size(), items_, counts_);
       restored_ = static_cast<int>(items_.size());
       // A record cut off by the kill is dropped before new ones follow it.
       std::filesystem::resize_file(path_, keep, ec);
@@ -93,6 +100,23 @@ Checkpoint::Checkpoint(std::string path, std::string fingerprint) : path_(std::m
 
 Checkpoint::~Checkpoint() {
   if (file_) std::fclose(file_);
+}
+
+void Checkpoint::begin(int call, int count) {
+  if (const auto it = counts_.find(call); it != counts_.end()) {
+    if (it->second != count)
+      throw Error(fmt::format(
+          "--checkpoint {}: the run's set {} of work items has {} items, the checkpoint's {}: it "
+          "was written by another path through the command (another aapat version, or a time "
+          "limit); delete it or name another file",
+          path_, call + 1, count, it->second));
+    return;
+  }
+  counts_[call] = count;
+  const std::string line = fmt::format("set {} {}\n", call, count);
+  std::fwrite(line.data(), 1, line.size(), file_);
+  if (std::fflush(file_) != 0)
+    throw Error(fmt::format("--checkpoint {}: cannot be written: {}", path_, std::strerror(errno)));
 }
 
 std::optional<std::string> Checkpoint::find(int call, int item) const {

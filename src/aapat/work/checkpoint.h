@@ -28,6 +28,10 @@ class Checkpoint {
   Checkpoint(const Checkpoint&) = delete;
   Checkpoint& operator=(const Checkpoint&) = delete;
 
+  // The run's `call`-th set of work items has `count` items: recorded the
+  // first time, checked on resume (a run that took another path, or a file
+  // from another version, is an Error rather than wrong results).
+  void begin(int call, int count);
   // Item `item` of the run's `call`-th set of work items, if it finished.
   std::optional<std::string> find(int call, int item) const;
   // Appends a finished item and flushes it to the operating system.
@@ -39,6 +43,7 @@ class Checkpoint {
  private:
   std::string path_;
   std::map<std::pair<int, int>, std::string> items_;
+  std::map<int, int> counts_;  // items per set
   int restored_ = 0;
   std::FILE* file_ = nullptr;
 };

@@ -9,8 +9,8 @@
 #include <mutex>
 #include <thread>
 
-#include "aapat/work/checkpoint.h"
 #include "aapat/core/geometry.h"
+#include "aapat/work/checkpoint.h"
 
 namespace aapat {
 namespace {
@@ -70,6 +70,7 @@ std::vector<std::string> run_work_items(int count, const ItemWork& work,
   const int call = top ? session->calls++ : -1;
   Checkpoint* checkpoint = top ? session->checkpoint : nullptr;
   int done = 0;
+  if (checkpoint) checkpoint->begin(call, count);
   if (checkpoint)
     for (int i = 0; i < count; ++i)
       if (auto& r = results[static_cast<size_t>(i)]; (r = checkpoint->find(call, i))) {
@@ -77,7 +78,7 @@ std::vector<std::string> run_work_items(int count, const ItemWork& work,
         if (progress) progress(done, count, *r);
       }
   const WorkEngine::Finished finished = [&](int item, const std::string& result) {
-    if (checkpoint) checkpoint->record(call, item, result);
+    if (checkpoint && !result.empty()) checkpoint->record(call, item, result);
     ++done;
     if (progress) progress(done, count, result);
   };

@@ -24,7 +24,9 @@ using ItemWork = std::function<std::string(int item)>;
 using ItemsProgress = std::function<void(int done, int total, const std::string& result)>;
 
 // Runs items 0..count-1 and returns their results in item order. An item that
-// throws fails the call with the lowest failing item's error.
+// throws fails the call with the lowest failing item's error. An empty result
+// means "not done" (an item a deadline skipped): a checkpoint does not keep
+// it, so a resumed run runs the item.
 std::vector<std::string> run_work_items(int count, const ItemWork& work,
                                         const ItemsProgress& progress = {});
 // One item: a decision every process must share (a cache lookup, say).

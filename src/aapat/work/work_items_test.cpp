@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "aapat/core/geometry.h"
 #include "aapat/work/byte_codec.h"
 #include "aapat/work/checkpoint.h"
-#include "aapat/core/geometry.h"
 
 namespace aapat {
 namespace {
@@ -145,6 +145,39 @@ TEST(Checkpoint, AResumedRunRecomputesOnlyTheMissingItems) {
     EXPECT_EQ(engine.ran, 3);
   }
   EXPECT_EQ(first, second);
+  std::filesystem::remove(path);
+}
+
+TEST(Checkpoint, ARunThatTakesAnotherPathIsRefusedNotFedWrongResults) {
+  const std::string path = temporary_path("path");
+  {
+    Checkpoint checkpoint(path, "cmd");
+    CountingEngine engine;
+    const WorkSession session(engine, &checkpoint);
+    run_work_items(10, square);
+  }
+  Checkpoint checkpoint(path, "cmd");
+  CountingEngine engine;
+  const WorkSession session(engine, &checkpoint);
+  EXPECT_THROW(run_work_items(12, square), Error);  // set 1 had 10 items
+  std::filesystem::remove(path);
+}
+
+TEST(WorkItems, AnEmptyResultIsNotKeptInTheCheckpoint) {
+  const std::string path = temporary_path("empty");
+  const auto skip_odd = [](int i) { return i % 2 ? std::string() : square(i); };
+  {
+    Checkpoint checkpoint(path, "cmd");
+    CountingEngine engine;
+    const WorkSession session(engine, &checkpoint);
+    run_work_items(6, skip_odd);
+  }
+  Checkpoint checkpoint(path, "cmd");
+  EXPECT_EQ(checkpoint.restored(), 3);
+  CountingEngine engine;
+  const WorkSession session(engine, &checkpoint);
+  run_work_items(6, skip_odd);
+  EXPECT_EQ(engine.ran, 3);  // the odd ones run again
   std::filesystem::remove(path);
 }
 
