@@ -135,5 +135,28 @@ grep -q "rank 2" dies/stderr.txt || fail "dies: the message does not name rank 2
 [ -e dies/best.json ] && fail "dies: best.json written"
 echo "a dead rank: exit $status, $(grep -m1 'rank 2' dies/stderr.txt)"
 
+# An error on one rank only (MPMD: rank 1 gets other arguments) fails the
+# command on every rank: rank 0 names the rank, no output, exit 1.
+one_rank_fails() {  # one_rank_fails NAME EXPECTED_STATUS ARGS_OF_RANK_0 -- ARGS_OF_RANK_1
+  local name=$1 expected=$2
+  shift 2
+  local first=()
+  while [ "$1" != "--" ]; do first+=("$1"); shift; done
+  shift
+  mkdir -p "$name"
+  (cd "$name" && timeout 120 mpirun -np 1 "$aapat" "${first[@]}" : -np 1 "$aapat" "$@" \
+    >stdout.txt 2>stderr.txt)
+  local status=$?
+  [ "$status" -eq "$expected" ] || fail "$name: exit $status, expected $expected: $(head -3 "$name/stderr.txt")"
+  [ -e "$name/best.json" ] && fail "$name: best.json written"
+  echo "$name: exit $status, $(grep -m1 'aapat: error' "$name/stderr.txt")"
+}
+one_rank_fails parse-error-on-one-rank 1 optimize --family 'P(1,1,4)' --starts 8 -o best.json -- \
+  optimize --family 'P(1,1,4)' --starts 8 -o best.json --no-such-option
+one_rank_fails fails-before-items 1 optimize --family 'P(4,4,4)' --starts 400 -o best.json -- \
+  optimize --family 'P(4,4,4)' --starts 400 --seeds nonsense -o best.json
+grep -q "rank 1: --seeds" fails-before-items/stderr.txt ||
+  fail "fails-before-items: rank 1's error not reported: $(cat fails-before-items/stderr.txt)"
+
 [ "$failures" -eq 0 ] && echo "cluster: all checks passed"
 exit $((failures > 0))

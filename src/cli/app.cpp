@@ -12,11 +12,11 @@
 #include <optional>
 #include <ostream>
 
-#include "aapat/work/checkpoint.h"
 #include "aapat/core/geometry.h"
-#include "aapat/work/work_items.h"
 #include "aapat/io/atomic_file.h"
 #include "aapat/version.h"
+#include "aapat/work/checkpoint.h"
+#include "aapat/work/work_items.h"
 #include "cli/commands.h"
 
 namespace aapat {
@@ -141,21 +141,24 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   add(add_hardware_table_command);
   add(add_study_command);
   add(add_sequence_command);
+  LocalEngine local;
+  WorkEngine& items = engine ? *engine : local;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // --help and --version exit 0; every mistake on the command line exits 2.
-    return app.exit(e, out, err) == 0 ? kExitOk : kExitUsage;
+    const int status = app.exit(e, out, err) == 0 ? kExitOk : kExitUsage;
+    std::string message = e.what();
+    return items.agree(status, message);  // every process ends here, or none
   } catch (...) {
-    err << "aapat: error: " << describe_current_exception() << "\n";
-    return kExitUsage;
+    std::string message = describe_current_exception();
+    err << "aapat: error: " << message << "\n";
+    return items.agree(kExitUsage, message);
   }
   g_warnings = &err;
   struct ResetWarnings {
     ~ResetWarnings() { g_warnings = nullptr; }
   } reset;
-  LocalEngine local;
-  WorkEngine& items = engine ? *engine : local;
   // An engine's own threads (an MPI rank's main thread) come on top of --threads.
   std::optional<tbb::global_control> limit;
   if (threads > 0 || items.service_threads() > 0)

@@ -278,9 +278,10 @@ void MpiEngine::run_root(std::vector<std::optional<std::string>>& results, const
         // A rank ended the command (it failed before reaching these items).
         const int status = r.get<int32_t>();
         std::string why = r.get_text();
+        if (status == 0)
+          why = "it ended without these work items (was every rank given the same command?)";
         final_seen_[m->from] = true;
-        finals_.emplace_back(m->from, why);
-        (void)status;
+        finals_.push_back({m->from, status == 0 ? 1 : status, why});
         if (left.empty()) left = fmt::format("rank {}: {}", m->from, why);
         outstanding[m->from] = 0;
         stopped[m->from] = true;
@@ -386,8 +387,11 @@ int MpiEngine::agree(int status, std::string& message) {
     int their = 1;
     std::string why;
     if (final_seen_[from]) {
-      for (const auto& [rank, text] : finals_)
-        if (rank == from) why = text;
+      for (const Final& f : finals_)
+        if (f.rank == from) {
+          their = f.status;
+          why = f.why;
+        }
     } else {
       while (true) {  // requests and results of a set rank 0 left are dropped
         const Message m = wait_for_message(from);

@@ -53,8 +53,12 @@ class MpiEngine final : public WorkEngine {
   std::vector<long> items_;
   double wall_ = 0, longest_ = 0;
   // Rank 0: the ranks whose final word (agree) already arrived inside run.
+  struct Final {
+    int rank = 0, status = 0;
+    std::string why;
+  };
   std::vector<bool> final_seen_;
-  std::vector<std::pair<int, std::string>> finals_;
+  std::vector<Final> finals_;
 };
 
 }  // namespace aapat

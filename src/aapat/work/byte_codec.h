@@ -29,7 +29,8 @@ class ByteWriter {
   template <class T>
   ByteWriter& put_all(const std::vector<T>& values) {
     put<uint64_t>(values.size());
-    bytes_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+    if (!values.empty())  // an empty vector's data() may be null
+      bytes_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
     return *this;
   }
   std::string take() { return std::move(bytes_); }
@@ -58,7 +59,7 @@ class ByteReader {
     const auto n = get<uint64_t>();
     if (n > bytes_.size() / sizeof(T)) fail();
     std::vector<T> values(n);
-    std::memcpy(values.data(), take(n * sizeof(T)), n * sizeof(T));
+    if (n > 0) std::memcpy(values.data(), take(n * sizeof(T)), n * sizeof(T));
     return values;
   }
   // Throws unless everything was read.
