@@ -72,12 +72,14 @@ check enumerate table.csv gallery.svg stdout.txt -- enumerate --cost 1.25,1.5 --
 check reference stdout.txt reference.png error.png -- render circles --pattern msaa-4 --size 48x40 \
   --reference-samples 64 --no-cache --json --reference reference.png --error error.png -o render.png
 check table3 stdout.txt -- table3 --patterns 40 --iterations 30 --json
+check figure10 f10.csv -- figure10 --starts 2 --csv f10.csv
+check hardware-table stdout.txt -- hardware-table --starts 2 --json
 check sequence best.json -- optimize --sequence 8 --starts 6 --seed 4 -o best.json
 check study table.md table.csv -- study --budgets 4 --patterns 8 --scenes circles spiral --size 24 \
   --frames 1 --starts 1 --resamples 50 --no-cache --table table.md --csv table.csv
 
 # A run killed midway resumes from its checkpoint to the same files.
-long=(optimize --family 'P(4,4,4)' --starts 1000 --seed 9 -o best.json)
+long=(optimize --family 'P(4,4,4)' --starts 2000 --seed 9 -o best.json)
 records() {
   local n
   n=$(grep -c '^item ' "$1" 2>/dev/null)
@@ -99,9 +101,9 @@ killed_run() {  # killed_run NAME SIGNAL LAUNCH...: start, wait for 20 finished 
   [ -e "$name/best.json" ] && fail "$name: the killed run left best.json"
   local done_items
   done_items=$(records "$name/ck")
-  [ "$done_items" -ge 20 ] && [ "$done_items" -lt 1000 ] ||
+  [ "$done_items" -ge 20 ] && [ "$done_items" -lt 2000 ] ||
     fail "$name: $done_items items in the checkpoint when killed"
-  echo "$name: killed (SIG$signal) with $done_items of 1000 starts in the checkpoint"
+  echo "$name: killed (SIG$signal) with $done_items of 2000 starts in the checkpoint"
 }
 run resume-ref -- "${long[@]}"
 killed_run resume-local KILL
@@ -120,7 +122,7 @@ mkdir -p dies
 pid=$!
 victim=""
 for _ in $(seq 200); do
-  for p in $(pgrep -f -- "--starts 1000 --seed 9"); do
+  for p in $(pgrep -f -- "--starts 2000 --seed 9"); do
     grep -qz '^OMPI_COMM_WORLD_RANK=2$' "/proc/$p/environ" 2>/dev/null && victim=$p
   done
   [ -n "$victim" ] && break

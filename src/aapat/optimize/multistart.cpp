@@ -84,27 +84,38 @@ double final_e2_of(const std::string& bytes) {
 
 }  // namespace
 
-MultiStartResult multistart(const Metric& metric, int starts, uint64_t seed,
-                            const SeedFunction& make_seed, const OptimizerSettings& settings,
-                            int threads, const ProgressFunction& progress) {
-  const Objective objective(metric);
-  std::optional<tbb::global_control> limit;
-  if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
+std::vector<MultiStartResult> multistart_all(const std::vector<MultiStartJob>& jobs,
+                                            const ProgressFunction& progress) {
+  // Item k is start k - first[j] of the job j whose range holds k.
+  std::vector<int> first = {0};
+  std::vector<Objective> objectives;
+  objectives.reserve(jobs.size());
+  for (const MultiStartJob& job : jobs) {
+    first.push_back(first.back() + job.starts);
+    objectives.emplace_back(*job.metric);
+  }
+  const auto job_of = [&](int item) {
+    return static_cast<size_t>(std::upper_bound(first.begin(), first.end(), item) - first.begin() -
+                               1);
+  };
   // Each start is a work item (work/work_items.h): it may run on another
   // process, or come from a checkpoint.
   double best_so_far = INFINITY;
   const std::vector<std::string> outcomes = run_work_items(
-      starts,
-      [&](int i) {
-        if (past(settings)) return skipped_start();
+      first.back(),
+      [&](int item) {
+        const size_t j = job_of(item);
+        const MultiStartJob& job = jobs[j];
+        const int i = item - first[j];
+        if (past(job.settings)) return skipped_start();
         const auto t0 = std::chrono::steady_clock::now();
-        Problem problem = make_seed(i);
+        Problem problem = job.make_seed(i);
         RunResult run;
-        if (settings.method == Method::kAnneal) {
-          auto rng = start_rng(seed ^ 0xa11ea1ULL, i);
-          run = anneal(objective, problem, settings, rng);
+        if (job.settings.method == Method::kAnneal) {
+          auto rng = start_rng(job.seed ^ 0xa11ea1ULL, i);
+          run = anneal(objectives[j], problem, job.settings, rng);
         } else {
-          run = descend(objective, problem, settings);
+          run = descend(objectives[j], problem, job.settings);
         }
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -114,54 +125,76 @@ MultiStartResult multistart(const Metric& metric, int starts, uint64_t seed,
         best_so_far = std::min(best_so_far, final_e2_of(result));
         if (progress) progress(done, total, best_so_far);
       });
-  MultiStartResult out;
-  std::vector<std::optional<Problem>> results(starts);
-  for (int i = 0; i < starts; ++i) {
-    Problem problem = make_seed(i);
-    if (auto record = decode_start(i, outcomes[static_cast<size_t>(i)], problem)) {
-      out.starts.push_back(*record);
-      results[static_cast<size_t>(i)] = std::move(problem);
+  std::vector<MultiStartResult> out(jobs.size());
+  std::vector<std::vector<std::optional<Problem>>> problems(jobs.size());
+  // The heuristic's best few starts of each job, polished by the minimax
+  // descent (each a work item; past the deadline an item keeps its start as
+  // it is); the lowest E2 after polishing wins, ties to the lower start.
+  std::vector<std::vector<int>> orders(jobs.size());
+  std::vector<std::pair<size_t, int>> polish_items;  // (job, rank among its starts)
+  for (size_t j = 0; j < jobs.size(); ++j) {
+    problems[j].resize(static_cast<size_t>(jobs[j].starts));
+    for (int i = 0; i < jobs[j].starts; ++i) {
+      Problem problem = jobs[j].make_seed(i);
+      if (auto record =
+              decode_start(i, outcomes[static_cast<size_t>(first[j] + i)], problem)) {
+        out[j].starts.push_back(*record);
+        problems[j][static_cast<size_t>(i)] = std::move(problem);
+      }
     }
+    std::vector<int>& order = orders[j];
+    for (size_t k = 0; k < out[j].starts.size(); ++k) order.push_back(static_cast<int>(k));
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      return out[j].starts[a].run.final_e2 < out[j].starts[b].run.final_e2;
+    });
+    const OptimizerSettings& settings = jobs[j].settings;
+    const bool polish = settings.polish && settings.method == Method::kDescent;
+    const int polished = polish ? std::min<int>(settings.polish_count, order.size()) : 0;
+    for (int r = 0; r < polished; ++r) polish_items.emplace_back(j, r);
   }
-  if (out.starts.empty()) return out;
-  // The heuristic's best few starts, polished by the minimax descent (each a
-  // work item; past the deadline an item keeps its start as it is); the
-  // lowest E2 after polishing wins, ties to the lower start.
-  std::vector<int> order(out.starts.size());
-  for (size_t j = 0; j < order.size(); ++j) order[j] = static_cast<int>(j);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return out.starts[a].run.final_e2 < out.starts[b].run.final_e2;
-  });
-  const bool polish = settings.polish && settings.method == Method::kDescent;
-  const int polished = polish ? std::min<int>(settings.polish_count, order.size()) : 0;
-  const std::vector<std::string> polishes = run_work_items(polished, [&](int r) {
-    const StartRecord& rec = out.starts[order[r]];
-    Problem problem = *results[rec.start];
-    StartRecord after = rec;
-    if (!past(settings)) {
-      OptimizerSettings minimax = settings;
-      minimax.method = Method::kMinimax;
-      const RunResult more = descend(objective, problem, minimax);
-      after.run.final_e2 = more.final_e2;
-      after.run.iterations += more.iterations;
-      after.run.evaluations += more.evaluations;
-    }
-    return encode_start(after, problem);
-  });
-  std::vector<double> before(polished);
-  for (int r = 0; r < polished; ++r) {
-    StartRecord& rec = out.starts[order[r]];
-    before[r] = rec.run.final_e2;
-    Problem& problem = *results[rec.start];
-    rec = *decode_start(rec.start, polishes[static_cast<size_t>(r)], problem);
+  const std::vector<std::string> polishes =
+      run_work_items(static_cast<int>(polish_items.size()), [&](int k) {
+        const auto [j, r] = polish_items[static_cast<size_t>(k)];
+        const StartRecord& rec = out[j].starts[orders[j][r]];
+        Problem problem = *problems[j][rec.start];
+        StartRecord after = rec;
+        if (!past(jobs[j].settings)) {
+          OptimizerSettings minimax = jobs[j].settings;
+          minimax.method = Method::kMinimax;
+          const RunResult more = descend(objectives[j], problem, minimax);
+          after.run.final_e2 = more.final_e2;
+          after.run.iterations += more.iterations;
+          after.run.evaluations += more.evaluations;
+        }
+        return encode_start(after, problem);
+      });
+  std::vector<std::vector<double>> before(jobs.size());
+  for (size_t k = 0; k < polish_items.size(); ++k) {
+    const auto [j, r] = polish_items[k];
+    StartRecord& rec = out[j].starts[orders[j][r]];
+    before[j].push_back(rec.run.final_e2);
+    rec = *decode_start(rec.start, polishes[k], *problems[j][rec.start]);
   }
-  for (size_t j = 0; j < out.starts.size(); ++j)
-    if (out.best < 0 || out.starts[j].run.final_e2 < out.starts[out.best].run.final_e2)
-      out.best = static_cast<int>(j);
-  out.best_problem = *results[out.starts[out.best].start];
-  for (int r = 0; r < polished; ++r)
-    if (order[r] == out.best) out.polished_from = before[r];
+  for (size_t j = 0; j < jobs.size(); ++j) {
+    MultiStartResult& result = out[j];
+    if (result.starts.empty()) continue;
+    for (size_t k = 0; k < result.starts.size(); ++k)
+      if (result.best < 0 ||
+          result.starts[k].run.final_e2 < result.starts[result.best].run.final_e2)
+        result.best = static_cast<int>(k);
+    result.best_problem = *problems[j][result.starts[result.best].start];
+    for (size_t r = 0; r < before[j].size(); ++r)
+      if (orders[j][r] == result.best) result.polished_from = before[j][r];
+  }
   return out;
+}
+
+MultiStartResult multistart(const Metric& metric, int starts, uint64_t seed,
+                            const SeedFunction& make_seed, const OptimizerSettings& settings,
+                            int threads, const ProgressFunction& progress) {
+  std::optional<tbb::global_control> limit;
+  if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
+  return multistart_all({{&metric, starts, seed, make_seed, settings}}, progress).front();
 }
 
 }  // namespace aapat

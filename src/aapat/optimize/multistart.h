@@ -46,6 +46,21 @@ MultiStartResult multistart(const Metric& metric, int starts, uint64_t seed,
                             const SeedFunction& make_seed, const OptimizerSettings& settings,
                             int threads, const ProgressFunction& progress = {});
 
+// One search of several run at once (multistart_all).
+struct MultiStartJob {
+  const Metric* metric = nullptr;
+  int starts = 0;
+  uint64_t seed = 0;
+  SeedFunction make_seed;
+  OptimizerSettings settings;
+};
+// Several searches as one set of work items (every start of every job), then
+// one set of polishes: result j is what multistart gives job j alone, with no
+// wait between the searches (the ranks of a cluster run all of them at once).
+// Progress counts the starts of all jobs.
+std::vector<MultiStartResult> multistart_all(const std::vector<MultiStartJob>& jobs,
+                                             const ProgressFunction& progress = {});
+
 // A problem's values (positions, freedoms, weights) as bytes, and back onto a
 // problem of the same structure (rebuilt from its seed function): how a
 // search's result travels as a work item's result.

@@ -73,17 +73,24 @@ std::vector<StudyPattern> budget_patterns(const StudySettings& s,
     if (one_pixel(p, n)) out.push_back({spec, "included", p, {}, {}, {}});
   }
   const FamilySpec family = parse_family(fmt::format("P(1,1,{})", n), "");
+  // One search per objective, all their starts at once (multistart_all).
+  std::vector<Metric> metrics;
+  metrics.reserve(objectives.size());  // the jobs point at them
+  std::vector<MultiStartJob> jobs;
   for (const StudyObjective& o : objectives) {
-    const Metric metric(make_filter(o.filter), make_acuity(o.acuity), o.norm);
+    const Metric& metric =
+        metrics.emplace_back(make_filter(o.filter), make_acuity(o.acuity), o.norm);
     OptimizerSettings settings;
     settings.method = o.norm == Metric::kMaxNorm ? Method::kSlsqp : Method::kDescent;
     settings.max_iterations = o.norm == Metric::kMaxNorm ? 1000 : 4000;
-    const MultiStartResult r =
-        multistart(metric, s.starts, s.seed,
-                   family_seeds(family, SeedKind::kJittered, s.seed, metric.filter()), settings, 0);
-    Pattern p = pattern_of(r.best_problem);
-    p.name = fmt::format("opt-{}-{}", n, o.name());
-    out.push_back({p.name, "optimized for " + o.name(), p, {}, {}, {}});
+    jobs.push_back({&metric, s.starts, s.seed,
+                    family_seeds(family, SeedKind::kJittered, s.seed, metric.filter()), settings});
+  }
+  const std::vector<MultiStartResult> searches = multistart_all(jobs);
+  for (size_t k = 0; k < objectives.size(); ++k) {
+    Pattern p = pattern_of(searches[k].best_problem);
+    p.name = fmt::format("opt-{}-{}", n, objectives[k].name());
+    out.push_back({p.name, "optimized for " + objectives[k].name(), p, {}, {}, {}});
   }
   const std::vector<std::string> generators = {"random", "n-rooks", "poisson", "best-candidate",
                                                "semi-jittered:amount=0.7"};

@@ -154,8 +154,14 @@ Figure10 figure10(const Metric& metric, const Figure10Settings& settings,
   check_count(settings.starts, 100000, "starts");
   Figure10 fig;
   const std::vector<std::string> families = {"P(1,1,{})", "P(4,1+,{})", "P(1,4,{})", "P(4,4,{})"};
-  int total = 0, done = 0;
-  for (const auto& f : families) total += f == "P(4,1+,{})" ? 8 : 5;
+  // Every (family, n, placement) search at once (multistart_all): their
+  // starts are one set of work items, the best per (family, n) taken after.
+  struct Search {
+    Figure10Point point;  // family, placement, n, series
+    size_t point_index;   // into fig.points
+  };
+  std::vector<Search> searches;
+  std::vector<MultiStartJob> jobs;
   for (const auto& f : families) {
     const bool mirrored = f == "P(4,1+,{})";
     fig.series.push_back(fmt::vformat(f, fmt::make_format_args("n")));
@@ -164,20 +170,27 @@ Figure10 figure10(const Metric& metric, const Figure10Settings& settings,
     for (double n : ns) {
       const std::string fam = fmt::vformat(f, fmt::make_format_args(format_cost(n)));
       const int series = static_cast<int>(fig.series.size()) - 1;
-      Figure10Point best{fam, "", n, INFINITY, series};
+      fig.points.push_back({fam, "", n, INFINITY, series});
       for (const auto& placement :
            mirrored ? figure10_placements(n) : std::vector<std::string>{""}) {
         const FamilySpec spec = parse_family(fam, placement);
-        const MultiStartResult r =
-            multistart(metric, settings.starts, settings.seed,
-                       family_seeds(spec, SeedKind::kJittered, settings.seed, metric.filter()),
-                       OptimizerSettings{}, 0);
-        const double e2 = r.starts[r.best].run.final_e2;
-        if (e2 < best.e2) best = {fam, placement, n, e2, series};
+        searches.push_back({{fam, placement, n, INFINITY, series}, fig.points.size() - 1});
+        jobs.push_back({&metric, settings.starts, settings.seed,
+                        family_seeds(spec, SeedKind::kJittered, settings.seed, metric.filter()),
+                        OptimizerSettings{}});
       }
-      fig.points.push_back(best);
-      if (progress) progress(++done, total, fmt::format("{} {:.4f}", fam, best.e2));
     }
+  }
+  const std::vector<MultiStartResult> results =
+      multistart_all(jobs, [&](int done, int total, double best) {
+        if (progress) progress(done, total, fmt::format("best E2 {:.4f}", best));
+      });
+  for (size_t k = 0; k < searches.size(); ++k) {
+    const MultiStartResult& r = results[k];
+    Figure10Point point = searches[k].point;
+    point.e2 = r.starts[r.best].run.final_e2;
+    Figure10Point& best = fig.points[searches[k].point_index];
+    if (point.e2 < best.e2) best = point;
   }
   return fig;
 }
