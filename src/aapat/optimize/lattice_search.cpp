@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "aapat/work/byte_codec.h"
 #include "aapat/core/lattice.h"
-#include "aapat/work/work_items.h"
 #include "aapat/optimize/descent.h"
 #include "aapat/optimize/family.h"
 #include "aapat/optimize/multistart.h"
 #include "aapat/optimize/objective.h"
+#include "aapat/work/byte_codec.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 namespace {

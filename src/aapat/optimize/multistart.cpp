@@ -85,7 +85,7 @@ double final_e2_of(const std::string& bytes) {
 }  // namespace
 
 std::vector<MultiStartResult> multistart_all(const std::vector<MultiStartJob>& jobs,
-                                            const ProgressFunction& progress) {
+                                             const ProgressFunction& progress) {
   // Item k is start k - first[j] of the job j whose range holds k.
   std::vector<int> first = {0};
   std::vector<Objective> objectives;
@@ -136,8 +136,7 @@ std::vector<MultiStartResult> multistart_all(const std::vector<MultiStartJob>& j
     problems[j].resize(static_cast<size_t>(jobs[j].starts));
     for (int i = 0; i < jobs[j].starts; ++i) {
       Problem problem = jobs[j].make_seed(i);
-      if (auto record =
-              decode_start(i, outcomes[static_cast<size_t>(first[j] + i)], problem)) {
+      if (auto record = decode_start(i, outcomes[static_cast<size_t>(first[j] + i)], problem)) {
         out[j].starts.push_back(*record);
         problems[j][static_cast<size_t>(i)] = std::move(problem);
       }

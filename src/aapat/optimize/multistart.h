@@ -9,11 +9,11 @@
 #include <functional>
 #include <vector>
 
-#include "aapat/work/byte_codec.h"
 #include "aapat/core/metric.h"
 #include "aapat/optimize/family.h"
 #include "aapat/optimize/problem.h"
 #include "aapat/optimize/settings.h"
+#include "aapat/work/byte_codec.h"
 
 namespace aapat {
 

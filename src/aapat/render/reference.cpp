@@ -2,8 +2,8 @@
 
 #include <cstring>
 
-#include "aapat/work/byte_codec.h"
 #include "aapat/core/filter_catalog.h"
+#include "aapat/work/byte_codec.h"
 #include "aapat/work/work_items.h"
 
 namespace aapat {

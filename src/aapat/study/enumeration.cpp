@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "aapat/work/work_items.h"
 #include "aapat/optimize/multistart.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 

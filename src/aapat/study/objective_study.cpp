@@ -9,10 +9,8 @@
 #include <numeric>
 
 #include "aapat/core/acuity.h"
-#include "aapat/work/byte_codec.h"
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/metric.h"
-#include "aapat/work/work_items.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/pattern_json.h"
@@ -22,6 +20,8 @@
 #include "aapat/render/image_error.h"
 #include "aapat/render/renderer.h"
 #include "aapat/render/ssim.h"
+#include "aapat/work/byte_codec.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 namespace {

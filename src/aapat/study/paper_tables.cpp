@@ -8,14 +8,14 @@
 #include <cmath>
 #include <mutex>
 
-#include "aapat/work/byte_codec.h"
 #include "aapat/core/hardware_layout.h"
 #include "aapat/core/lattice.h"
-#include "aapat/work/work_items.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/optimize/descent.h"
 #include "aapat/optimize/lattice_search.h"
 #include "aapat/optimize/multistart.h"
+#include "aapat/work/byte_codec.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 namespace {
