@@ -70,13 +70,14 @@ std::vector<std::string> run_work_items(int count, const ItemWork& work,
   const int call = top ? session->calls++ : -1;
   Checkpoint* checkpoint = top ? session->checkpoint : nullptr;
   int done = 0;
-  if (checkpoint) checkpoint->begin(call, count);
-  if (checkpoint)
+  if (checkpoint) {
+    checkpoint->begin(call, count);
     for (int i = 0; i < count; ++i)
       if (auto& r = results[static_cast<size_t>(i)]; (r = checkpoint->find(call, i))) {
         ++done;
         if (progress) progress(done, count, *r);
       }
+  }
   const WorkEngine::Finished finished = [&](int item, const std::string& result) {
     if (checkpoint && !result.empty()) checkpoint->record(call, item, result);
     ++done;
