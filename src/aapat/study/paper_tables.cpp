@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <map>
 #include <mutex>
 
 #include "aapat/core/hardware_layout.h"
@@ -77,19 +78,6 @@ struct Figures {
   double continuous = 0, lattice = 0;
   std::string layout;
 };
-
-// A family searched continuously, then on the lattice from there.
-Figures search(const Metric& metric, const std::string& family, const ApiProfile& profile,
-               int starts, uint64_t seed) {
-  const FamilySpec spec = parse_family(family, "");
-  const SeedFunction seeds = family_seeds(spec, SeedKind::kJittered, seed, metric.filter());
-  const OptimizerSettings settings;
-  const MultiStartResult r = multistart(metric, starts, seed, seeds, settings, 0);
-  const LatticeSearch lat =
-      lattice_search_from(metric, r.best_problem, seeds, starts, seed, kLatticeSteps, settings);
-  return {r.starts[r.best].run.final_e2, lat.run.final_e2,
-          layout_text(pattern_of(lat.best), profile)};
-}
 
 // A pattern snapped, its weights optimized, then searched on the lattice from there.
 Figures snapped(const Metric& metric, const Pattern& p, const ApiProfile& profile) {
@@ -199,19 +187,78 @@ std::vector<HardwareTableRow> hardware_table(const Metric& metric,
                                              const HardwareTableSettings& settings,
                                              const StudyProgress& progress) {
   check_count(settings.starts, 100000, "starts");
-  std::vector<HardwareTableRow> rows;
   const ApiProfile &tier1 = api_profile("d3d12-tier1"), &tier2 = api_profile("d3d12-tier2");
-  auto row = [&](const std::string& n, const std::string& what, const ApiProfile& profile,
-                 const Figures& f) {
-    rows.push_back({n, what, profile.name, f.layout, f.continuous, f.lattice});
-  };
+  const std::vector<int> counts = {2, 4, 8, 16};
+  const std::vector<std::string> hasselgren = {"hasselgren-a",       "hasselgren-b", "hasselgren-c",
+                                               "hasselgren-d",       "hasselgren-e", "hasselgren-f",
+                                               "quincunx-hasselgren"};
   int done = 0;
   const int total = 4 * 3 + 2 + 7;
   auto report = [&](int step, const std::string& note) {
     done += step;
     if (progress) progress(done, total, note);
   };
-  for (int n : {2, 4, 8, 16}) {
+  // The searches, all their starts as one set of work items (multistart_all),
+  // then each one's lattice search: P(1,1,n) on tier 1, P(4,4,n) on tier 2.
+  std::vector<std::string> families;
+  std::vector<const ApiProfile*> profiles;
+  for (int n : counts) {
+    families.push_back(fmt::format("P(1,1,{})", n));
+    profiles.push_back(&tier1);
+    if (n <= 4) {
+      families.push_back(fmt::format("P(4,4,{})", n));
+      profiles.push_back(&tier2);
+    }
+  }
+  std::vector<SeedFunction> seeds;
+  std::vector<MultiStartJob> jobs;
+  for (const std::string& family : families) {
+    seeds.push_back(family_seeds(parse_family(family, ""), SeedKind::kJittered, settings.seed,
+                                 metric.filter()));
+    jobs.push_back({&metric, settings.starts, settings.seed, seeds.back(), OptimizerSettings{}});
+  }
+  const std::vector<MultiStartResult> found = multistart_all(jobs);
+  std::map<std::string, Figures> searched;
+  for (size_t k = 0; k < families.size(); ++k) {
+    const MultiStartResult& r = found[k];
+    const LatticeSearch lat =
+        lattice_search_from(metric, r.best_problem, seeds[k], settings.starts, settings.seed,
+                            kLatticeSteps, OptimizerSettings{});
+    searched[families[k]] = {r.starts[r.best].run.final_e2, lat.run.final_e2,
+                             layout_text(pattern_of(lat.best), *profiles[k])};
+    report(1, families[k]);
+  }
+  // The standard and Hasselgren's patterns snapped and descended on the
+  // lattice, one work item each.
+  std::vector<std::string> names;
+  for (int n : counts) names.push_back(fmt::format("msaa-{}", n));
+  names.insert(names.end(), hasselgren.begin(), hasselgren.end());
+  const auto profile_of = [&](const Pattern& p) -> const ApiProfile& {
+    return p.tile_w == 1 ? tier1 : tier2;
+  };
+  const std::vector<std::string> snaps = run_work_items(static_cast<int>(names.size()), [&](int k) {
+    const Pattern p = catalog_pattern(names[static_cast<size_t>(k)]);
+    const Figures f = snapped(metric, p, profile_of(p));
+    ByteWriter w;
+    w.put(f.continuous).put(f.lattice).put_text(f.layout);
+    return w.take();
+  });
+  std::map<std::string, Figures> snapped_figures;
+  for (size_t k = 0; k < names.size(); ++k) {
+    ByteReader r(snaps[k]);
+    Figures& f = snapped_figures[names[k]];
+    f.continuous = r.get<double>();
+    f.lattice = r.get<double>();
+    f.layout = r.get_text();
+    r.finish();
+  }
+
+  std::vector<HardwareTableRow> rows;
+  auto row = [&](const std::string& n, const std::string& what, const ApiProfile& profile,
+                 const Figures& f) {
+    rows.push_back({n, what, profile.name, f.layout, f.continuous, f.lattice});
+  };
+  for (int n : counts) {
     const std::string count = std::to_string(n);
     const Pattern msaa = catalog_pattern(fmt::format("msaa-{}", n));
     const double box = metric.evaluate(msaa).e2;
@@ -222,28 +269,22 @@ std::vector<HardwareTableRow> hardware_table(const Metric& metric,
         {w, w, layout_text(msaa, tier1)});
     report(2, fmt::format("msaa-{}", n));
     // The search's local optima, or the standard pattern polished on the lattice.
-    Figures best =
-        search(metric, fmt::format("P(1,1,{})", n), tier1, settings.starts, settings.seed);
-    const Figures polished = snapped(metric, msaa, tier1);
+    Figures best = searched.at(fmt::format("P(1,1,{})", n));
+    const Figures& polished = snapped_figures.at(fmt::format("msaa-{}", n));
     const bool from_standard = polished.lattice < best.lattice;
     if (from_standard) best.lattice = polished.lattice;
     row(count,
         fmt::format("best P(1,1,{}){}", n,
                     from_standard ? " (msaa-" + count + " polished on the lattice)" : ""),
         tier1, best);
-    report(1, fmt::format("P(1,1,{})", n));
-    if (n <= 4) {
+    if (n <= 4)
       row(count, fmt::format("best P(4,4,{}) (2x2-pixel kernels)", n), tier2,
-          search(metric, fmt::format("P(4,4,{})", n), tier2, settings.starts, settings.seed));
-      report(1, fmt::format("P(4,4,{})", n));
-    }
+          searched.at(fmt::format("P(4,4,{})", n)));
   }
-  for (const char* name : {"hasselgren-a", "hasselgren-b", "hasselgren-c", "hasselgren-d",
-                           "hasselgren-e", "hasselgren-f", "quincunx-hasselgren"}) {
+  for (const std::string& name : hasselgren) {
     const Pattern p = catalog_pattern(name);
-    const ApiProfile& profile = p.tile_w == 1 ? tier1 : tier2;
-    row(format_cost(samples_per_pixel(p)), fmt::format("{} snapped, then searched", name), profile,
-        snapped(metric, p, profile));
+    row(format_cost(samples_per_pixel(p)), fmt::format("{} snapped, then searched", name),
+        profile_of(p), snapped_figures.at(name));
     report(1, name);
   }
   return rows;
