@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 
+#include "aapat/core/hash.h"
 #include "aapat/io/atomic_file.h"
 #include "aapat/work/work_items.h"
 
@@ -16,12 +17,6 @@ namespace aapat {
 namespace {
 
 constexpr std::string_view kMagic = "aapat-reference 1\n";
-
-uint64_t fnv1a(std::string_view text) {
-  uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
-  return h;
-}
 
 std::string key_text(const Scene& scene, int width, int height, const ReferenceSettings& r,
                      double offset) {

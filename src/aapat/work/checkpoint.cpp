@@ -10,17 +10,12 @@
 #include <sstream>
 
 #include "aapat/core/geometry.h"
+#include "aapat/core/hash.h"
 
 namespace aapat {
 namespace {
 
 constexpr std::string_view kMagic = "aapat-checkpoint 1\n";
-
-uint64_t fnv1a(std::string_view bytes) {
-  uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
-  return h;
-}
 
 // The command on one line: newlines in arguments would end it early.
 std::string one_line(std::string text) {
@@ -93,8 +88,12 @@ Checkpoint::Checkpoint(std::string path, std::string fingerprint) : path_(std::m
   if (!file_)
     throw Error(fmt::format("--checkpoint {}: cannot be written: {}", path_, std::strerror(errno)));
   if (keep == 0) {
-    std::fwrite(header.data(), 1, header.size(), file_);
-    std::fflush(file_);
+    try {
+      append({header});
+    } catch (...) {  // no destructor runs for a constructor that throws
+      std::fclose(file_);
+      throw;
+    }
   }
 }
 
@@ -114,9 +113,7 @@ void Checkpoint::begin(int call, int count) {
   }
   counts_[call] = count;
   const std::string line = fmt::format("set {} {}\n", call, count);
-  std::fwrite(line.data(), 1, line.size(), file_);
-  if (std::fflush(file_) != 0)
-    throw Error(fmt::format("--checkpoint {}: cannot be written: {}", path_, std::strerror(errno)));
+  append({line});
 }
 
 std::optional<std::string> Checkpoint::find(int call, int item) const {
@@ -128,10 +125,14 @@ std::optional<std::string> Checkpoint::find(int call, int item) const {
 void Checkpoint::record(int call, int item, std::string_view result) {
   const std::string head =
       fmt::format("item {} {} {} {:x}\n", call, item, result.size(), fnv1a(result));
-  std::fwrite(head.data(), 1, head.size(), file_);
-  std::fwrite(result.data(), 1, result.size(), file_);
-  std::fputc('\n', file_);
-  if (std::fflush(file_) != 0)
+  append({head, result, "\n"});
+}
+
+void Checkpoint::append(std::initializer_list<std::string_view> pieces) {
+  bool written = true;
+  for (const std::string_view piece : pieces)
+    written = std::fwrite(piece.data(), 1, piece.size(), file_) == piece.size() && written;
+  if (std::fflush(file_) != 0 || !written)
     throw Error(fmt::format("--checkpoint {}: cannot be written: {}", path_, std::strerror(errno)));
 }
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdio>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <string>
@@ -41,6 +42,9 @@ class Checkpoint {
   const std::string& path() const { return path_; }
 
  private:
+  // Writes the pieces and flushes them to the operating system; throws Error.
+  void append(std::initializer_list<std::string_view> pieces);
+
   std::string path_;
   std::map<std::pair<int, int>, std::string> items_;
   std::map<int, int> counts_;  // items per set
