@@ -23,17 +23,26 @@ fail() {
   failures=$((failures + 1))
 }
 
+# before_dashes ARRAY ARGS...: ARRAY gets ARGS up to the first "--"; the
+# caller then shifts ${#ARRAY[@]} + 1 to reach what follows it.
+before_dashes() {
+  local -n into=$1
+  shift
+  into=()
+  while [ "$1" != "--" ]; do
+    into+=("$1")
+    shift
+  done
+}
+
 # run NAME LAUNCH... -- ARGS...: the command's outputs go to NAME/ (stdout as
 # stdout.txt); LAUNCH is empty (one process) or an mpirun prefix.
 run() {
   local name=$1
   shift
-  local launch=()
-  while [ "$1" != "--" ]; do
-    launch+=("$1")
-    shift
-  done
-  shift
+  local launch
+  before_dashes launch "$@"
+  shift $((${#launch[@]} + 1))
   mkdir -p "$name"
   (cd "$name" && "${launch[@]}" "$aapat" "$@" >stdout.txt 2>stderr.txt) ||
     { fail "$name exited $?: $(tail -3 "$name/stderr.txt")"; return; }
@@ -48,12 +57,9 @@ same() {  # same REFERENCE OTHER FILE...
 check() {  # check NAME FILES... -- ARGS...: every scale against one process
   local name=$1
   shift
-  local files=()
-  while [ "$1" != "--" ]; do
-    files+=("$1")
-    shift
-  done
-  shift
+  local files
+  before_dashes files "$@"
+  shift $((${#files[@]} + 1))
   run "$name-ref" -- "$@"
   run "$name-np1" mpirun -np 1 -- "$@"
   run "$name-np2" mpirun -np 2 -- --threads 1 "$@"
@@ -143,9 +149,9 @@ echo "a dead rank: exit $status, $(grep -m1 'rank 2' dies/stderr.txt)"
 one_rank_fails() {  # one_rank_fails NAME EXPECTED_STATUS ARGS_OF_RANK_0 -- ARGS_OF_RANK_1
   local name=$1 expected=$2
   shift 2
-  local first=()
-  while [ "$1" != "--" ]; do first+=("$1"); shift; done
-  shift
+  local first
+  before_dashes first "$@"
+  shift $((${#first[@]} + 1))
   mkdir -p "$name"
   (cd "$name" && timeout 120 mpirun -np 1 "$aapat" "${first[@]}" : -np 1 "$aapat" "$@" \
     >stdout.txt 2>stderr.txt)
