@@ -1,6 +1,6 @@
 #include "aapat/render/reference.h"
 
-#include <cstring>
+#include <algorithm>
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/work/byte_codec.h"
