@@ -27,7 +27,7 @@ Problem seeded(const FamilySpec& spec, uint64_t seed, int i) {
 // One heuristic iteration = a direction (all terms' gradients) and a trial E2.
 void HeuristicIterations(benchmark::State& state, const char* family, const char* placement) {
   const FamilySpec spec = parse_family(family, placement);
-  const Objective objective(metric());
+  const ProblemE2 objective(metric());
   OptimizerSettings s;
   s.max_iterations = 200;
   s.tolerance = 0;  // run the full 200 iterations
@@ -49,7 +49,7 @@ BENCHMARK_CAPTURE(HeuristicIterations, p16_16_4, "P(16,16,4)", "")->Unit(benchma
 // Random starts, one after another (one thread), until E2 < 0.36.
 void TimeToReach036(benchmark::State& state) {
   const FamilySpec spec = parse_family("P(4,1+,2)", "left,right,bottom,top");
-  const Objective objective(metric());
+  const ProblemE2 objective(metric());
   double starts = 0;
   uint64_t seed = 1;
   for (auto _ : state) {

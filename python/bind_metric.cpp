@@ -4,11 +4,15 @@
 
 #include <tbb/task_arena.h>
 
+#include <cmath>
 #include <deque>
+#include <optional>
 
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter_catalog.h"
+#include "aapat/core/point_checks.h"
 #include "aapat/study/batch_e2.h"
+#include "aapat/work/work_items.h"
 #include "bindings.h"
 
 namespace aapat::python {
@@ -18,20 +22,51 @@ const char* with_metric_args(const char* text) {
   return kept.emplace_back(std::string(text) + kMetricArgs).c_str();
 }
 
-Metric make_metric(const py::object& filter, const py::object& acuity, double norm) {
-  Filter f = py::isinstance<Filter>(filter) ? filter.cast<Filter>()
-                                            : make_filter(filter.cast<std::string>());
-  AcuityTable a = py::isinstance<AcuityTable>(acuity) ? acuity.cast<AcuityTable>()
-                                                      : make_acuity(acuity.cast<std::string>());
-  return Metric(std::move(f), std::move(a), norm);
+namespace {
+
+std::optional<std::string> spec_of(const py::object& value, const char* what) {
+  if (value.is_none()) return std::nullopt;
+  if (py::isinstance<Filter>(value)) return value.cast<const Filter&>().name();
+  if (py::isinstance<AcuityTable>(value)) return value.cast<const AcuityTable&>().name;
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  throw Error(fmt::format("{}: expected a spec (str), an aapat.{} or None, not {}", what,
+                          std::string(what) == "filter" ? "Filter" : "AcuityTable",
+                          py::str(py::type::of(value).attr("__name__")).cast<std::string>()));
+}
+
+}  // namespace
+
+Objective make_objective(const py::object& objective, const py::object& filter,
+                         const py::object& acuity, const py::object& norm) {
+  if (!py::isinstance<py::str>(objective))
+    throw Error("objective: expected a name or spec (str), e.g. 'recommended' or 'laine-aila'");
+  std::optional<double> p;
+  if (py::isinstance<py::str>(norm)) {
+    p = parse_norm(norm.cast<std::string>(), "norm");
+  } else if (!norm.is_none()) {
+    if (!py::isinstance<py::float_>(norm) && !py::isinstance<py::int_>(norm))
+      throw Error("norm: expected a number, 'inf' or None");
+    p = norm.cast<double>();
+  }
+  return override_objective(parse_objective(objective.cast<std::string>(), "objective"),
+                            spec_of(filter, "filter"), spec_of(acuity, "acuity"), p);
+}
+
+py::object to_python(const JsonObject& json) {
+  return py::module_::import("json").attr("loads")(json_text(json));
+}
+
+void check_samples(const Array& xy, const char* what) {
+  check_in_pixel({xy.data(), static_cast<size_t>(xy.size())}, what);
 }
 
 namespace {
 
 // E2 of every one-pixel pattern of an (m, n, 2) array, weights (m, n), (n,) or None.
 Array batch_eval(const Metric& metric, const Array& xy, const py::object& weights, int threads) {
-  if (xy.ndim() != 3 || xy.shape(2) != 2)
-    throw Error("eval: expected an (m, n, 2) array of m patterns of n samples");
+  if (xy.ndim() != 3 || xy.shape(2) != 2 || xy.shape(1) < 1)
+    throw Error("eval: expected an (m, n, 2) array of m patterns of n >= 1 samples");
+  check_samples(xy, "eval");
   const size_t m = static_cast<size_t>(xy.shape(0)), n = static_cast<size_t>(xy.shape(1));
   std::vector<double> w;
   if (!weights.is_none()) {
@@ -44,12 +79,13 @@ Array batch_eval(const Metric& metric, const Array& xy, const py::object& weight
     } else {
       throw Error(fmt::format("eval: weights must be ({}, {}) or ({},)", m, n, n));
     }
+    for (double v : w)
+      if (!std::isfinite(v)) throw Error("eval: weights must be finite numbers");
   }
   Array out(static_cast<py::ssize_t>(m));
   std::span<double> e2(out.mutable_data(), m);
   const std::span<const double> coords(xy.data(), m * n * 2);
-  if (threads < 0)
-    throw Error(fmt::format("eval: threads {} must be 0 (all cores) or more", threads));
+  check_threads(threads, "eval: threads");
   {
     py::gil_scoped_release release;
     if (threads == 0) {
@@ -64,8 +100,9 @@ Array batch_eval(const Metric& metric, const Array& xy, const py::object& weight
 
 // The profiles of every one-pixel pattern of an (m, n, 2) array, equal weights.
 py::dict batch_profiles(const Metric& metric, const Array& xy) {
-  if (xy.ndim() != 3 || xy.shape(2) != 2)
-    throw Error("profile: expected an (m, n, 2) array of m patterns of n samples");
+  if (xy.ndim() != 3 || xy.shape(2) != 2 || xy.shape(1) < 1)
+    throw Error("profile: expected an (m, n, 2) array of m patterns of n >= 1 samples");
+  check_samples(xy, "profile");
   const size_t m = static_cast<size_t>(xy.shape(0)), n = static_cast<size_t>(xy.shape(1));
   const size_t angles = static_cast<size_t>(metric.angle_count());
   Array values({static_cast<py::ssize_t>(m), static_cast<py::ssize_t>(angles)});
@@ -114,9 +151,10 @@ void bind_metric(py::module_& m) {
 
   m.def(
       "eval",
-      [](const py::object& patterns, const py::object& weights, const py::object& filter,
-         const py::object& acuity, double norm, int threads) -> py::object {
-        const Metric metric = make_metric(filter, acuity, norm);
+      [](const py::object& patterns, const py::object& weights, int threads,
+         const py::object& objective, const py::object& filter, const py::object& acuity,
+         const py::object& norm) -> py::object {
+        const Metric metric = make_metric(objective, filter, acuity, norm);
         if (py::isinstance<py::array>(patterns)) {
           const Array xy = patterns.cast<Array>();
           if (xy.ndim() == 2) {  // one pattern
@@ -137,8 +175,8 @@ void bind_metric(py::module_& m) {
         }
         return py::float_(metric.evaluate(to_pattern(patterns)).e2);
       },
-      py::arg("patterns"), py::arg("weights") = py::none(), py::arg("filter") = "mitchell",
-      py::arg("acuity") = "laine-aila", py::arg("norm") = Metric::kMaxNorm, py::arg("threads") = 0,
+      py::arg("patterns"), py::arg("weights") = py::none(), py::arg("threads") = 0,
+      AAPAT_OBJECTIVE_ARGS,
       with_metric_args(R"doc(E2 of patterns under the Laine-Aila weighted error metric.
 
     patterns: a catalog name or pattern file, an aapat.Pattern, a list of those
@@ -153,9 +191,9 @@ void bind_metric(py::module_& m) {
 
   m.def(
       "profile",
-      [](const py::object& pattern, const py::object& filter, const py::object& acuity,
-         double norm) -> py::dict {
-        const Metric metric = make_metric(filter, acuity, norm);
+      [](const py::object& pattern, const py::object& objective, const py::object& filter,
+         const py::object& acuity, const py::object& norm) -> py::dict {
+        const Metric metric = make_metric(objective, filter, acuity, norm);
         if (py::isinstance<py::array>(pattern))
           return batch_profiles(metric, pattern.cast<Array>());
         const Pattern p = to_pattern(pattern);
@@ -172,8 +210,7 @@ void bind_metric(py::module_& m) {
                         py::arg("worst_kernel") = e.worst_kernel,
                         py::arg("worst_angle_deg") = e.worst_angle_deg);
       },
-      py::arg("pattern"), py::arg("filter") = "mitchell", py::arg("acuity") = "laine-aila",
-      py::arg("norm") = Metric::kMaxNorm,
+      py::arg("pattern"), AAPAT_OBJECTIVE_ARGS,
       with_metric_args(R"doc(The per-angle profile W(theta) E1(theta) of every kernel of a pattern.
 
 Returns a dict: angles_deg (the acuity table's angles), values (kernels x

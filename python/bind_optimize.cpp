@@ -7,6 +7,7 @@
 
 #include "aapat/study/enumeration.h"
 #include "aapat/study/optimize_run.h"
+#include "aapat/work/work_items.h"
 #include "bindings.h"
 
 namespace aapat::python {
@@ -60,8 +61,8 @@ OptimizeRunResult run_optimize(const py::object& family, const py::object& patte
                                uint64_t seed, const std::string& seeds, const std::string& method,
                                int iterations, bool weights_only, bool nonnegative,
                                const std::vector<int>& lock, int lattice, const std::string& api,
-                               int threads, double time_limit, const Metric& metric,
-                               const py::object& progress) {
+                               int threads, double time_limit, bool border_samples,
+                               const Objective& objective, const py::object& progress) {
   OptimizeRunSettings s;
   if (!family.is_none()) s.family = family.cast<std::string>();
   if (!pattern.is_none()) {
@@ -75,6 +76,8 @@ OptimizeRunResult run_optimize(const py::object& family, const py::object& patte
   s.seed = seed;
   s.seeds = seeds;
   s.lock = lock;
+  s.strictly_inside = !border_samples;
+  check_threads(threads, "optimize: threads");
   s.threads = threads;
   s.lattice = lattice;
   s.api = api;
@@ -92,7 +95,7 @@ OptimizeRunResult run_optimize(const py::object& family, const py::object& patte
                                std::chrono::duration<double>(time_limit));
   const auto report = progress_of(progress);
   py::gil_scoped_release release;
-  return optimize_run(metric, s, report);
+  return optimize_run(objective, s, report);
 }
 
 }  // namespace
@@ -109,6 +112,12 @@ void bind_optimize(py::module_& m) {
                              [](const OptimizeRunResult& r) { return r.best_start().start; })
       .def_property_readonly(
           "iterations", [](const OptimizeRunResult& r) { return r.best_start().run.iterations; })
+      .def_property_readonly(
+          "report", [](const OptimizeRunResult& r) { return to_python(optimize_run_json(r)); },
+          "the result as `aapat optimize --json` prints it: the same keys and values")
+      .def_property_readonly(
+          "objective", [](const OptimizeRunResult& r) { return r.objective.text(); },
+          "the objective its E2 is under")
       .def_readonly("description", &OptimizeRunResult::description)
       .def_readonly("placement", &OptimizeRunResult::placement)
       .def_readonly("method", &OptimizeRunResult::method)
@@ -133,21 +142,21 @@ void bind_optimize(py::module_& m) {
          const py::object& starts, uint64_t seed, const std::string& seeds,
          const std::string& method, int iterations, bool weights_only, bool nonnegative,
          const std::vector<int>& lock, int lattice, const std::string& api, int threads,
-         double time_limit, const py::object& filter, const py::object& acuity, double norm,
-         const py::object& progress) {
-        const Metric metric = make_metric(filter, acuity, norm);
+         double time_limit, bool border_samples, const py::object& progress,
+         const py::object& objective, const py::object& filter, const py::object& acuity,
+         const py::object& norm) {
         return run_optimize(family, pattern, placement, starts, seed, seeds, method, iterations,
                             weights_only, nonnegative, lock, lattice, api, threads, time_limit,
-                            metric, progress);
+                            border_samples, make_objective(objective, filter, acuity, norm),
+                            progress);
       },
       py::kw_only(), py::arg("family") = py::none(), py::arg("pattern") = py::none(),
       py::arg("placement") = "", py::arg("starts") = py::none(), py::arg("seed") = 1,
       py::arg("seeds") = "jittered", py::arg("method") = "descent", py::arg("iterations") = 4000,
       py::arg("weights_only") = false, py::arg("nonnegative") = false,
       py::arg("lock") = std::vector<int>{}, py::arg("lattice") = 0, py::arg("api") = "",
-      py::arg("threads") = 0, py::arg("time_limit") = 0.0, py::arg("filter") = "mitchell",
-      py::arg("acuity") = "laine-aila", py::arg("norm") = Metric::kMaxNorm,
-      py::arg("progress") = py::none(),
+      py::arg("threads") = 0, py::arg("time_limit") = 0.0, py::arg("border_samples") = false,
+      py::arg("progress") = py::none(), AAPAT_OBJECTIVE_ARGS,
       with_metric_args(
           R"doc(Optimize positions and weights: a family from random starts, or a pattern.
 
@@ -163,7 +172,7 @@ thread count). Returns an aapat.OptimizeResult (.pattern, .e2, .starts, ...).
     starts: random starts, run in parallel (default 16; 1 when polishing).
     seed: random seed. seeds: seed patterns, "jittered", "poisson" or "uniform".
     method: "descent" (Laine-Aila heuristic), "minimax" (eps-active min-norm
-        descent) or "anneal". iterations: per start at most (default 4000).
+        descent), "anneal", or the epigraph form with NLopt: "slsqp", "mma", "ccsaq". iterations: per start at most (default 4000).
     weights_only: keep positions, optimize weights (Opt W).
     nonnegative: keep weights >= 0 (and report the E2 this costs).
     lock: samples of the base pixel (set 0) to keep fixed.
@@ -171,14 +180,20 @@ thread count). Returns an aapat.OptimizeResult (.pattern, .e2, .starts, ...).
         MSAA). api: with the lattice, the API profile the pattern must fit
         ("d3d12-tier1", "d3d12-tier2", "vulkan", "metal", "gl").
     threads: 0 for all cores. time_limit: seconds for the whole run (0: none).
+    border_samples: let samples of a family without shared borders onto the
+        pixel's border (the papers' closed pixel); default strictly inside.
     progress: a callable f(done, total, note), called as starts finish.)doc"));
 
   m.def(
       "enumerate",
       [](const std::vector<double>& costs, int max_per_edge, bool cull_one_edge, bool optimize,
-         int starts, uint64_t seed, const py::object& filter, const py::object& acuity, double norm,
-         const py::object& progress) {
-        const Metric metric = make_metric(filter, acuity, norm);
+         int starts, uint64_t seed, const py::object& progress, const py::object& objective,
+         const py::object& filter, const py::object& acuity, const py::object& norm) {
+        const Metric metric = make_metric(objective, filter, acuity, norm);
+        if (max_per_edge < 0 || max_per_edge > 8)
+          throw Error(fmt::format("enumerate: max_per_edge {} is not in [0, 8]", max_per_edge));
+        if (starts < 1 || starts > 100000)
+          throw Error(fmt::format("enumerate: starts {} is not in [1, 100000]", starts));
         EnumerationSettings s;
         s.costs = costs;
         s.rules = {max_per_edge, cull_one_edge};
@@ -204,9 +219,8 @@ thread count). Returns an aapat.OptimizeResult (.pattern, .e2, .starts, ...).
       },
       py::kw_only(), py::arg("costs") = std::vector<double>{1.25, 1.5, 1.75, 2},
       py::arg("max_per_edge") = 8, py::arg("cull_one_edge") = false, py::arg("optimize") = false,
-      py::arg("starts") = 32, py::arg("seed") = 1, py::arg("filter") = "mitchell",
-      py::arg("acuity") = "laine-aila", py::arg("norm") = Metric::kMaxNorm,
-      py::arg("progress") = py::none(),
+      py::arg("starts") = 32, py::arg("seed") = 1, py::arg("progress") = py::none(),
+      AAPAT_OBJECTIVE_ARGS,
       with_metric_args(
           R"doc(Every placement configuration of the mirrored P(4,1+,n) family (Hasselgren Sec. 5).
 

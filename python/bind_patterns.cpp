@@ -164,6 +164,9 @@ pattern file (.json, or Laine's x y weight text .xyw).)doc");
       "registry",
       [] {
         py::dict d;
+        py::list objectives;
+        for (const SpecInfo& info : objective_infos()) objectives.append(info_dict(info));
+        d["objectives"] = objectives;
         d["patterns"] = infos(pattern_registry());
         py::list aapat;
         for (const SpecInfo& info : aapat_catalog()) aapat.append(info_dict(info));

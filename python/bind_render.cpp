@@ -50,7 +50,7 @@ void bind_render(py::module_& m) {
         s.sampling.shading = o.shading();
         s.adaptive = o.adaptive_settings(s.sampling);
         s.measure = reference;
-        s.reference = {reference_samples, reference_filter, seed + 1000003};
+        s.reference = {reference_samples, reference_filter, reference_seed(seed)};
         const Scene sc = resolve_scene(scene, w, h, texture);
         RenderResult r;
         {

@@ -9,9 +9,9 @@ namespace aapat::python {
 void bind_studies(py::module_& m) {
   m.def(
       "table3",
-      [](int patterns, int iterations, uint64_t seed, const py::object& filter,
-         const py::object& acuity, double norm) {
-        const Metric metric = make_metric(filter, acuity, norm);
+      [](int patterns, int iterations, uint64_t seed, const py::object& objective,
+         const py::object& filter, const py::object& acuity, const py::object& norm) {
+        const Metric metric = make_metric(objective, filter, acuity, norm);
         std::vector<Table3Row> rows;
         {
           py::gil_scoped_release release;
@@ -26,8 +26,8 @@ void bind_studies(py::module_& m) {
         return l;
       },
       py::kw_only(), py::arg("patterns") = 1000, py::arg("iterations") = 4000, py::arg("seed") = 1,
-      py::arg("filter") = "mitchell", py::arg("acuity") = "laine-aila",
-      py::arg("norm") = Metric::kMaxNorm,
+      py::arg("objective") = std::string(kPapersObjective), py::arg("filter") = py::none(),
+      py::arg("acuity") = py::none(), py::arg("norm") = py::none(),
       with_metric_args(
           R"doc(Laine-Aila Table 3: P(16,16,4) jittered and Poisson patterns, min/avg/max E2,
 then the best optimized for weights (opt_w) and positions (opt_wp). A list of
@@ -35,9 +35,9 @@ dicts with the paper's five numbers beside.)doc"));
 
   m.def(
       "figure10",
-      [](int starts, uint64_t seed, const py::object& filter, const py::object& acuity,
-         double norm) {
-        const Metric metric = make_metric(filter, acuity, norm);
+      [](int starts, uint64_t seed, const py::object& objective, const py::object& filter,
+         const py::object& acuity, const py::object& norm) {
+        const Metric metric = make_metric(objective, filter, acuity, norm);
         Figure10 fig;
         {
           py::gil_scoped_release release;
@@ -50,8 +50,9 @@ dicts with the paper's five numbers beside.)doc"));
                             py::arg("series") = fig.series[p.series]));
         return l;
       },
-      py::kw_only(), py::arg("starts") = 32, py::arg("seed") = 1, py::arg("filter") = "mitchell",
-      py::arg("acuity") = "laine-aila", py::arg("norm") = Metric::kMaxNorm,
+      py::kw_only(), py::arg("starts") = 32, py::arg("seed") = 1,
+      py::arg("objective") = std::string(kPapersObjective), py::arg("filter") = py::none(),
+      py::arg("acuity") = py::none(), py::arg("norm") = py::none(),
       with_metric_args(
           R"doc(Laine-Aila Figure 10: the best E2 of P(1,1,n), P(4,1+,n), P(1,4,n), P(4,4,n)
 against n. A list of dicts {family, n, e2, placement, series}.)doc"));
@@ -82,9 +83,9 @@ on the translating circle (size x size, `frames` frames, 256-sample reference).)
 
   m.def(
       "hardware_table",
-      [](int starts, uint64_t seed, const py::object& filter, const py::object& acuity,
-         double norm) {
-        const Metric metric = make_metric(filter, acuity, norm);
+      [](int starts, uint64_t seed, const py::object& objective, const py::object& filter,
+         const py::object& acuity, const py::object& norm) {
+        const Metric metric = make_metric(objective, filter, acuity, norm);
         std::vector<HardwareTableRow> rows;
         {
           py::gil_scoped_release release;
@@ -98,8 +99,7 @@ on the translating circle (size x size, `frames` frames, 256-sample reference).)
                             py::arg("e2_lattice") = r.lattice_e2));
         return l;
       },
-      py::kw_only(), py::arg("starts") = 32, py::arg("seed") = 1, py::arg("filter") = "mitchell",
-      py::arg("acuity") = "laine-aila", py::arg("norm") = Metric::kMaxNorm,
+      py::kw_only(), py::arg("starts") = 32, py::arg("seed") = 1, AAPAT_OBJECTIVE_ARGS,
       with_metric_args(
           R"doc(What the APIs' 1/16-pixel lattice costs: standard and optimized patterns at 2,
 4, 8 and 16 samples, and the sharing schemes, continuous and on the lattice.)doc"));

@@ -1,9 +1,13 @@
 // Sequences over time: generate or load, evaluate under an accumulation
 // model, optimize (docs/temporal.md).
+#include <fmt/format.h>
+
 #include "aapat/core/filter_catalog.h"
+#include "aapat/core/hardware_layout.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/sequence_optimizer.h"
+#include "aapat/temporal/temporal_json.h"
 #include "aapat/temporal/temporal_metrics.h"
 #include "bindings.h"
 
@@ -12,14 +16,11 @@ namespace {
 
 Accumulation make_model(const std::string& model, double alpha, int window,
                         const std::string& resolve) {
-  Accumulation a;
-  if (model != "ema" && model != "box") throw Error("model '" + model + "': expected ema or box");
-  a.kind = model == "box" ? AccumulationKind::box : AccumulationKind::ema;
-  a.alpha = alpha;
-  a.window = window;
-  if (!resolve.empty()) a.resolve = make_filter(resolve);
-  validate(a);
-  return a;
+  try {
+    return make_accumulation(model, alpha, window, resolve);
+  } catch (const ParameterError& e) {
+    throw Error(fmt::format("{}{}", e.parameter(), e.detail()));
+  }
 }
 
 // (frames, samples per frame, 2) for equal-sized frames of one pixel.
@@ -78,44 +79,37 @@ with pattern=...), a name of the optimized ones ("aapat-taa-8") or a file.)doc")
   m.def(
       "sequence_eval",
       [](const py::object& seq, const std::string& model, double alpha, int window,
-         const std::string& resolve, const py::object& filter, const py::object& acuity,
-         double norm) {
+         const std::string& resolve, const py::object& objective, const py::object& filter,
+         const py::object& acuity, const py::object& norm) {
         const Sequence s = py::isinstance<Sequence>(seq)
                                ? seq.cast<Sequence>()
                                : resolve_sequence(seq.cast<std::string>());
-        const Metric metric = make_metric(filter, acuity, norm);
+        const Metric metric = make_metric(objective, filter, acuity, norm);
         const Accumulation a = make_model(model, alpha, window, resolve);
         TemporalReport r;
         {
           py::gil_scoped_release release;
           r = evaluate_temporal(s, a, metric);
         }
-        return py::dict(py::arg("worst_e2") = r.worst_e2, py::arg("mean_e2") = r.mean_e2,
-                        py::arg("steady_e2") = from_vector(r.steady_e2),
-                        py::arg("cut_curve") = from_vector(r.cut_curve),
-                        py::arg("settle_frame") = r.settle_frame,
-                        py::arg("flicker") = r.mean_flicker,
-                        py::arg("worst_flicker") = r.worst_flicker,
-                        py::arg("flicker_per_transition") = from_vector(r.flicker),
-                        py::arg("mean_offset") = py::make_tuple(r.mean_offset.x, r.mean_offset.y),
-                        py::arg("worst_centroid") = r.worst_centroid);
+        return to_python(temporal_report_json(s, r));
       },
       py::arg("sequence"), py::kw_only(), py::arg("model") = "ema", py::arg("alpha") = 0.1,
-      py::arg("window") = 0, py::arg("resolve") = "", py::arg("filter") = "mitchell",
-      py::arg("acuity") = "uniform:step=1", py::arg("norm") = 2.0,
+      py::arg("window") = 0, py::arg("resolve") = "", AAPAT_OBJECTIVE_ARGS,
       with_metric_args(
           (std::string(R"doc(The temporal metrics of a sequence (a Sequence or a spec) under an
-accumulation model: a dict of worst_e2, mean_e2, steady_e2, cut_curve, settle_frame,
-flicker (the mean over transitions), worst_flicker, flicker_per_transition,
-mean_offset, worst_centroid. The default objective is the study's (uniform:step=1, L2).)doc") +
+accumulation model: a dict with the keys of one row of `aapat sequence eval
+--json`: sequence, frames, family, worst_e2, mean_e2, steady_e2, cut_curve,
+settle_frame, flicker (the mean over the period's transitions), worst_flicker
+(the largest), flicker_per_transition, mean_offset, worst_centroid, prefixes.)doc") +
            kModelArgs)
               .c_str()));
 
   m.def(
       "optimize_sequence",
       [](int frames, int samples_per_frame, double flicker_weight, const std::string& measure,
-         int starts, uint64_t seed, const std::string& model, double alpha, int window,
-         const py::object& filter, const py::object& acuity, double norm) {
+         int starts, uint64_t seed, int iterations, bool equal_weights, const std::string& api,
+         const std::string& model, double alpha, int window, const py::object& objective,
+         const py::object& filter, const py::object& acuity, const py::object& norm) {
         SequenceSearch s;
         s.frames = frames;
         s.samples_per_frame = samples_per_frame;
@@ -125,25 +119,33 @@ mean_offset, worst_centroid. The default objective is the study's (uniform:step=
         s.frame_measure = measure == "mean" ? FrameMeasure::mean : FrameMeasure::worst;
         s.starts = starts;
         s.seed = seed;
+        s.iterations = iterations;
+        s.optimize_weights = !equal_weights;
+        if (!api.empty()) s.profile = &api_profile(api);
         s.model = make_model(model, alpha, window, "");
-        const Metric metric = make_metric(filter, acuity, norm);
+        const Objective o = make_objective(objective, filter, acuity, norm);
+        const Metric metric = o.metric();
         SequenceSearchResult r;
         {
           py::gil_scoped_release release;
           r = optimize_sequence(s, metric);
         }
-        return py::dict(py::arg("sequence") = r.best, py::arg("objective") = r.objective,
-                        py::arg("worst_e2") = r.worst_e2, py::arg("mean_e2") = r.mean_e2,
-                        py::arg("flicker") = r.flicker, py::arg("best_start") = r.best_start,
-                        py::arg("halton_objective") = r.halton_objective);
+        py::dict d = to_python(sequence_search_json(s, accumulation_text(s.model), o, r));
+        d["result"] = r.best;
+        return d;
       },
-      py::kw_only(), py::arg("frames") = 8, py::arg("samples_per_frame") = 1,
-      py::arg("flicker_weight") = 3.0, py::arg("measure") = "worst", py::arg("starts") = 16,
-      py::arg("seed") = 1, py::arg("model") = "ema", py::arg("alpha") = 0.1, py::arg("window") = 0,
-      py::arg("filter") = "mitchell", py::arg("acuity") = "uniform:step=1", py::arg("norm") = 2.0,
+      py::kw_only(), py::arg("frames") = SequenceSearch{}.frames,
+      py::arg("samples_per_frame") = SequenceSearch{}.samples_per_frame,
+      py::arg("flicker_weight") = SequenceSearch{}.flicker_weight, py::arg("measure") = "worst",
+      py::arg("starts") = SequenceSearch{}.starts, py::arg("seed") = SequenceSearch{}.seed,
+      py::arg("iterations") = SequenceSearch{}.iterations, py::arg("equal_weights") = false,
+      py::arg("api") = "", py::arg("model") = "ema", py::arg("alpha") = 0.1, py::arg("window") = 0,
+      AAPAT_OBJECTIVE_ARGS,
       R"doc(aapat optimize --sequence: the positions of every frame's samples minimizing
 worst (or mean) steady E2 + flicker_weight x flicker under the model. The same
-sequence as the command line for the same seed. A dict with the Sequence.)doc");
+sequence as the command line for the same settings and seed. A dict with the
+keys of `aapat optimize --sequence --json` (j, worst_e2, mean_e2, flicker,
+halton_j, ...), its "result" the aapat.Sequence found.)doc");
 }
 
 }  // namespace aapat::python

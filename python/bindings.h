@@ -12,7 +12,9 @@
 
 #include "aapat/core/geometry.h"
 #include "aapat/core/metric.h"
+#include "aapat/core/objective.h"
 #include "aapat/core/pattern.h"
+#include "aapat/io/json_report.h"
 
 namespace aapat::python {
 
@@ -35,21 +37,43 @@ Array from_vector(const std::vector<double>& v);
 // A pattern given as a catalog name, a file path or a Pattern.
 Pattern to_pattern(const py::handle& h);
 
-// The metric of the keyword arguments filter=, acuity=, norm= (specs, or
-// Filter / AcuityTable objects).
-Metric make_metric(const py::object& filter, const py::object& acuity, double norm);
+// The objective of the keyword arguments objective= (a name or spec, the
+// library's default when not given) and its overrides filter=, acuity=,
+// norm= (None: the objective's; specs, or Filter / AcuityTable objects).
+Objective make_objective(const py::object& objective, const py::object& filter,
+                         const py::object& acuity, const py::object& norm);
+inline Metric make_metric(const py::object& objective, const py::object& filter,
+                          const py::object& acuity, const py::object& norm) {
+  return make_objective(objective, filter, acuity, norm).metric();
+}
+// The keyword arguments above with their defaults, in order.
+#define AAPAT_OBJECTIVE_ARGS                                                             \
+  py::arg("objective") = std::string(kDefaultObjective), py::arg("filter") = py::none(), \
+  py::arg("acuity") = py::none(), py::arg("norm") = py::none()
+
+// A JSON object the library made, as Python values (dicts, lists, floats):
+// the same keys as the command line's --json.
+py::object to_python(const JsonObject& json);
+
+// An (m, n, 2) or (n, 2) array of samples in pixels from the centre: finite,
+// inside the pixel, else aapat.Error naming the sample.
+void check_samples(const Array& xy, const char* what);
 
 // A progress callable (done, total, note), called with the GIL held; None: silent.
 std::function<void(int, int, const std::string&)> progress_of(const py::object& callback);
 
 // The docstring of the metric keywords, shared by the functions that take them.
 inline constexpr const char* kMetricArgs = R"doc(
-    filter: the reference filter, a spec such as "mitchell:b=1/3,c=1/3",
-        "gaussian:sigma=0.5,radius=1.5" or "lanczos:lobes=3" (aapat.registry()["filters"]),
-        or an aapat.Filter. Default "mitchell".
-    acuity: the angle acuity table: "laine-aila" (default), "uniform:step=S",
-        "linear:step=S", a CSV file, or an aapat.AcuityTable.
-    norm: p of the L_p mean over angles; inf (default) is the maximum of Laine-Aila Eq. 5.)doc";
+    objective: what E2 means: "recommended" (default: the study's, the
+        catalog's), "laine-aila" (the papers'), or "filter=F acuity=A norm=P"
+        (aapat.registry()["objectives"]).
+    filter: instead of the objective's reference filter, a spec such as
+        "mitchell:b=1/3,c=1/3", "gaussian:sigma=0.5,radius=1.5" or "lanczos:lobes=3"
+        (aapat.registry()["filters"]), or an aapat.Filter.
+    acuity: instead of the objective's angle acuity table: "laine-aila",
+        "uniform:step=S", "linear:step=S", a CSV file, or an aapat.AcuityTable.
+    norm: instead of the objective's p of the L_p mean over angles; inf is the
+        maximum of Laine-Aila Eq. 5.)doc";
 
 // `text` followed by kMetricArgs, kept for the module's lifetime (pybind11
 // keeps the pointer).

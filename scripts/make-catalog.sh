@@ -10,17 +10,23 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 aapat=${AAPAT:-$root/build/release/aapat}
 out=$root/data/patterns
 mkdir -p "$out"
-objective=(--acuity uniform:step=1 --norm 2)
+objective=(--objective recommended)
 starts=${AAPAT_CATALOG_STARTS:-64}
 # The sharing family searches every placement of its cost (up to 38) and the
 # 2x2 kernels have up to 32 free samples: fewer starts each.
 shared_starts=${AAPAT_CATALOG_SHARED_STARTS:-4}
 tile_starts=${AAPAT_CATALOG_2X2_STARTS:-16}
+# Starts of the searches that end on an API's lattice (default: as the free ones).
+lattice_starts=${AAPAT_CATALOG_LATTICE_STARTS:-}
+# AAPAT_CATALOG_ONLY=REGEX: rebuild only the entries whose names match it.
+only=${AAPAT_CATALOG_ONLY:-}
 search() {  # name family [optimize options...]
   local name=$1 family=$2 count=$starts
   shift 2
   [[ $family == "P(4,1+,"* ]] && count=$shared_starts
   [[ $family == "P(4,4,"* ]] && count=$tile_starts
+  [[ -n $lattice_starts && " $* " == *" --api "* ]] && count=$lattice_starts
+  if [ -n "$only" ] && ! [[ $name =~ $only ]]; then return; fi
   # AAPAT_CATALOG_RESUME=1 keeps the files already written (an interrupted run).
   if [ "${AAPAT_CATALOG_RESUME:-0}" = 1 ] && [ -f "$out/$name.json" ]; then return; fi
   echo "== $name ($family $*)"

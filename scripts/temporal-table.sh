@@ -54,13 +54,13 @@ for key, title in (("box", "a box window of the period"), ("ema", "EMA alpha 0.1
         v = r[k]
         g = groups.get(r["frames"], []) if r["family"] == "P(1,1,1)" else []
         text = fmt.format(v)
-        if g and len(g) > 1 and v == min(x[k] for x in g) and k in ("worst_e2", "mean_e2", "mean_flicker", "worst_flicker"):
+        if g and len(g) > 1 and v == min(x[k] for x in g) and k in ("worst_e2", "mean_e2", "flicker", "worst_flicker"):
             text = f"**{text}**"
         return text
     for r in rows:
         off = (r["mean_offset"][0] ** 2 + r["mean_offset"][1] ** 2) ** 0.5
         print(f"| {short(r['sequence'])} | {r['frames']} | {cell(r, 'worst_e2', '{:.4f}')} | "
-              f"{cell(r, 'mean_e2', '{:.4f}')} | {cell(r, 'mean_flicker', '{:.4f}')} | "
+              f"{cell(r, 'mean_e2', '{:.4f}')} | {cell(r, 'flicker', '{:.4f}')} | "
               f"{cell(r, 'worst_flicker', '{:.4f}')} | {r['settle_frame']} | {off:.4f} | "
               f"{r['worst_centroid']:.4f} | {r['prefixes'][-1]['star']:.4f} |")
     print()

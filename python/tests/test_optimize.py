@@ -28,7 +28,7 @@ def test_polishing_a_pattern_equals_the_cli(aapat_cli, tmp_path):
 
 def test_the_best_p114_reaches_laine_aila_table_2_and_reports_progress():
     calls = []
-    r = aapat.optimize(family="P(1,1,4)", starts=16, seed=1,
+    r = aapat.optimize(family="P(1,1,4)", starts=16, seed=1, objective="laine-aila",
                        progress=lambda done, total, note: calls.append((done, total)))
     assert r.e2 == pytest.approx(0.359, abs=0.001)
     assert calls and calls[-1] == (16, 16)

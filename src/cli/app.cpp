@@ -108,7 +108,7 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   app.add_option("--threads", threads,
                  "threads for every parallel step, before the command (0: all cores; the "
                  "results are the same for any count)")
-      ->check(CLI::Range(0, 1024));
+      ->check(CLI::Range(0, kMaxThreads));
   // A long run keeps its finished work items, and resumes from them.
   std::string checkpoint_path;
   app.add_option("--checkpoint", checkpoint_path,

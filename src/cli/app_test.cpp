@@ -22,12 +22,14 @@ using testing::slurp;
 using testing::temp_path;
 
 TEST(Cli, EvalJsonHasTheDocumentedKeys) {
-  const CliRun r = run({"eval", "flipquad", "centroid", "--json"});
+  const CliRun r = run({"eval", "flipquad", "centroid", "--objective", "laine-aila", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["command"], "eval");  // docs/json.md: command, schema, settings, rows
   EXPECT_EQ(doc["schema"], 1);
+  EXPECT_EQ(doc["objective"], "laine-aila");
   EXPECT_EQ(doc["acuity"], "laine-aila");
+  EXPECT_EQ(doc["norm"], "inf");
   const auto& rows = doc["rows"];
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0]["pattern"], "flipquad");
@@ -42,8 +44,8 @@ TEST(Cli, EvalTableAndOtherFiltersAndNorms) {
   const CliRun r = run({"eval", "rgss", "--filter", "gaussian:sigma=0.5", "--acuity",
                         "uniform:step=5", "--norm", "4"});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("filter gaussian:sigma=0.5,radius=1.5, acuity uniform:step=5,weight=1 "
-                       "(36 angles), norm 4"),
+  EXPECT_NE(r.out.find("objective (filter gaussian:sigma=0.5,radius=1.5, acuity "
+                       "uniform:step=5,weight=1, norm 4), 36 angles"),
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("rgss"), std::string::npos);
@@ -72,7 +74,7 @@ TEST(Cli, ShowWritesDrawingAndPatternFile) {
   EXPECT_NE(r.out.find("left"), std::string::npos);
   EXPECT_TRUE(fs::exists(svg));
   ASSERT_EQ(run({"show", "flipquad", "-o", json}).code, 0);
-  const CliRun again = run({"eval", json, "--json"});
+  const CliRun again = run({"eval", json, "--objective", "laine-aila", "--json"});
   ASSERT_EQ(again.code, 0) << again.err;
   EXPECT_NEAR(nlohmann::json::parse(again.out)["rows"][0]["e2"].get<double>(), 0.364, 0.001);
 }
@@ -142,7 +144,8 @@ TEST(CliOptimize, WritesBestPatternWithProvenanceCsvAndSvg) {
   const std::string json = temp_path("best.json"), csv = temp_path("starts.csv"),
                     svg = temp_path("best.svg");
   const CliRun r = run({"optimize", "--family", "P(4,1+,2)", "--placement", "left,right,bottom,top",
-                        "--starts", "8", "--seed", "3", "-o", json, "--csv", csv, "--svg", svg});
+                        "--starts", "8", "--seed", "3", "-o", json, "--csv", csv, "--svg", svg,
+                        "--objective", "laine-aila"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto doc = nlohmann::json::parse(slurp(json));
   EXPECT_EQ(doc["family"], "P(4,1+,2)");
@@ -150,9 +153,11 @@ TEST(CliOptimize, WritesBestPatternWithProvenanceCsvAndSvg) {
   EXPECT_EQ(prov["seed"], "3");
   EXPECT_EQ(prov["filter"], "mitchell:b=1/3,c=1/3");
   EXPECT_EQ(prov["acuity"], "laine-aila");
+  EXPECT_EQ(prov["objective"], "laine-aila");
+  EXPECT_EQ(doc["name"], "P(4,1+,2)-laine-aila-seed3");  // named after its settings
   EXPECT_TRUE(prov.contains("start") && prov.contains("iterations"));
   EXPECT_LT(std::stod(prov["e2"].get<std::string>()), 0.3595);  // Laine-Aila Table 2
-  const CliRun again = run({"eval", json, "--json"});
+  const CliRun again = run({"eval", json, "--objective", "laine-aila", "--json"});
   EXPECT_NEAR(nlohmann::json::parse(again.out)["rows"][0]["e2"].get<double>(),
               std::stod(prov["e2"].get<std::string>()), 1e-6);
   std::istringstream lines(slurp(csv));
@@ -179,7 +184,8 @@ TEST(CliOptimize, SameSeedSameFileAnyThreads) {
 }
 
 TEST(CliOptimize, PolishesAPatternAndReportsTheCostOfNonNegativeWeights) {
-  const CliRun r = run({"optimize", "quincunx", "--weights-only", "--nonnegative"});
+  const CliRun r =
+      run({"optimize", "quincunx", "--weights-only", "--nonnegative", "--objective", "laine-aila"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("non-negative weights: E2 0.4842"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("unconstrained from the same start"), std::string::npos);
@@ -227,7 +233,7 @@ TEST(CliFigure10, WritesTableAndPlot) {
   std::istringstream lines(slurp(csv));
   std::string header;
   std::getline(lines, header);
-  EXPECT_EQ(header, "family,n,e2,placement");
+  EXPECT_EQ(header, "family,n,e2,placement,objective");
   int rows = 0;
   for (std::string l; std::getline(lines, l);) ++rows;
   EXPECT_EQ(rows, 23);  // 4 families x n = 2..6, and P(4,1+,n) at 1.25, 1.5, 1.75
@@ -244,7 +250,8 @@ namespace {
 // same structure: a corner and two edges off it (A), two corners and two
 // edges (C), a corner and three edges (E), one sample on each edge (F).
 TEST(CliEnumerate, BestPerCostReachesThePublishedSchemes) {
-  const CliRun r = run({"enumerate", "--optimize", "--starts", "8", "--json"});
+  const CliRun r =
+      run({"enumerate", "--optimize", "--starts", "8", "--objective", "laine-aila", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto rows = nlohmann::json::parse(r.out)["rows"];
   ASSERT_EQ(rows.size(), 85u);
@@ -623,7 +630,7 @@ namespace {
 TEST(CliHardware, SnapExportImportRoundTrip) {
   const std::string snapped = temp_path("fq16.json"), exported = temp_path("fq.vk.txt"),
                     back = temp_path("fq-back.json");
-  CliRun r = run({"snap", "flipquad", "-o", snapped, "--json"});
+  CliRun r = run({"snap", "flipquad", "-o", snapped, "--objective", "laine-aila", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto js = nlohmann::json::parse(r.out);
   EXPECT_NEAR(js["e2_before"].get<double>(), 0.3643, 1e-4);  // Laine-Aila Table 2
@@ -670,7 +677,7 @@ TEST(CliHardware, LatticeOptimizationAndOptimizedWeights) {
            "d3d12-tier1", "--starts", "2"});
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("does not fit d3d12-tier1's pixel grid"), std::string::npos) << r.err;
-  r = run({"eval", "msaa-8", "--optimized-weights", "--json"});
+  r = run({"eval", "msaa-8", "--optimized-weights", "--objective", "laine-aila", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto rows = nlohmann::json::parse(r.out)["rows"];
   EXPECT_NEAR(rows[0]["e2"].get<double>(), 0.3437, 1e-4);

@@ -31,25 +31,26 @@ std::string counts_text(const Enumeration& e, const EnumerationSettings& s) {
   return text + fmt::format("  total     {:>4}\n", e.rows.size());
 }
 
-std::string rows_text(const Enumeration& e, bool optimized) {
-  std::string text =
-      fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", "id", "n", "reads", "E2", "placement");
+std::string rows_text(const Enumeration& e, bool optimized, const Objective& objective) {
+  std::string text = optimized ? objective.caption() + "\n" : "";
+  text += fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", "id", "n", "reads", "E2", "placement");
   for (const EnumerationRow& r : e.rows)
     text += fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", r.id, format_cost(r.n), r.config.samples(),
                         optimized ? fmt::format("{:.4f}", r.e2) : "-", r.config.sites());
   return text;
 }
 
-std::string rows_csv(const Enumeration& e, bool optimized) {
-  std::string csv = "id,n,placement,samples_read,e2\n";
+std::string rows_csv(const Enumeration& e, bool optimized, const Objective& objective) {
+  std::string csv = "id,n,placement,samples_read,e2,objective\n";
   for (const EnumerationRow& r : e.rows)
-    csv += fmt::format("{},{},\"{}\",{},{}\n", r.id, format_cost(r.n), r.config.sites(),
-                       r.config.samples(), optimized ? fmt::format("{:.6f}", r.e2) : "");
+    csv += fmt::format("{},{},\"{}\",{},{},\"{}\"\n", r.id, format_cost(r.n), r.config.sites(),
+                       r.config.samples(), optimized ? fmt::format("{:.6f}", r.e2) : "",
+                       optimized ? objective.text() : "");
   return csv;
 }
 
 template <class Options>
-JsonObject enumeration_json(const Enumeration& e, const Options& o) {
+JsonObject enumeration_json(const Enumeration& e, const Options& o, const Objective& objective) {
   JsonObject rows = JsonObject::array();
   for (const EnumerationRow& r : e.rows)
     rows.push_back({{"id", r.id},
@@ -63,8 +64,9 @@ JsonObject enumeration_json(const Enumeration& e, const Options& o) {
                         {"cull_one_edge", o.cull_one_edge},
                         {"optimized", o.optimize},
                         {"starts", o.optimize ? JsonObject(o.starts) : JsonObject()},
-                        {"seed", o.seed},
-                        {"rows", rows}});
+                        {"seed", o.seed}});
+  doc.update(objective_json(objective));
+  doc["rows"] = rows;
   return doc;
 }
 
@@ -94,7 +96,8 @@ void run_enumerate(EnumerateOptions& o, std::ostream& out) {
   // With --json the document alone goes to stdout; the text goes nowhere.
   std::ostream discard(nullptr);
   std::ostream& text = o.json ? discard : out;
-  const Metric metric = o.metric.make();  // a bad --filter or --acuity fails first
+  const Objective objective = o.metric.resolve();  // a bad --objective or --filter fails first
+  const Metric metric = objective.metric();
   EnumerationSettings s;
   s.costs.clear();
   for (std::string_view c : split(o.costs)) s.costs.push_back(parse_number(c, "--cost"));
@@ -114,9 +117,9 @@ void run_enumerate(EnumerateOptions& o, std::ostream& out) {
     s.optimize = true;
     e = enumerate_study(metric, s, bar.callback());
   }
-  text << rows_text(e, o.optimize);
-  if (!o.csv.empty()) write_output(o.csv, rows_csv(e, o.optimize), out);
-  if (o.json) out << json_text(enumeration_json(e, o));
+  text << rows_text(e, o.optimize, objective);
+  if (!o.csv.empty()) write_output(o.csv, rows_csv(e, o.optimize, objective), out);
+  if (o.json) out << json_text(enumeration_json(e, o, objective));
   if (!o.gallery.empty()) write_output(o.gallery, gallery(e, s.costs, o.top), out);
   if (!o.best_dir.empty()) {
     ensure_directory(o.best_dir, "--best-dir");

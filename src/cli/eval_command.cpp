@@ -27,18 +27,17 @@ struct EvalOptions {
 void run_eval(EvalOptions& o, std::ostream& out) {
   if (!o.profile.empty() && !o.profile.ends_with(".svg") && !o.profile.ends_with(".csv"))
     throw Error(fmt::format("--profile: '{}' must end in .svg or .csv", o.profile));
-  const Metric metric = o.metric.make();
+  const Objective objective = o.metric.resolve();
+  const Metric metric = objective.metric();
   std::vector<Pattern> patterns;
   for (const auto& name : o.patterns) patterns.push_back(resolve_pattern(name));
 
   JsonObject rows = JsonObject::array();
   std::vector<ProfileSeries> series;
   if (!o.json)
-    out << fmt::format(
-        "filter {}, acuity {} ({} angles), norm {}\n{:<22} {:<14} {:>6} {:>8} {:>12} {:>7}{}\n",
-        metric.filter().name(), metric.acuity().name, metric.angle_count(), o.metric.norm,
-        "pattern", "family", "n", "E2", "worst angle", "kernel",
-        o.optimized_weights ? "  E2 opt. W" : "");
+    out << fmt::format("{}, {} angles\n{:<22} {:<14} {:>6} {:>8} {:>12} {:>7}{}\n",
+                       objective.caption(), metric.angle_count(), "pattern", "family", "n", "E2",
+                       "worst angle", "kernel", o.optimized_weights ? "  E2 opt. W" : "");
   const std::vector<PatternEvaluation> evaluations =
       evaluate_patterns(metric, patterns, o.optimized_weights, !o.profile.empty());
   for (size_t i = 0; i < patterns.size(); ++i) {
@@ -64,16 +63,13 @@ void run_eval(EvalOptions& o, std::ostream& out) {
   }
   if (o.json) {
     JsonObject doc = json_report("eval");
-    doc["filter"] = metric.filter().name();
-    doc["acuity"] = metric.acuity().name;
+    doc.update(objective_json(objective));
     doc["angles"] = metric.angle_count();
-    doc["norm"] = o.metric.norm;
     doc["rows"] = rows;
     out << json_text(doc);
   }
   if (!o.profile.empty()) {
-    const std::string title = fmt::format("W(theta) E1(theta), filter {}, acuity {}",
-                                          metric.filter().name(), metric.acuity().name);
+    const std::string title = "W(theta) E1(theta), " + objective.caption();
     write_output(o.profile,
                  o.profile.ends_with(".svg") ? profile_svg(metric.acuity(), series, title)
                                              : profile_csv(metric.acuity(), series),

@@ -27,7 +27,8 @@ struct Figure10Options {
 };
 
 void run_figure10(Figure10Options& o, std::ostream& out) {
-  const Metric metric = o.metric.make();
+  const Objective objective = o.metric.resolve();
+  const Metric metric = objective.metric();
   Figure10 fig;
   {
     Progress bar("figure10");
@@ -35,11 +36,10 @@ void run_figure10(Figure10Options& o, std::ostream& out) {
   }
   std::ostream discard(nullptr);
   std::ostream& text = o.json ? discard : out;
-  text << fmt::format(
-      "Laine-Aila Figure 10 re-run: best E2 of {} jittered starts, seed {}, filter {}\n", o.starts,
-      o.seed, metric.filter().name());
+  text << fmt::format("Laine-Aila Figure 10 re-run: best E2 of {} jittered starts, seed {}, {}\n",
+                      o.starts, o.seed, objective.caption());
   text << fmt::format("{:<14} {:>5} {:>8}  {}\n", "family", "n", "E2", "placement");
-  std::string csv = "family,n,e2,placement\n";
+  std::string csv = "family,n,e2,placement,objective\n";
   JsonObject rows = JsonObject::array();
   std::vector<LineSeries> lines;
   for (const auto& series : fig.series) lines.push_back({series, {}, {}});
@@ -47,7 +47,8 @@ void run_figure10(Figure10Options& o, std::ostream& out) {
     rows.push_back({{"family", p.family}, {"n", p.n}, {"e2", p.e2}, {"placement", p.placement}});
     text << fmt::format("{:<14} {:>5} {:>8.4f}  {}\n", p.family, format_cost(p.n), p.e2,
                         p.placement.empty() ? "all inside" : p.placement);
-    csv += fmt::format("{},{},{:.6f},\"{}\"\n", p.family, format_cost(p.n), p.e2, p.placement);
+    csv += fmt::format("{},{},{:.6f},\"{}\",\"{}\"\n", p.family, format_cost(p.n), p.e2,
+                       p.placement, objective.text());
     LineSeries& line = lines[p.series];
     line.x.push_back(p.n);
     line.y.push_back(p.e2);
@@ -55,11 +56,9 @@ void run_figure10(Figure10Options& o, std::ostream& out) {
   if (!o.csv.empty()) write_output(o.csv, csv, out);
   if (o.json) {
     JsonObject doc = json_report("figure10");
-    doc.update(JsonObject{{"starts", o.starts},
-                          {"seed", o.seed},
-                          {"filter", metric.filter().name()},
-                          {"acuity", metric.acuity().name},
-                          {"rows", rows}});
+    doc.update(JsonObject{{"starts", o.starts}, {"seed", o.seed}});
+    doc.update(objective_json(objective));
+    doc["rows"] = rows;
     out << json_text(doc);
   }
   if (!o.svg.empty())
@@ -88,7 +87,7 @@ Action add_figure10_command(CLI::App& app) {
   cmd->add_option("--csv", o->csv, "write family, n, placement, E2 as CSV");
   cmd->add_option("--svg", o->svg, "write the plot");
   cmd->add_flag("--json", o->json, "print the points as JSON (docs/json.md)");
-  o->metric.add_to(cmd);
+  o->metric.add_to(cmd, kPapersObjective);
   return [o](std::ostream& out) { run_figure10(*o, out); };
 }
 

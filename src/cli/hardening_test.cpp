@@ -102,21 +102,23 @@ TEST(Hardening, NoSilentlyWrongAnswers) {
   // The narrowest accepted Gaussian is exact: one centred sample against a
   // step of width sigma, E1^2 = 2 sigma int_0^inf (1 - Phi)^2 = (sqrt 2 - 1) sigma / sqrt(pi),
   // weighted by the acuity table's 3.93 on the axes.
-  const CliRun narrow = run({"eval", "centroid", "--filter", "gaussian:sigma=0.001", "--json"});
+  const CliRun narrow = run({"eval", "centroid", "--objective", "laine-aila", "--filter",
+                             "gaussian:sigma=0.001", "--json"});
   ASSERT_EQ(narrow.code, 0) << narrow.err;
   const double e1 = std::sqrt((std::sqrt(2.0) - 1) * 0.001 / std::sqrt(std::numbers::pi));
   EXPECT_NEAR(nlohmann::json::parse(narrow.out)["rows"][0]["e2"].get<double>(), 3.93 * e1, 1e-6);
   // Large p of the L_p mean approaches the maximum instead of underflowing to 0.
-  const double max = nlohmann::json::parse(run({"eval", "rgss", "--json"}).out)["rows"][0]["e2"];
+  const double max = nlohmann::json::parse(
+      run({"eval", "rgss", "--objective", "laine-aila", "--json"}).out)["rows"][0]["e2"];
   for (const char* p : {"1000", "2000", "1000000"}) {
-    const CliRun r = run({"eval", "rgss", "--norm", p, "--json"});
+    const CliRun r = run({"eval", "rgss", "--objective", "laine-aila", "--norm", p, "--json"});
     ASSERT_EQ(r.code, 0) << r.err;
     const double lp = nlohmann::json::parse(r.out)["rows"][0]["e2"];
     EXPECT_LE(lp, max * (1 + 1e-12)) << p;
     EXPECT_GE(lp, max * std::pow(4.0, -1.0 / std::stod(p)) * (1 - 1e-12)) << p;  // 4 angles
   }
-  const CliRun polish =
-      run({"optimize", "--family", "P(1,1,4)", "--norm", "2000", "--starts", "2", "--json"});
+  const CliRun polish = run({"optimize", "--family", "P(1,1,4)", "--objective", "laine-aila",
+                             "--norm", "2000", "--starts", "2", "--json"});
   ASSERT_EQ(polish.code, 0) << polish.err;
   EXPECT_GT(nlohmann::json::parse(polish.out)["e2"].get<double>(), 0.3);  // not "polished" to 0
   expect_error(run({"eval", "rgss", "--norm", "1e7"}), kExitError, "use a number in [1, 1000000]");

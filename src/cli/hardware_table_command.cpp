@@ -34,7 +34,8 @@ Action add_hardware_table_command(CLI::App& app) {
   add_seed_option(cmd, o->seed, "random seed");
   cmd->add_flag("--json", o->json, "print the table as JSON (docs/json.md)");
   return [o](std::ostream& out) {
-    const Metric metric = o->metric.make();
+    const Objective objective = o->metric.resolve();
+    const Metric metric = objective.metric();
     std::vector<HardwareTableRow> rows;
     {
       Progress bar("hardware-table");
@@ -50,18 +51,15 @@ Action add_hardware_table_command(CLI::App& app) {
                       {"e2_continuous", r.continuous_e2},
                       {"e2_lattice", r.lattice_e2}});
       JsonObject doc = json_report("hardware-table");
-      doc.update(JsonObject{{"filter", metric.filter().name()},
-                            {"acuity", metric.acuity().name},
-                            {"starts", o->starts},
-                            {"seed", o->seed},
-                            {"rows", js}});
+      doc.update(objective_json(objective));
+      doc.update(JsonObject{{"starts", o->starts}, {"seed", o->seed}, {"rows", js}});
       out << json_text(doc);
       return;
     }
     out << fmt::format(
-        "E2 ({}, acuity {}); continuous: the family's optimum from {} starts (catalog rows: the "
+        "E2 under the {}; continuous: the family's optimum from {} starts (catalog rows: the "
         "pattern as published); lattice: positions on 1/16 pixel, weights optimized\n\n",
-        metric.filter().name(), metric.acuity().name, o->starts);
+        objective.caption(), o->starts);
     out << "| n | pattern | profile | layout | E2 continuous | E2 on the lattice | lattice cost |\n"
            "| ---: | --- | --- | --- | ---: | ---: | ---: |\n";
     for (const HardwareTableRow& r : rows)

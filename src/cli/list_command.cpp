@@ -9,6 +9,7 @@
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/hardware_layout.h"
+#include "aapat/core/objective.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/aapat_catalog.h"
@@ -41,6 +42,10 @@ std::vector<Section> sections() {
                 "docs/catalog.md)",
                 aapat_catalog()};
   return {
+      Section{"objectives",
+              "objectives (--objective; or 'filter=F acuity=A norm=P', starting from "
+              "recommended)",
+              objective_infos()},
       section("patterns", "patterns", pattern_registry()),
       aapat,
       section("filters", "filters", filter_registry()),
@@ -55,10 +60,10 @@ std::vector<Section> sections() {
               texture_filter_registry()),
       section("api_profiles", "API profiles (aapat export --api, optimize --api)",
               profile_registry()),
-      section("sequences", "sequences (aapat sequence, animate --sequence; or a .json sequence file)",
+      section("sequences",
+              "sequences (aapat sequence, animate --sequence; or a .json sequence file)",
               sequence_registry()),
-      Section{"aapat_sequences",
-              "optimized sequences (data/sequences, docs/temporal.md)",
+      Section{"aapat_sequences", "optimized sequences (data/sequences, docs/temporal.md)",
               sequence_catalog()}};
 }
 

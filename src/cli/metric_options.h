@@ -1,20 +1,25 @@
-// The options every metric-driven command shares: --filter, --acuity, --norm.
+// The options every command that evaluates or optimizes E2 shares:
+// --objective NAME|SPEC and its component overrides --filter, --acuity, --norm.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <string_view>
 
 #include "aapat/core/metric.h"
+#include "aapat/core/objective.h"
 
 namespace aapat {
 
 struct MetricOptions {
-  std::string filter = "mitchell";
-  std::string acuity = "laine-aila";
-  std::string norm = "inf";
+  std::string objective;
+  std::string filter, acuity, norm;  // empty: the objective's
 
-  void add_to(CLI::App* cmd);
-  Metric make() const;
+  // `default_objective`: kDefaultObjective everywhere but the paper
+  // reproductions, which default to the papers' objective.
+  void add_to(CLI::App* cmd, std::string_view default_objective = kDefaultObjective);
+  Objective resolve() const;
+  Metric make() const { return resolve().metric(); }
 };
 
 }  // namespace aapat

@@ -20,6 +20,8 @@
 #include "aapat/study/optimize_run.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/sequence_optimizer.h"
+#include "aapat/temporal/temporal_json.h"
+#include "aapat/work/work_items.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
@@ -28,11 +30,10 @@
 namespace aapat {
 namespace {
 
-std::string optimize_text(const OptimizeRunResult& r, const Metric& metric) {
+std::string optimize_text(const OptimizeRunResult& r) {
   const StartRecord& best = r.best_start();
   std::string text =
-      fmt::format("optimized {} ({}, acuity {}, norm {})\n", r.description, metric.filter().name(),
-                  metric.acuity().name, format_norm(metric.norm()));
+      fmt::format("optimized {} under the {}\n", r.description, r.objective.caption());
   text += fmt::format(
       "{} starts ran in {:.2f} s; best start {}: E2 {:.4f} -> {:.4f} in {} iterations\n",
       r.search.starts.size(), r.seconds, best.start, best.run.initial_e2, best.run.final_e2,
@@ -77,29 +78,6 @@ std::string starts_csv(const MultiStartResult& result) {
   return csv;
 }
 
-JsonObject optimize_json(const OptimizeRunResult& r, const Metric& metric) {
-  const StartRecord& best = r.best_start();
-  JsonObject doc = json_report("optimize");
-  doc.update(JsonObject{{"family", family(r.best)},
-                        {"placement", r.placement},
-                        {"method", method_key(r.settings.optimizer.method)},
-                        {"filter", metric.filter().name()},
-                        {"acuity", metric.acuity().name},
-                        {"norm", format_norm(metric.norm())},
-                        {"seed", r.settings.seed},
-                        {"starts", r.search.starts.size()},
-                        {"best_start", best.start},
-                        {"initial_e2", best.run.initial_e2},
-                        {"e2", best.run.final_e2},
-                        {"iterations", best.run.iterations}});
-  if (r.lattice) {
-    doc["lattice"] = r.lattice->steps;
-    doc["lattice_e2"] = metric.evaluate(r.best).e2;
-  }
-  doc["pattern"] = JsonObject::parse(pattern_to_json(r.best));
-  return doc;
-}
-
 struct OptimizeOptions {
   std::string pattern, family, placement, seeds = "jittered", method = "descent";
   std::string output, csv, svg, api;
@@ -110,9 +88,9 @@ struct OptimizeOptions {
   double time_limit = 0;
   std::vector<int> lock;
   bool weights_only = false, nonnegative = false, starts_given = false, json = false;
+  bool border_samples = false;
   // --sequence K: a jitter / alternating-MSAA sequence instead of a pattern.
   int sequence = 0, samples_per_frame = 1;
-  bool acuity_given = false, norm_given = false;
   double flicker_weight = 3;
   std::string frame_measure = "worst";
   bool equal_weights = false;
@@ -128,12 +106,8 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   if (o.method != "descent" && o.method != "slsqp")
     throw Error(fmt::format("--method {}: a sequence is searched with slsqp (its epigraph form)",
                             o.method));
-  // The study's recommended objective unless --acuity / --norm say otherwise
-  // (docs/temporal.md: the Laine-Aila table mispredicts rendered flicker).
-  MetricOptions chosen = o.metric;
-  if (!o.acuity_given) chosen.acuity = "uniform:step=1";
-  if (!o.norm_given) chosen.norm = "2";
-  const Metric metric = chosen.make();
+  const Objective objective = o.metric.resolve();
+  const Metric metric = objective.metric();
   SequenceSearch s;
   s.frames = o.sequence;
   s.samples_per_frame = o.samples_per_frame;
@@ -154,30 +128,11 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   }
   if (!o.output.empty()) save_sequence_file(r.best, o.output);
   if (o.json) {
-    JsonObject doc = json_report("optimize");
-    doc.update(JsonObject{{"sequence", s.frames},
-                          {"samples_per_frame", s.samples_per_frame},
-                          {"model", o.model.text()},
-                          {"flicker_weight", s.flicker_weight},
-                          {"filter", metric.filter().name()},
-                          {"acuity", metric.acuity().name},
-                          {"norm", format_norm(metric.norm())},
-                          {"seed", s.seed},
-                          {"starts", s.starts},
-                          {"best_start", r.best_start},
-                          {"objective", r.objective},
-                          {"frame_measure", o.frame_measure},
-                          {"worst_e2", r.worst_e2},
-                          {"mean_e2", r.mean_e2},
-                          {"flicker", r.flicker},
-                          {"halton_objective", r.halton_objective}});
-    doc["result"] = JsonObject::parse(sequence_to_json(r.best));
-    out << json_text(doc);
+    out << json_text(sequence_search_json(s, o.model.text(), objective, r));
     return;
   }
-  out << fmt::format("optimized {} frames of {} sample(s) under {} ({}, acuity {}, norm {})\n",
-                     s.frames, s.samples_per_frame, o.model.text(), metric.filter().name(),
-                     metric.acuity().name, format_norm(metric.norm()));
+  out << fmt::format("optimized {} frames of {} sample(s) under {}, {}\n", s.frames,
+                     s.samples_per_frame, o.model.text(), objective.caption());
   out << fmt::format(
       "J = {} E2 + {} x mean flicker: {:.5f} (worst E2 {:.5f}, mean E2 {:.5f}, mean flicker "
       "{:.5f}); Halton(2,3) of the same length {:.5f}; best of {} starts: start {}\n",
@@ -203,7 +158,7 @@ void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ost
     throw Error("optimize: give either --family (a search) or a PATTERN to polish");
   if (!o.output.empty() && !is_pattern_path(o.output))
     throw Error(fmt::format("--output: '{}' must end in .json or .xyw", o.output));
-  const Metric metric = o.metric.make();
+  const Objective objective = o.metric.resolve();
   OptimizeRunSettings s;
   s.family = o.family;
   s.placement = o.placement;
@@ -217,6 +172,7 @@ void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ost
   if (starts_option->count() > 0 || o.pattern.empty()) s.starts = o.starts;
   s.seed = o.seed;
   s.lock = o.lock;
+  s.strictly_inside = !o.border_samples;
   s.threads = o.threads;
   s.lattice = o.lattice;
   s.api = o.api;
@@ -231,7 +187,7 @@ void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ost
   OptimizeRunResult r;
   {
     Progress bar("optimize");
-    r = optimize_run(metric, s, bar.callback());
+    r = optimize_run(objective, s, bar.callback());
   }
   // With --json the document alone goes to stdout.
   std::ostream discard(nullptr);
@@ -251,8 +207,8 @@ void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ost
     write_output(o.csv, starts_csv(r.search), out);
     wrote += "wrote " + o.csv + "\n";
   }
-  text << optimize_text(r, metric) << wrote;
-  if (o.json) out << json_text(optimize_json(r, metric));
+  text << optimize_text(r) << wrote;
+  if (o.json) out << json_text(optimize_run_json(r));
 }
 
 }  // namespace
@@ -287,7 +243,8 @@ Action add_optimize_command(CLI::App& app) {
                   "or the epigraph form with NLopt: slsqp, mma, ccsaq")
       ->capture_default_str()
       ->check(CLI::IsMember({"descent", "minimax", "anneal", "slsqp", "mma", "ccsaq"}));
-  cmd->add_option("--threads", o->threads, "threads (0: all cores)")->check(CLI::Range(0, 1024));
+  cmd->add_option("--threads", o->threads, "threads (0: all cores)")
+      ->check(CLI::Range(0, kMaxThreads));
   cmd->add_option("--lattice", o->lattice,
                   "then search positions on the 1/N-pixel lattice (16: programmable MSAA)")
       ->check(CLI::Range(2, 256));
@@ -295,6 +252,9 @@ Action add_optimize_command(CLI::App& app) {
                   "with --lattice: the pattern must fit this API profile (d3d12-tier1, "
                   "d3d12-tier2, vulkan, metal, gl)");
   cmd->add_flag("--weights-only", o->weights_only, "keep positions, optimize weights (Opt W)");
+  cmd->add_flag("--border-samples", o->border_samples,
+                "let samples of a family without shared borders onto the pixel's border (the "
+                "papers' closed pixel; default: strictly inside, as plain MSAA needs)");
   cmd->add_flag("--nonnegative", o->nonnegative, "keep weights >= 0 and report the E2 this costs");
   cmd->add_option("-o,--output", o->output, "write the best pattern (.json)");
   cmd->add_option("--csv", o->csv,
@@ -323,13 +283,7 @@ Action add_optimize_command(CLI::App& app) {
   o->model.add_to(cmd);
 
   auto* starts_option = cmd->get_option("--starts");
-  auto* acuity_option = cmd->get_option("--acuity");
-  auto* norm_option = cmd->get_option("--norm");
-  return [o, starts_option, acuity_option, norm_option](std::ostream& out) {
-    o->acuity_given = acuity_option->count() > 0;
-    o->norm_given = norm_option->count() > 0;
-    run_optimize(*o, starts_option, out);
-  };
+  return [o, starts_option](std::ostream& out) { run_optimize(*o, starts_option, out); };
 }
 
 }  // namespace aapat

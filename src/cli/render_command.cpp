@@ -57,7 +57,7 @@ struct Options {
 // The reference every figure of this run is measured against.
 ReferenceSettings reference_settings(const Options& o) {
   ReferenceSettings ref = o.reference.settings;
-  ref.seed = o.seed + 1000003;
+  ref.seed = reference_seed(o.seed);
   return ref;
 }
 
@@ -355,12 +355,11 @@ void run_temporal(const Options& o, std::ostream& out) {
   const Accumulation model = o.model.make();
   TaaScenes scenes;
   scenes.scene_at = [&](int) { return scene; };
-  scenes.reference_frame = [](int) { return 0; };
+  scenes.reference_frame = [](int) { return kStillFrame; };  // the single rendering's reference
   scenes.width = w;
   scenes.height = h;
   scenes.frames = o.frames > 0 ? o.frames : s.period();
   scenes.reference = reference_settings(o);
-  scenes.reference.seed -= 7919;  // the single rendering's reference
   Image last;
   const TaaResult r = render_taa(
       scenes, s, model, !o.cut, [&](int, const Image& img) { last = img; }, o.reference.source());

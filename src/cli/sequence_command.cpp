@@ -16,6 +16,7 @@
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/sequence_svg.h"
+#include "aapat/temporal/temporal_json.h"
 #include "aapat/temporal/temporal_metrics.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
@@ -70,11 +71,6 @@ void add_eval(CLI::App* parent, std::function<void(std::ostream&)>& action) {
     bool json = false, prefixes = false;
   };
   auto o = std::make_shared<Options>();
-  // The objective the study recommends (docs/study.md), also for time: the
-  // Laine-Aila table's axis weights mispredict the flicker of rendered edges
-  // at every angle (docs/temporal.md).
-  o->metric.acuity = "uniform:step=1";
-  o->metric.norm = "2";
   cmd->add_option("sequences", o->sequences, "sequence files or generator specs")->required();
   cmd->add_option("--pattern", o->pattern, "for the generators that take a pattern apart");
   o->metric.add_to(cmd);
@@ -87,7 +83,8 @@ void add_eval(CLI::App* parent, std::function<void(std::ostream&)>& action) {
   cmd->add_flag("--json", o->json, "print JSON (with the curves, flicker per phase and prefixes)");
   action = [o, cmd](std::ostream& out) {
     if (!cmd->parsed()) return;
-    const Metric metric = o->metric.make();
+    const Objective objective = o->metric.resolve();
+    const Metric metric = objective.metric();
     const Accumulation model = o->model.make();
     const std::optional<Pattern> pattern = optional_pattern(o->pattern);
     std::vector<std::pair<Sequence, TemporalReport>> rows;
@@ -98,51 +95,25 @@ void add_eval(CLI::App* parent, std::function<void(std::ostream&)>& action) {
     }
     if (o->json) {
       JsonObject js = json_report("sequence eval");
-      js.update(JsonObject{{"filter", metric.filter().name()},
-                           {"acuity", metric.acuity().name},
-                           {"norm", format_norm(metric.norm())},
-                           {"model", o->model.text()}});
+      js.update(objective_json(objective));
+      js["model"] = o->model.text();
       JsonObject::array_t list;
-      for (const auto& [s, r] : rows) {
-        JsonObject::array_t prefixes;
-        for (const PrefixMeasure& p : r.prefixes)
-          prefixes.push_back(JsonObject{{"samples", p.samples},
-                                        {"most_in_x", p.most_in_x},
-                                        {"most_in_y", p.most_in_y},
-                                        {"star", p.star},
-                                        {"l2_star", p.l2_star}});
-        list.push_back(
-            JsonObject{{"sequence", s.name},
-                       {"frames", s.period()},
-                       {"family", family(s.frames[0])},
-                       {"worst_e2", r.worst_e2},
-                       {"mean_e2", r.mean_e2},
-                       {"steady_e2", r.steady_e2},
-                       {"cut_curve", r.cut_curve},
-                       {"settle_frame", r.settle_frame},
-                       {"worst_flicker", r.worst_flicker},
-                       {"mean_flicker", r.mean_flicker},
-                       {"flicker", r.flicker},
-                       {"mean_offset", JsonObject::array({r.mean_offset.x, r.mean_offset.y})},
-                       {"worst_centroid", r.worst_centroid},
-                       {"prefixes", prefixes}});
-      }
+      for (const auto& [s, r] : rows) list.push_back(temporal_report_json(s, r));
       js["rows"] = list;
       out << json_text(js);
       return;
     }
-    out << fmt::format("{}; filter {}, acuity {}, norm {}\n", o->model.text(),
-                       metric.filter().name(), metric.acuity().name, format_norm(metric.norm()));
+    out << fmt::format("{}; {}\n", o->model.text(), objective.caption());
     size_t width = 8;
     for (const auto& row : rows) width = std::max(width, row.first.name.size());
     out << fmt::format("{:<{}} {:>6} {:>9} {:>9} {:>9} {:>9} {:>7} {:>9} {:>9} {:>9}\n", "sequence",
-                       width, "frames", "worst E2", "mean E2", "flicker", "mean flk", "settle",
+                       width, "frames", "worst E2", "mean E2", "flicker", "worst flk", "settle",
                        "offset", "centroid", "star D*");
     for (const auto& [s, r] : rows)
       out << fmt::format(
           "{:<{}} {:>6} {:>9.4f} {:>9.4f} {:>9.4f} {:>9.4f} {:>7} {:>9.5f} {:>9.5f} "
           "{:>9.5f}\n",
-          s.name, width, s.period(), r.worst_e2, r.mean_e2, r.worst_flicker, r.mean_flicker,
+          s.name, width, s.period(), r.worst_e2, r.mean_e2, r.mean_flicker, r.worst_flicker,
           r.settle_frame, std::hypot(r.mean_offset.x, r.mean_offset.y), r.worst_centroid,
           r.prefixes.back().star);
     if (!o->prefixes) return;
@@ -197,8 +168,6 @@ void add_show(CLI::App* parent, std::function<void(std::ostream&)>& action) {
     int frames = 0;
   };
   auto o = std::make_shared<Options>();
-  o->metric.acuity = "uniform:step=1";
-  o->metric.norm = "2";
   cmd->add_option("sequences", o->sequences,
                   "sequence files or generator specs (the drawing: the first)")
       ->required();

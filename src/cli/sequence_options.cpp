@@ -20,25 +20,15 @@ void ModelOptions::add_to(CLI::App* cmd) {
 }
 
 Accumulation ModelOptions::make() const {
-  Accumulation a;
-  a.kind = model == "box" ? AccumulationKind::box : AccumulationKind::ema;
-  a.alpha = alpha;
-  a.window = window;
-  if (!resolve.empty()) a.resolve = make_filter(resolve);
   try {
-    validate(a);
+    return make_accumulation(model, alpha, window, resolve);
   } catch (const ParameterError& e) {
     throw Error(fmt::format("--{}{}", e.parameter(), e.detail()));
   }
-  return a;
 }
 
 std::string ModelOptions::text() const {
-  std::string t = model == "box" ? (window ? fmt::format("box of {} frames", window)
-                                           : std::string("box of the period"))
-                                 : fmt::format("EMA alpha {}", alpha);
-  if (!resolve.empty()) t += fmt::format(", {} resolve", resolve);
-  return t;
+  return accumulation_text(make());
 }
 
 }  // namespace aapat

@@ -46,18 +46,17 @@ Action add_snap_command(CLI::App& app) {
       throw Error(fmt::format("--output: '{}' must end in .json or .xyw", o->output));
     if (o->nonnegative && !o->weights)
       throw Error("--nonnegative constrains the weights --optimize-weights finds: add it");
-    const Metric metric = o->metric.make();
+    const Objective objective = o->metric.resolve();
+    const Metric metric = objective.metric();
     const Pattern before = resolve_pattern(o->pattern);
     const SnapResult r = snap_study(metric, before, o->lattice, o->weights, o->nonnegative);
     const Pattern& after = r.snapped;
     if (!o->output.empty()) save_pattern_file(after, o->output);
     if (o->json) {
       JsonObject js = json_report("snap");
-      js.update(JsonObject{{"pattern", before.name},
-                           {"lattice", o->lattice},
-                           {"filter", metric.filter().name()},
-                           {"acuity", metric.acuity().name},
-                           {"e2_before", r.e2_before},
+      js.update(JsonObject{{"pattern", before.name}, {"lattice", o->lattice}});
+      js.update(objective_json(objective));
+      js.update(JsonObject{{"e2_before", r.e2_before},
                            {"e2_snapped", r.e2_snapped},
                            {"largest_move", r.largest_move},
                            {"family", family(after)},
@@ -66,6 +65,7 @@ Action add_snap_command(CLI::App& app) {
       out << json_text(js);
       return;
     }
+    out << objective.caption() << "\n";
     out << fmt::format(
         "{} on the 1/{} lattice ({}): E2 {:.4f} -> {:.4f} ({:+.4f}); largest move "
         "{:.4f} pixel\n",

@@ -31,11 +31,11 @@ void add_line_spectrum_options(CLI::App* cmd, SpectrumOptions& o) {
                   "Goss-Wu Fig. 8: 1D 'poisson' or 'jittered' with unit mean spacing");
   cmd->add_option("--frequencies", o.frequencies, "1D: frequencies evaluated")
       ->capture_default_str()
-      ->check(CLI::Range(16, 10000000));
+      ->check(CLI::Range(kMinLineFrequencies, kMaxLineFrequencies));
   cmd->add_option("--max-frequency", o.max_frequency,
                   "1D: highest frequency, cycles per mean spacing")
       ->capture_default_str()
-      ->check(CLI::Range(0.01, 1000.0));
+      ->check(CLI::Range(kMinLineMaxFrequency, kMaxLineMaxFrequency));
 }
 
 std::string radial_svg(const SpectrumStudy& st, const std::string& source, int realizations) {

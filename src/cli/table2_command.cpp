@@ -48,16 +48,19 @@ Action add_table2_command(CLI::App& app) {
                             {"frames", a.frames},
                             {"width", a.width},
                             {"height", a.height},
-                            {"reference", describe_reference(a.reference)},
-                            {"rows", js}});
+                            {"reference", describe_reference(a.reference)}});
+      doc.update(objective_json(named_objective(kPapersObjective)));
+      doc["rows"] = js;
       out << json_text(doc);
       return;
     }
     out << fmt::format(
         "Hasselgren Table 2 re-measured: translating circle, {} frames of {}x{}, reference {} "
-        "jittered samples per pixel with {}\naapat (paper)         E2               RMSE           "
-        "   max dev.\n",
-        a.frames, a.width, a.width, a.reference.samples, make_filter(a.reference.filter).name());
+        "jittered samples per pixel with {}; E2 under the {}\naapat (paper)         E2             "
+        "  "
+        "RMSE              max dev.\n",
+        a.frames, a.width, a.width, a.reference.samples, make_filter(a.reference.filter).name(),
+        named_objective(kPapersObjective).caption());
     for (const Table2Row& r : rows)
       out << fmt::format("{:<21} {:>6.3f} ({:.3f})  {:>6.3f} ({:.3f})  {:>4} ({})\n", r.label, r.e2,
                          r.paper_e2, r.rmse, r.paper_rmse, r.max_deviation, r.paper_max_deviation);

@@ -29,7 +29,8 @@ struct Table3Options {
 };
 
 void run_table3(Table3Options& o, std::ostream& out) {
-  const Metric metric = o.metric.make();
+  const Objective objective = o.metric.resolve();
+  const Metric metric = objective.metric();
   std::vector<Table3Row> rows;
   {
     Progress bar("table3");
@@ -50,18 +51,17 @@ void run_table3(Table3Options& o, std::ostream& out) {
     doc.update(JsonObject{{"family", "P(16,16,4)"},
                           {"patterns", o.patterns},
                           {"seed", o.seed},
-                          {"method", o.method},
-                          {"filter", metric.filter().name()},
-                          {"acuity", metric.acuity().name},
-                          {"rows", js}});
+                          {"method", o.method}});
+    doc.update(objective_json(objective));
+    doc["rows"] = js;
     out << json_text(doc);
     return;
   }
   out << fmt::format(
-      "Laine-Aila Table 3 re-run: P(16,16,4), {} patterns per distribution, seed {}, filter {}, "
-      "acuity {}\naapat (paper)   Min              Avg              Max              Opt W     "
+      "Laine-Aila Table 3 re-run: P(16,16,4), {} patterns per distribution, seed {}, {}\naapat "
+      "(paper)   Min              Avg              Max              Opt W     "
       "       Opt W+P\n",
-      o.patterns, o.seed, metric.filter().name(), metric.acuity().name);
+      o.patterns, o.seed, objective.caption());
   for (const Table3Row& r : rows) {
     out << fmt::format("{:<14}", r.distribution);
     for (int c = 0; c < 5; ++c) out << fmt::format("  {:.3f} ({:.3f})", r.e2[c], r.paper[c]);
@@ -87,7 +87,7 @@ Action add_table3_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"descent", "minimax", "slsqp", "mma", "ccsaq"}));
   cmd->add_flag("--json", o->json, "print the numbers as JSON");
-  o->metric.add_to(cmd);
+  o->metric.add_to(cmd, kPapersObjective);
   return [o](std::ostream& out) { run_table3(*o, out); };
 }
 

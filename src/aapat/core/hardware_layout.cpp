@@ -85,7 +85,9 @@ HardwareLayout hardware_layout(const Pattern& p, const ApiProfile& profile, int 
   validate(p);
   if (const std::string off = off_lattice_sample(p, kSide); !off.empty())
     throw Error(
-        fmt::format("{}: {}; snap it first (aapat snap {} --lattice 16)", p.name, off, p.name));
+        fmt::format("{}: {}; snap it first (aapat export {} --snap, or aapat snap {} --lattice "
+                    "16 -o FILE)",
+                    p.name, off, p.name, p.name));
   if (grid_w == 0 || grid_h == 0) {
     grid_w = p.tile_w;
     grid_h = p.tile_h;

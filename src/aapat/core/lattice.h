@@ -1,6 +1,6 @@
 // The lattice of programmable sample positions: every API that lets a
 // program place MSAA samples (Direct3D 12, Vulkan, Metal, OpenGL) does so on
-// a 1/16-pixel grid (../shared/reference/README.md). Snapping keeps a
+// a 1/16-pixel grid (data/README.md). Snapping keeps a
 // pattern's structure: a sample inside its pixel stays inside (at most
 // 7/16 from the centre, so it never lands on a border it does not share),
 // a shared border sample stays on its border (sliding along it, and off the

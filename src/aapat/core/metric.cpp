@@ -134,11 +134,15 @@ double parse_norm(std::string_view text, std::string_view what) {
   return text == "inf" || text == "infinity" ? Metric::kMaxNorm : parse_number(text, what);
 }
 
+void check_norm(double norm) {
+  if (!(norm >= 1) || (norm != Metric::kMaxNorm && norm > Metric::kMaxFiniteNorm))
+    throw Error(fmt::format("norm: {} is not a valid p: use a number in [1, {}] or inf", norm,
+                            Metric::kMaxFiniteNorm));
+}
+
 Metric::Metric(Filter filter, AcuityTable acuity, double norm)
     : filter_(std::move(filter)), acuity_(std::move(acuity)), norm_(norm) {
-  if (!(norm_ >= 1) || (norm_ != kMaxNorm && norm_ > kMaxFiniteNorm))
-    throw Error(fmt::format("norm: {} is not a valid p: use a number in [1, {}] or inf", norm_,
-                            kMaxFiniteNorm));
+  check_norm(norm_);
   validate(acuity_);
   for (double a : acuity_.angles_deg) {
     cos_.push_back(std::cos(radians(a)));

@@ -120,4 +120,7 @@ class Metric {
   std::vector<double> cos_, sin_, weight_sq_;
 };
 
+// Throws Error unless norm is a valid p: in [1, Metric::kMaxFiniteNorm] or infinity.
+void check_norm(double norm);
+
 }  // namespace aapat

@@ -89,7 +89,7 @@ const std::vector<Entry>& entries() {
          return one_pixel("diagonal", {{-0.25, -0.25}, {0.25, 0.25}});
        }},
       {{"diagonal-hasselgren", "position-optimized diagonal, (+-0.259, +-0.339)",
-        "Hasselgren et al. 2005, Table 2 'Diagonal' (E2 0.692; shared/reference/README.md)"},
+        "Hasselgren et al. 2005, Table 2 'Diagonal' (E2 0.692; data/README.md)"},
        [] {
          return one_pixel("diagonal-hasselgren", {{-0.259, -0.339}, {0.259, 0.339}});
        }},
@@ -110,7 +110,7 @@ const std::vector<Entry>& entries() {
                           {0.5, 0.125, 0.125, 0.125, 0.125}, {1, true});
        }},
       {{"quincunx-hasselgren", "weight-optimized Quincunx: centre 0.41, corners 0.1475",
-        "Hasselgren et al. 2005, Table 2 'Quincunx' (E2 0.484; shared/reference/README.md)"},
+        "Hasselgren et al. 2005, Table 2 'Quincunx' (E2 0.484; data/README.md)"},
        [] {
          return one_pixel("quincunx-hasselgren",
                           {{0, 0}, {-0.5, -0.5}, {0.5, -0.5}, {-0.5, 0.5}, {0.5, 0.5}},

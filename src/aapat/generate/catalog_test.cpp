@@ -41,7 +41,7 @@ TEST(PublishedE2, HasselgrenTable2E2Column) {
   EXPECT_NEAR(e2_of("hasselgren-f"), 0.359, kTol);
 }
 
-// shared/reference/README.md: the textbook diagonal at (+-1/4, +-1/4).
+// data/README.md: the textbook diagonal at (+-1/4, +-1/4).
 TEST(PublishedE2, TextbookDiagonal) {
   EXPECT_NEAR(e2_of("diagonal"), 0.799, kTol);
 }

@@ -271,7 +271,7 @@ const std::vector<Entry>& entries() {
          return p;
        }},
       {{"n-queens", "N x N grid cells, none sharing a row, column or diagonal; lowest E2 of all",
-        "Goss & Wu 2000, Sec. 3.2.2.1 (criterion: docs/generators.md)"},
+        "Goss & Wu 2000, Sec. 3.2.2.1 (criterion: docs/analysis.md)"},
        {},
        [](int n, const Params&, std::mt19937_64&) {
          // Past 20 the lexicographic search for the first solutions takes seconds to minutes.

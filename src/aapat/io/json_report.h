@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "aapat/core/objective.h"
+
 namespace aapat {
 
 using JsonObject = nlohmann::ordered_json;
@@ -17,6 +19,11 @@ inline constexpr int kJsonSchema = 1;
 
 // {"command": command, "schema": kJsonSchema}, to be filled in.
 JsonObject json_report(std::string_view command);
+
+// The objective a result's E2 is under, the same four keys in every
+// document: "objective" (its name, or its components when it has none),
+// "filter", "acuity", "norm" ("inf" or p).
+JsonObject objective_json(const Objective& objective);
 
 // Indented text with a final newline; bytes that are not UTF-8 (a file name)
 // are replaced rather than failing.

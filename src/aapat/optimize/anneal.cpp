@@ -4,7 +4,7 @@
 
 namespace aapat {
 
-RunResult anneal(const Objective& objective, Problem& problem, const OptimizerSettings& s,
+RunResult anneal(const ProblemE2& objective, Problem& problem, const OptimizerSettings& s,
                  std::mt19937_64& rng) {
   Workspace ws;
   RunResult r = begin_run(objective, problem, s.nonnegative_weights, ws);

@@ -5,12 +5,12 @@
 
 #include <random>
 
-#include "aapat/optimize/objective.h"
+#include "aapat/optimize/problem_e2.h"
 #include "aapat/optimize/settings.h"
 
 namespace aapat {
 
-RunResult anneal(const Objective& objective, Problem& problem, const OptimizerSettings& settings,
+RunResult anneal(const ProblemE2& objective, Problem& problem, const OptimizerSettings& settings,
                  std::mt19937_64& rng);
 
 }  // namespace aapat

@@ -17,7 +17,7 @@ void step(const Problem& from, const Direction& dir, double c0, bool nonnegative
 
 }  // namespace
 
-RunResult descend(const Objective& objective, Problem& problem, const OptimizerSettings& s) {
+RunResult descend(const ProblemE2& objective, Problem& problem, const OptimizerSettings& s) {
   if (is_epigraph(s.method))
     return epigraph(objective, problem, s,
                     s.method == Method::kSlsqp ? EpigraphAlgorithm::slsqp
@@ -90,7 +90,7 @@ RunResult descend(const Objective& objective, Problem& problem, const OptimizerS
   return r;
 }
 
-double optimize_weights(const Objective& objective, Problem& problem,
+double optimize_weights(const ProblemE2& objective, Problem& problem,
                         const OptimizerSettings& settings) {
   OptimizerSettings s = settings;
   s.weights_only = true;
@@ -105,7 +105,7 @@ Pattern with_optimized_weights(const Metric& metric, const Pattern& p, bool nonn
   Problem problem = problem_from_pattern(p);
   OptimizerSettings s;
   s.nonnegative_weights = nonnegative;
-  optimize_weights(Objective(metric), problem, s);
+  optimize_weights(ProblemE2(metric), problem, s);
   Pattern q = pattern_of(problem);
   q.name = p.name;
   q.description = p.description;

@@ -7,19 +7,19 @@
 // never ends worse than it started.
 #pragma once
 
-#include "aapat/optimize/objective.h"
+#include "aapat/optimize/problem_e2.h"
 #include "aapat/optimize/settings.h"
 
 namespace aapat {
 
 // With Method::kMinimax the direction is the eps-active minimum-norm one
-// (Objective::minimax_direction) and a step is taken only where it lowers E2.
-RunResult descend(const Objective& objective, Problem& problem, const OptimizerSettings& settings);
+// (ProblemE2::minimax_direction) and a step is taken only where it lowers E2.
+RunResult descend(const ProblemE2& objective, Problem& problem, const OptimizerSettings& settings);
 
 // The weights alone, positions held (Laine-Aila's "Opt W"): the heuristic,
 // then the minimax polish. E1^2 is quadratic in the weights, so this is a
 // convex problem and the result is its optimum to the descent's tolerance.
-double optimize_weights(const Objective& objective, Problem& problem,
+double optimize_weights(const ProblemE2& objective, Problem& problem,
                         const OptimizerSettings& settings);
 // The pattern with its weights optimized, positions as they are.
 Pattern with_optimized_weights(const Metric& metric, const Pattern& p, bool nonnegative);

@@ -62,7 +62,7 @@ struct Layout {
 };
 
 struct Context {
-  const Objective& objective;
+  const ProblemE2& objective;
   Problem& problem;
   Layout layout;
   bool nonnegative;
@@ -149,7 +149,7 @@ nlopt_algorithm nlopt_of(EpigraphAlgorithm a) {
 
 }  // namespace
 
-RunResult epigraph(const Objective& objective, Problem& problem, const OptimizerSettings& settings,
+RunResult epigraph(const ProblemE2& objective, Problem& problem, const OptimizerSettings& settings,
                    EpigraphAlgorithm algorithm) {
   if (objective.metric().norm() != Metric::kMaxNorm)
     throw ParameterError("method", fmt::format(": the epigraph methods minimize the maximum over "

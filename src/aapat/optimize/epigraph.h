@@ -15,7 +15,7 @@
 
 #include <string_view>
 
-#include "aapat/optimize/objective.h"
+#include "aapat/optimize/problem_e2.h"
 
 namespace aapat {
 
@@ -24,7 +24,7 @@ enum class EpigraphAlgorithm { slsqp, mma, ccsaq };
 
 // Minimizes E2 from `problem`'s current values, at most
 // settings.max_iterations evaluations; never ends worse than it started.
-RunResult epigraph(const Objective& objective, Problem& problem, const OptimizerSettings& settings,
+RunResult epigraph(const ProblemE2& objective, Problem& problem, const OptimizerSettings& settings,
                    EpigraphAlgorithm algorithm);
 
 }  // namespace aapat

@@ -24,7 +24,7 @@ const Metric& metric() {
 // find the same optimum. This checks the weights' gradients through the
 // eliminated last weight of each group.
 TEST(Epigraph, WeightsAloneReachTheConvexOptimum) {
-  const Objective objective(metric());
+  const ProblemE2 objective(metric());
   for (const char* name : {"rgss", "quincunx", "flipquad", "msaa-8"}) {
     Problem descent = problem_from_pattern(catalog_pattern(name));
     const double reference = optimize_weights(objective, descent, OptimizerSettings{});
@@ -58,7 +58,7 @@ TEST(Epigraph, SlsqpReachesTheBestP114) {
 // Non-negative weights stay non-negative (each group's eliminated weight
 // included), and cost at most what the unconstrained run reaches above it.
 TEST(Epigraph, NonNegativeWeightsStayNonNegative) {
-  const Objective objective(metric());
+  const ProblemE2 objective(metric());
   Problem p = problem_from_pattern(catalog_pattern("msaa-16"));
   OptimizerSettings s;
   s.nonnegative_weights = true;
@@ -71,7 +71,7 @@ TEST(Epigraph, NonNegativeWeightsStayNonNegative) {
 TEST(Epigraph, OnlyTheMaximumOverAnglesHasAnEpigraph) {
   const Metric l2(make_filter("mitchell"), laine_aila_acuity(), 2);
   Problem p = problem_from_pattern(catalog_pattern("rgss"));
-  EXPECT_THROW(epigraph(Objective(l2), p, OptimizerSettings{}, EpigraphAlgorithm::slsqp),
+  EXPECT_THROW(epigraph(ProblemE2(l2), p, OptimizerSettings{}, EpigraphAlgorithm::slsqp),
                ParameterError);
 }
 

@@ -7,7 +7,7 @@
 #include "aapat/optimize/descent.h"
 #include "aapat/optimize/family.h"
 #include "aapat/optimize/multistart.h"
-#include "aapat/optimize/objective.h"
+#include "aapat/optimize/problem_e2.h"
 #include "aapat/work/byte_codec.h"
 #include "aapat/work/work_items.h"
 
@@ -25,10 +25,18 @@ bool can_take(double v, double limit, int steps) {
 
 LatticeRun lattice_descent(const Metric& metric, Problem& problem, int steps,
                            const OptimizerSettings& settings, bool y_down) {
-  const Objective objective(metric);
+  const ProblemE2 objective(metric);
   Workspace ws;
   const bool borders = problem.layout.footprint.plus;
-  for (Generator& g : problem.generators) g.pos = snap_sample(g.pos, steps, borders, y_down);
+  for (Generator& g : problem.generators) {
+    g.pos = snap_sample(g.pos, steps, borders, y_down);
+    if (g.freedom == Freedom::kFree && g.limit < 0.5) {
+      // A sample kept strictly inside stays so on the lattice (the API's
+      // -8/16, on the border, is not taken).
+      const double inside = std::floor(g.limit * steps) / steps;
+      g.pos = {std::clamp(g.pos.x, -inside, inside), std::clamp(g.pos.y, -inside, inside)};
+    }
+  }
   LatticeRun run;
   run.snapped_e2 = objective.e2(problem, ws);
   double e2 = optimize_weights(objective, problem, settings);

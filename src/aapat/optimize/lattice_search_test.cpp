@@ -8,7 +8,7 @@
 #include "aapat/core/hardware_layout.h"
 #include "aapat/core/lattice.h"
 #include "aapat/generate/catalog.h"
-#include "aapat/optimize/objective.h"
+#include "aapat/optimize/problem_e2.h"
 
 namespace aapat {
 namespace {
@@ -41,7 +41,7 @@ TEST(LatticeSearch, EndsAtALocalOptimumOfTheLattice) {
   const LatticeRun run = lattice_descent(metric, p, 16, s);
   EXPECT_LE(run.final_e2, run.snapped_e2 + 1e-12);
   EXPECT_GT(run.moves, 0);
-  const Objective objective(metric);
+  const ProblemE2 objective(metric);
   Workspace ws;
   EXPECT_NEAR(objective.e2(p, ws), run.final_e2, 1e-12);
   for (Generator& g : p.generators) {

@@ -88,7 +88,7 @@ std::vector<MultiStartResult> multistart_all(const std::vector<MultiStartJob>& j
                                              const ProgressFunction& progress) {
   // Item k is start k - first[j] of the job j whose range holds k.
   std::vector<int> first = {0};
-  std::vector<Objective> objectives;
+  std::vector<ProblemE2> objectives;
   objectives.reserve(jobs.size());
   for (const MultiStartJob& job : jobs) {
     first.push_back(first.back() + job.starts);

@@ -11,7 +11,7 @@
 #include "aapat/optimize/descent.h"
 #include "aapat/optimize/family.h"
 #include "aapat/optimize/multistart.h"
-#include "aapat/optimize/objective.h"
+#include "aapat/optimize/problem_e2.h"
 #include "testing/error_message.h"
 
 namespace aapat {
@@ -101,7 +101,7 @@ TEST(HasselgrenTable2, SchemesReoptimizedEndAtOrBelowPublishedE2) {
   const std::vector<std::pair<std::string, double>> published = {
       {"hasselgren-a", 0.554}, {"hasselgren-b", 0.531}, {"hasselgren-c", 0.527},
       {"hasselgren-d", 0.497}, {"hasselgren-e", 0.488}, {"hasselgren-f", 0.359}};
-  const Objective objective(default_metric());
+  const ProblemE2 objective(default_metric());
   for (const auto& [name, e2] : published) {
     const Pattern start = catalog_pattern(name);
     Problem problem = problem_from_pattern(start);
@@ -128,7 +128,7 @@ TEST(Optimizer, SameSeedSameResultAnyThreadCount) {
 }
 
 TEST(Optimizer, WeightsOnlyKeepsPositionsAndNonNegativeKeepsSigns) {
-  const Objective objective(default_metric());
+  const ProblemE2 objective(default_metric());
   Problem problem = problem_from_pattern(catalog_pattern("quincunx"));
   OptimizerSettings s;
   s.weights_only = true;
@@ -153,7 +153,7 @@ TEST(Optimizer, TermGradientsMatchCentralDifferences) {
   const std::vector<Pattern> patterns = {catalog_pattern("hasselgren-d"),
                                          catalog_pattern("quincunx-hasselgren"), p14};
   const Metric metric(make_filter("mitchell"), uniform_acuity(30));
-  const Objective objective(metric);
+  const ProblemE2 objective(metric);
   for (const Pattern& pattern : patterns) {
     Problem pr = problem_from_pattern(pattern);
     Workspace ws;
@@ -254,7 +254,7 @@ TEST(Family, SeedPatternsAreValidAndCostN) {
 // they differ only in how a kernel's inputs are assembled (the problem shifts
 // generators by whole pixels, the pattern its samples, and the metric divides
 // the weights by their sum), so they agree to rounding: 1e-12 relative.
-RC_GTEST_PROP(Objective, E2EqualsTheMetricsE2OfTheSamePattern, ()) {
+RC_GTEST_PROP(ProblemE2, E2EqualsTheMetricsE2OfTheSamePattern, ()) {
   const char* families[] = {"P(1,1,4)", "P(1,1+,2)", "P(4,1+,2)",
                             "P(4,4,3)", "P(1,4,5)",  "P(9,1,2)"};
   const char* placements[] = {
@@ -271,7 +271,7 @@ RC_GTEST_PROP(Objective, E2EqualsTheMetricsE2OfTheSamePattern, ()) {
   const Pattern p = seed_pattern(spec, kinds[*rc::gen::inRange(0, 3)], rng, filter);
   const Problem problem = problem_from_pattern(p);
   Workspace ws;
-  const double objective = Objective(metric).e2(problem, ws);
+  const double objective = ProblemE2(metric).e2(problem, ws);
   RC_ASSERT(std::abs(objective - metric.evaluate(pattern_of(problem)).e2) <= 1e-12 * objective);
   RC_ASSERT(std::abs(objective - metric.evaluate(p).e2) <= 1e-12 * objective);
 }

@@ -134,6 +134,17 @@ Problem perturbed(const Problem& problem, double amount, std::mt19937_64& rng) {
   return p;
 }
 
+void keep_strictly_inside(Problem& pr, double margin) {
+  if (pr.layout.footprint.plus) return;
+  for (Generator& g : pr.generators)
+    if (g.freedom == Freedom::kFree) g.limit = std::min(g.limit, 0.5 - margin);
+  for (Generator& g : pr.generators) {
+    if (g.freedom != Freedom::kFree) continue;
+    g.pos.x = std::clamp(g.pos.x, -g.limit, g.limit);
+    g.pos.y = std::clamp(g.pos.y, -g.limit, g.limit);
+  }
+}
+
 void project_to_constraints(Problem& pr, bool nonnegative) {
   for (Generator& g : pr.generators) {
     if (g.freedom == Freedom::kFree || g.freedom == Freedom::kSlideX)

@@ -68,6 +68,18 @@ void lock_samples(Problem& problem, const std::vector<int>& set0_samples);
 // pixels, then put back on the constraints.
 Problem perturbed(const Problem& problem, double amount, std::mt19937_64& rng);
 
+// How far inside its pixel a sample of a family without shared borders is
+// kept by keep_strictly_inside: a sample on the border would read as one its
+// neighbour shares (a P(1,1,12) search that put samples on both sides of the
+// pixel became P(1,1,9)); 1/64 pixel is a quarter of the API lattice's step.
+inline constexpr double kInsideMargin = 1.0 / 64;
+
+// Keeps the free samples of a family without shared borders at least
+// `margin` inside the pixel (their limit, then projected): the catalog's
+// aapat-N hold N samples strictly inside, as plain MSAA needs. Sharing
+// footprints already keep their inside samples off the border.
+void keep_strictly_inside(Problem& problem, double margin = kInsideMargin);
+
 // Keeps every generator inside its freedom and limits, and (optionally
 // non-negative) weights summing to 1 in each group.
 void project_to_constraints(Problem& problem, bool nonnegative_weights);

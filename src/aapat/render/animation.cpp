@@ -15,7 +15,7 @@ ImageError animate(const AnimationSettings& a, const Sampling& sampling,
     const Scene scene = animation_frame(a.animation, a.width, a.height, f, a.frames);
     const Image image = render(scene, a.width, a.height, sampling, filter);
     ReferenceSettings ref = a.reference;
-    ref.seed += 7919 * (f + 1);
+    ref.seed = frame_reference_seed(ref.seed, f);
     const Image reference = source(scene, a.width, a.height, ref, image.offset);
     const ImageError e = compare(image, reference);
     for (int i = 0; i < 256; ++i) total.count[i] += e.count[i];

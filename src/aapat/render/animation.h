@@ -17,7 +17,7 @@ namespace aapat {
 struct AnimationSettings {
   std::string animation = "circle";
   int width = 64, height = 64, frames = 32;
-  // Hasselgren's animations: 256 jittered samples; frame f's seed is seed + 7919 (f + 1).
+  // Hasselgren's animations: 256 jittered samples; frame f's seed is frame_reference_seed(seed, f).
   ReferenceSettings reference{256, "mitchell", 1};
 };
 

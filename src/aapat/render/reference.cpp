@@ -37,4 +37,12 @@ Image render_reference(const Scene& scene, int width, int height, const Referenc
   return img;
 }
 
+uint64_t reference_seed(uint64_t render_seed) {
+  return render_seed + 1000003;
+}
+
+uint64_t frame_reference_seed(uint64_t reference_seed, int frame) {
+  return reference_seed + 7919 * static_cast<uint64_t>(static_cast<int64_t>(frame) + 1);
+}
+
 }  // namespace aapat

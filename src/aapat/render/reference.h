@@ -16,6 +16,15 @@ struct ReferenceSettings {
   uint64_t seed = 1000004;
 };
 
+// The reference seed rules, written once. A rendering with seed S is
+// measured against a reference seeded S + 1000003 (independent of the
+// rendering's own jitter); frame f of an animation against one seeded
+// reference seed + 7919 (f + 1), so that frames' references are independent.
+// Frame -1 is a still image: the reference seed itself.
+inline constexpr int kStillFrame = -1;
+uint64_t reference_seed(uint64_t render_seed);
+uint64_t frame_reference_seed(uint64_t reference_seed, int frame);
+
 // Reconstructed at (i + offset, j + offset), to match a rendering whose
 // footprint shifts it (Image::offset).
 Image render_reference(const Scene& scene, int width, int height, const ReferenceSettings& r,

@@ -189,7 +189,7 @@ SceneFrames scene_frames(const StudySettings& s, const ReferenceSource& referenc
     out.shifted.emplace_back();
     for (size_t f = 0; f < out.frames.back().size(); ++f) {
       ReferenceSettings ref = s.reference;
-      ref.seed += 7919 * (f + 1);
+      ref.seed = frame_reference_seed(ref.seed, static_cast<int>(f));
       out.references.back().push_back(references(out.frames.back()[f], s.size, s.size, ref, 0));
       if (shifted)
         out.shifted.back().push_back(references(out.frames.back()[f], s.size, s.size, ref, 0.5));

@@ -6,6 +6,7 @@
 
 #include "aapat/core/lattice.h"
 #include "aapat/generate/enumerate.h"
+#include "aapat/io/pattern_json.h"
 #include "aapat/optimize/lattice_search.h"
 
 namespace aapat {
@@ -20,10 +21,13 @@ SeedFunction polish_seeds(const Problem& start, uint64_t seed) {
   };
 }
 
-SeedFunction locked(SeedFunction seeds, std::vector<int> lock) {
-  return [seeds = std::move(seeds), lock = std::move(lock)](int i) {
+// Locked samples, and every free sample of a family without shared borders
+// strictly inside the pixel (problem.h: keep_strictly_inside).
+SeedFunction constrained(SeedFunction seeds, std::vector<int> lock, bool strictly_inside) {
+  return [seeds = std::move(seeds), lock = std::move(lock), strictly_inside](int i) {
     Problem p = seeds(i);
     lock_samples(p, lock);
+    if (strictly_inside) keep_strictly_inside(p);
     return p;
   };
 }
@@ -132,6 +136,7 @@ OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& 
   const int starts = s.starts.value_or(polish ? 1 : 16);
   OptimizeRunResult out;
   out.settings = s;
+  out.objective = objective_of(metric);
   out.method = method_name(s.optimizer.method);
   const std::vector<std::string> placements =
       polish ? std::vector<std::string>{s.placement} : placements_of(s);
@@ -146,6 +151,7 @@ OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& 
   if (polish) {
     Problem start = problem_from_pattern(*s.start);
     lock_samples(start, s.lock);
+    if (s.strictly_inside) keep_strictly_inside(start);
     make_seed = polish_seeds(start, s.seed);
     out.search = multistart(metric, starts, s.seed, make_seed, s.optimizer, s.threads, report);
     out.placement = s.placement;
@@ -155,7 +161,8 @@ OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& 
     const SeedKind kind = parse_seed_kind(s.seeds);
     for (const std::string& placement : placements) {
       const FamilySpec spec = parse_family(s.family, placement);
-      SeedFunction seeds = locked(family_seeds(spec, kind, s.seed, metric.filter()), s.lock);
+      SeedFunction seeds =
+          constrained(family_seeds(spec, kind, s.seed, metric.filter()), s.lock, s.strictly_inside);
       MultiStartResult r =
           multistart(metric, starts, s.seed, seeds, s.optimizer, s.threads, report);
       before += starts;
@@ -182,8 +189,12 @@ OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& 
 
   Pattern& p = out.best;
   p = pattern_of(out.search.best_problem);
-  p.name = polish ? p.name + "-optimized"
-                  : fmt::format("best-{}", parse_family(s.family, out.placement).text());
+  // Named after its settings, so that two designs can be told apart in a table.
+  const std::string target =
+      !s.api.empty() ? "-" + s.api : (s.lattice > 0 ? fmt::format("-lattice{}", s.lattice) : "");
+  p.name = polish ? fmt::format("{}-optimized-{}{}", p.name, out.objective.tag(), target)
+                  : fmt::format("{}-{}{}-seed{}", parse_family(s.family, out.placement).text(),
+                                out.objective.tag(), target, s.seed);
   p.description = fmt::format("optimized {} for {}", family(p), metric.filter().name());
   p.provenance = {{"optimizer", out.method},
                   {"family", family(p)},
@@ -191,12 +202,14 @@ OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& 
                   {"filter", metric.filter().name()},
                   {"acuity", metric.acuity().name},
                   {"norm", format_norm(metric.norm())},
+                  {"objective", out.objective.text()},
                   {"seed", std::to_string(s.seed)},
                   {"seeds", polish ? s.start_label : s.seeds},
                   {"start", std::to_string(best.start)},
                   {"iterations", std::to_string(best.run.iterations)},
                   {"weights", s.optimizer.weights_only ? "weights only" : "positions and weights"},
                   {"nonnegative", s.optimizer.nonnegative_weights ? "yes" : "no"},
+                  {"pixel", s.strictly_inside ? "strictly inside" : "closed (border samples)"},
                   {"e2", fmt::format("{:.6f}", best.run.final_e2)}};
   if (out.lattice) {
     p.provenance.emplace_back("lattice", fmt::format("1/{} pixel", s.lattice));
@@ -215,6 +228,32 @@ OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& 
     out.unconstrained_e2 = r.starts.empty() ? NAN : r.starts[0].run.final_e2;
   }
   return out;
+}
+
+OptimizeRunResult optimize_run(const Objective& objective, const OptimizeRunSettings& settings,
+                               const StudyProgress& progress) {
+  return optimize_run(objective.metric(), settings, progress);
+}
+
+JsonObject optimize_run_json(const OptimizeRunResult& r) {
+  const StartRecord& best = r.best_start();
+  JsonObject doc = json_report("optimize");
+  doc.update(JsonObject{{"family", family(r.best)},
+                        {"placement", r.placement},
+                        {"method", method_key(r.settings.optimizer.method)}});
+  doc.update(objective_json(r.objective));
+  doc.update(JsonObject{{"seed", r.settings.seed},
+                        {"starts", r.search.starts.size()},
+                        {"best_start", best.start},
+                        {"initial_e2", best.run.initial_e2},
+                        {"e2", best.run.final_e2},
+                        {"iterations", best.run.iterations}});
+  if (r.lattice) {
+    doc["lattice"] = r.lattice->steps;
+    doc["lattice_e2"] = r.objective.metric().evaluate(r.best).e2;
+  }
+  doc["pattern"] = JsonObject::parse(pattern_to_json(r.best));
+  return doc;
 }
 
 }  // namespace aapat

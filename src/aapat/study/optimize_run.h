@@ -11,6 +11,8 @@
 
 #include "aapat/core/hardware_layout.h"
 #include "aapat/core/metric.h"
+#include "aapat/core/objective.h"
+#include "aapat/io/json_report.h"
 #include "aapat/optimize/multistart.h"
 #include "aapat/study/progress.h"
 
@@ -30,6 +32,11 @@ struct OptimizeRunSettings {
   int threads = 0;  // 0: all cores; the result is the same for any count
   int lattice = 0;  // then search positions on the 1/lattice pixel grid (0: no)
   std::string api;  // with the lattice: the API profile the pattern must fit
+  // Samples of a family without shared borders stay strictly inside the pixel
+  // (optimize/problem.h: keep_strictly_inside), so that aapat-N is N samples
+  // plain MSAA can use; false: the papers' closed pixel, where an optimum may
+  // put samples on the border (Laine-Aila's P(1,1,4) 0.3587).
+  bool strictly_inside = true;
   // With optimizer.nonnegative_weights: also run the best start unconstrained.
   bool report_nonnegative_cost = true;
 };
@@ -44,6 +51,7 @@ struct LatticeStage {
 
 struct OptimizeRunResult {
   OptimizeRunSettings settings;  // as run (the API's lattice filled in)
+  Objective objective;           // what its E2 values are under
   MultiStartResult search;       // the continuous search of the chosen placement
   Pattern best;                  // named, described, with provenance
   std::string description;       // "P(1,1,4) from 16 jittered starts"
@@ -61,5 +69,11 @@ std::string method_key(Method m);            // the name parse_method reads
 
 OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& settings,
                                const StudyProgress& progress = {});
+OptimizeRunResult optimize_run(const Objective& objective, const OptimizeRunSettings& settings,
+                               const StudyProgress& progress = {});
+
+// The result as `aapat optimize --json` prints it and aapat.optimize's
+// .report holds it (docs/json.md).
+JsonObject optimize_run_json(const OptimizeRunResult& result);
 
 }  // namespace aapat

@@ -1,5 +1,7 @@
 #include "aapat/study/pattern_studies.h"
 
+#include "aapat/core/objective.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -43,7 +45,7 @@ std::vector<Table2Row> table2(const AnimationSettings& settings, const Reference
       {"hasselgren-e", "Scheme E", 0, 0, 0, 0.488, 4.574, 108},
       {"quincunx-hasselgren", "Quincunx", 0, 0, 0, 0.484, 4.400, 95},
       {"hasselgren-f", "Scheme F (FLIPQUAD)", 0, 0, 0, 0.359, 3.759, 76}};
-  const Metric metric(make_filter(kDefaultFilter), laine_aila_acuity());
+  const Metric metric = named_objective(kPapersObjective).metric();  // E2 as the paper has it
   int done = 0;
   for (Table2Row& r : rows) {
     Sampling s;

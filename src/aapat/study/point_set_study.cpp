@@ -1,5 +1,7 @@
 #include "aapat/study/point_set_study.h"
 
+#include "aapat/core/point_checks.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -49,7 +51,8 @@ DiscrepancyMeasures parse_measures(std::string_view list) {
 DiscrepancyReport discrepancy_report(const std::vector<Vec2>& points,
                                      const DiscrepancyMeasures& measures,
                                      const StudyProgress& progress) {
-  // Every size limit first, before any work.
+  // Every check first, before any work.
+  check_unit_square(points, "points");
   if (!measures.l2.empty()) check_l2_star_size(points.size());
   if (measures.star || measures.edge) check_discrepancy_size(points.size());
   const int total = static_cast<int>(measures.l2.size()) + measures.star + measures.edge;
@@ -91,6 +94,7 @@ SpectrumStudy spectrum_study(const PointSource& source, const SpectrumSettings& 
   SpectrumStudy out;
   for (int r = 0; r < s.realizations; ++r) {
     const auto pts = source(r);
+    check_unit_square(pts, "points");
     out.points = pts.size();
     if (s.fast) {
       // The mean's error is at most the largest realization's bound.
@@ -117,6 +121,12 @@ SpectrumStudy spectrum_study(const PointSource& source, const SpectrumSettings& 
 
 std::vector<LineSpectrum> line_spectra(const std::vector<std::string>& kinds, int n, uint64_t seed,
                                        int frequencies, double max_frequency) {
+  if (frequencies < kMinLineFrequencies || frequencies > kMaxLineFrequencies)
+    throw Error(fmt::format("frequencies {} is not in [{}, {}]", frequencies, kMinLineFrequencies,
+                            kMaxLineFrequencies));
+  if (!(max_frequency >= kMinLineMaxFrequency && max_frequency <= kMaxLineMaxFrequency))
+    throw Error(fmt::format("max_frequency {} is not in [{}, {}] cycles per mean spacing",
+                            max_frequency, kMinLineMaxFrequency, kMaxLineMaxFrequency));
   std::vector<LineSpectrum> out;
   for (const auto& kind : kinds) {
     const auto xs = line_points(kind, n, seed);

@@ -74,6 +74,9 @@ struct LineSpectrum {
   // (|f| < 2 / length) on: a curve a plot can draw.
   std::vector<double> bin_frequency, bin_power;
 };
+// The 1D spectra's limits (docs/limits.md), checked by line_spectra for every face.
+inline constexpr int kMinLineFrequencies = 16, kMaxLineFrequencies = 10'000'000;
+inline constexpr double kMinLineMaxFrequency = 0.01, kMaxLineMaxFrequency = 1000;
 std::vector<LineSpectrum> line_spectra(const std::vector<std::string>& kinds, int n, uint64_t seed,
                                        int frequencies, double max_frequency);
 

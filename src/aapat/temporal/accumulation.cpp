@@ -6,6 +6,8 @@
 #include <cmath>
 #include <map>
 
+#include "aapat/core/filter_catalog.h"
+
 namespace aapat {
 namespace {
 
@@ -158,6 +160,28 @@ std::vector<Kernel> accumulated_kernels(const Sequence& s, const Accumulation& a
     out.push_back(make_kernel(at, w));
   }
   return out;
+}
+
+Accumulation make_accumulation(std::string_view kind, double alpha, int window,
+                               std::string_view resolve) {
+  if (kind != "ema" && kind != "box")
+    throw ParameterError("model", fmt::format(" '{}': expected ema or box", kind));
+  Accumulation a;
+  a.kind = kind == "box" ? AccumulationKind::box : AccumulationKind::ema;
+  a.alpha = alpha;
+  a.window = window;
+  if (!resolve.empty()) a.resolve = make_filter(resolve);
+  validate(a);
+  return a;
+}
+
+std::string accumulation_text(const Accumulation& a) {
+  std::string t = a.kind == AccumulationKind::box
+                      ? (a.window ? fmt::format("box of {} frames", a.window)
+                                  : std::string("box of the period"))
+                      : fmt::format("EMA alpha {}", a.alpha);
+  if (a.resolve) t += fmt::format(", {} resolve", a.resolve->name());
+  return t;
 }
 
 }  // namespace aapat

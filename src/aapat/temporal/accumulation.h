@@ -15,6 +15,8 @@
 #pragma once
 
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "aapat/core/filter.h"
@@ -34,6 +36,12 @@ struct Accumulation {
 inline constexpr double kMaxResolveRadius = 4;
 // Throws ParameterError naming the setting out of range.
 void validate(const Accumulation& a);
+// The model every face builds: kind "ema" or "box", a resolve filter spec
+// ("" for none); validated. Throws ParameterError naming the setting.
+Accumulation make_accumulation(std::string_view kind, double alpha, int window,
+                               std::string_view resolve);
+// "EMA alpha 0.1", "box of 8 frames", "..., gaussian:sigma=0.47,radius=1.5 resolve": for reports.
+std::string accumulation_text(const Accumulation& a);
 
 // The weight of frame j = 0..k in the image shown at frame k after a cut at
 // frame 0 (they sum to 1).

@@ -49,7 +49,7 @@ struct SequenceSearch {
   bool optimize_weights = true;
   int starts = 16;
   uint64_t seed = 1;
-  int iterations = 2000;                // NLopt evaluations per start
+  int iterations = 4000;                // NLopt evaluations per start
   const ApiProfile* profile = nullptr;  // snap to its lattice
 };
 

@@ -56,7 +56,7 @@ TaaResult render_taa(const TaaScenes& settings, const Sequence& s, const Accumul
       for (size_t i = 0; i < phase.values.size(); ++i) shown.values[i] += weight * phase.values[i];
     }
     ReferenceSettings ref = settings.reference;
-    ref.seed += 7919 * static_cast<uint64_t>(settings.reference_frame(f) + 1);
+    ref.seed = frame_reference_seed(ref.seed, settings.reference_frame(f));
     const Image reference = source(scene, settings.width, settings.height, ref, shown.offset);
     const ImageError e = compare(shown, reference);
     for (int i = 0; i < 256; ++i) r.total.count[i] += e.count[i];

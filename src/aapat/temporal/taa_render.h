@@ -47,8 +47,8 @@ TaaResult render_taa(const AnimationSettings& settings, const Sequence& s, const
                      const ReferenceSource& references = {});
 
 // The same for any scene over time: scene_at(f) for frames f = 0..frames-1;
-// frame f's reference is rendered with seed + 7919 (reference_frame(f) + 1)
-// (one reference for a static scene).
+// frame f's reference is seeded frame_reference_seed(seed, reference_frame(f))
+// (one reference for a static scene; kStillFrame: the still image's).
 struct TaaScenes {
   std::function<Scene(int)> scene_at;
   std::function<int(int)> reference_frame;

@@ -113,4 +113,9 @@ WorkSession::~WorkSession() {
   g_session = nullptr;
 }
 
+void check_threads(int threads, std::string_view what) {
+  if (threads < 0 || threads > kMaxThreads)
+    throw Error(fmt::format("{}: {} is not in [0, {}] (0: all cores)", what, threads, kMaxThreads));
+}
+
 }  // namespace aapat

@@ -13,9 +13,17 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace aapat {
+
+// The most threads any face accepts (0 means all cores): the command line's
+// --threads and Python's threads= both read it.
+inline constexpr int kMaxThreads = 1024;
+
+// Throws Error unless 0 <= threads <= kMaxThreads; `what` names the input.
+void check_threads(int threads, std::string_view what);
 
 class Checkpoint;
 

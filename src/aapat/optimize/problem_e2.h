@@ -24,9 +24,9 @@ struct Direction {
   std::vector<double> w;
 };
 
-class Objective {
+class ProblemE2 {
  public:
-  explicit Objective(const Metric& metric) : metric_(metric) {}
+  explicit ProblemE2(const Metric& metric) : metric_(metric) {}
   const Metric& metric() const { return metric_; }
 
   // E2 (max over kernels of the metric's combination over angles); fills
@@ -65,7 +65,7 @@ class Objective {
 
 // The start of every optimizer run: the problem put on its constraints and
 // its E2 evaluated (the workspace then holds its per-term values).
-RunResult begin_run(const Objective& objective, Problem& problem, bool nonnegative_weights,
+RunResult begin_run(const ProblemE2& objective, Problem& problem, bool nonnegative_weights,
                     Workspace& ws);
 
 }  // namespace aapat

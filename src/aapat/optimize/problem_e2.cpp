@@ -1,4 +1,4 @@
-#include "aapat/optimize/objective.h"
+#include "aapat/optimize/problem_e2.h"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 
 namespace aapat {
 
-void Objective::fill_kernels(const Problem& pr, Workspace& ws) const {
+void ProblemE2::fill_kernels(const Problem& pr, Workspace& ws) const {
   ws.kernels.resize(pr.kernels.size());
   size_t largest = 0;
   for (size_t k = 0; k < pr.kernels.size(); ++k) {
@@ -31,7 +31,7 @@ void Objective::fill_kernels(const Problem& pr, Workspace& ws) const {
   ws.dw.resize(largest);
 }
 
-double Objective::e2(const Problem& pr, Workspace& ws) const {
+double ProblemE2::e2(const Problem& pr, Workspace& ws) const {
   fill_kernels(pr, ws);
   const int angles = metric_.angle_count();
   ws.values.resize(ws.kernels.size() * angles);
@@ -42,7 +42,7 @@ double Objective::e2(const Problem& pr, Workspace& ws) const {
   return combine_over_kernels(ws.kernel_e2).e2;
 }
 
-void Objective::add_term_gradient(const Problem& pr, Workspace& ws, int k, int a, double scale,
+void ProblemE2::add_term_gradient(const Problem& pr, Workspace& ws, int k, int a, double scale,
                                   Direction& dir) const {
   const Kernel& ker = ws.kernels[k];
   const size_t n = ker.w.size();
@@ -62,7 +62,7 @@ void Objective::add_term_gradient(const Problem& pr, Workspace& ws, int k, int a
   }
 }
 
-void Objective::term_gradient(const Problem& pr, Workspace& ws, int kernel, int angle,
+void ProblemE2::term_gradient(const Problem& pr, Workspace& ws, int kernel, int angle,
                               Direction& dir) const {
   fill_kernels(pr, ws);
   dir.pos.assign(pr.generators.size(), {0, 0});
@@ -70,7 +70,7 @@ void Objective::term_gradient(const Problem& pr, Workspace& ws, int kernel, int 
   add_term_gradient(pr, ws, kernel, angle, 1.0, dir);
 }
 
-void Objective::heuristic_direction(const Problem& pr, Workspace& ws, double e2, double t,
+void ProblemE2::heuristic_direction(const Problem& pr, Workspace& ws, double e2, double t,
                                     double ratio, bool move_positions, Direction& dir) const {
   fill_kernels(pr, ws);
   dir.pos.assign(pr.generators.size(), {0, 0});
@@ -96,7 +96,7 @@ void Objective::heuristic_direction(const Problem& pr, Workspace& ws, double e2,
   constrain(pr, move_positions, dir);
 }
 
-void Objective::constrain(const Problem& pr, bool move_positions, Direction& dir) const {
+void ProblemE2::constrain(const Problem& pr, bool move_positions, Direction& dir) const {
   // Stay on the constraints: each generator's freedom, each weight group's sum.
   for (size_t g = 0; g < pr.generators.size(); ++g) {
     const Freedom f = pr.generators[g].freedom;
@@ -111,7 +111,7 @@ void Objective::constrain(const Problem& pr, bool move_positions, Direction& dir
   }
 }
 
-void Objective::minimax_direction(const Problem& pr, Workspace& ws, double e2, double t,
+void ProblemE2::minimax_direction(const Problem& pr, Workspace& ws, double e2, double t,
                                   bool move_positions, Direction& dir) const {
   fill_kernels(pr, ws);
   const int angles = metric_.angle_count();
@@ -169,7 +169,7 @@ void Objective::minimax_direction(const Problem& pr, Workspace& ws, double e2, d
   }
 }
 
-RunResult begin_run(const Objective& objective, Problem& problem, bool nonnegative_weights,
+RunResult begin_run(const ProblemE2& objective, Problem& problem, bool nonnegative_weights,
                     Workspace& ws) {
   project_to_constraints(problem, nonnegative_weights);
   RunResult r;

@@ -1,0 +1,117 @@
+"""One definition, two faces: every command with a Python twin gives the same
+keys and values from Python, under the same default objective; and Python is
+as strict as the command line about the arrays it is handed."""
+import json
+
+import numpy as np
+import pytest
+
+import aapat
+
+
+def cli_json(aapat_cli, *args):
+    doc = json.loads(aapat_cli(*args, "--json"))
+    return {k: v for k, v in doc.items() if k not in ("command", "schema")}
+
+
+def test_eval_defaults_to_the_recommended_objective_on_both_faces(aapat_cli):
+    doc = cli_json(aapat_cli, "eval", "msaa-8", "aapat-8")
+    assert doc["objective"] == "recommended"
+    cli = {row["pattern"]: row["e2"] for row in doc["rows"]}
+    py = dict(zip(["msaa-8", "aapat-8"], aapat.eval(["msaa-8", "aapat-8"])))
+    assert py == cli
+    assert cli["aapat-8"] < cli["msaa-8"]  # the catalog's pattern ranks first under its objective
+    papers = cli_json(aapat_cli, "eval", "flipquad", "--objective", "laine-aila")
+    assert papers["rows"][0]["e2"] == aapat.eval("flipquad", objective="laine-aila")
+    assert round(papers["rows"][0]["e2"], 4) == 0.3643  # Laine-Aila Table 2
+
+
+def test_optimize_report_is_the_cli_json(aapat_cli):
+    args = ["--family", "P(1,1,3)", "--starts", "3", "--seed", "4"]
+    cli = cli_json(aapat_cli, "optimize", *args)
+    py = aapat.optimize(family="P(1,1,3)", starts=3, seed=4).report
+    py = {k: v for k, v in py.items() if k not in ("command", "schema")}
+    assert py.keys() == cli.keys()
+    assert py == cli
+
+
+def test_sequence_eval_row_is_the_cli_row(aapat_cli):
+    cli = cli_json(aapat_cli, "sequence", "eval", "aapat-taa-8", "--alpha", "0.2")
+    py = aapat.sequence_eval("aapat-taa-8", alpha=0.2)
+    assert py.keys() == cli["rows"][0].keys()
+    assert py == cli["rows"][0]
+    assert py["flicker"] <= py["worst_flicker"]  # the mean, and the largest
+
+
+def test_optimize_sequence_at_8_frames_and_8_starts_equals_the_cli(aapat_cli, tmp_path):
+    out = str(tmp_path / "seq.json")
+    cli = cli_json(aapat_cli, "optimize", "--sequence", "8", "--starts", "8", "-o", out)
+    py = {k: v for k, v in aapat.optimize_sequence(frames=8, starts=8).items()
+          if k not in ("command", "schema")}
+    with open(out) as f:
+        assert py["result"].to_json() == f.read()
+    assert py.keys() == cli.keys()
+    for key in cli:
+        if key != "result":
+            assert py[key] == cli[key], key
+
+
+# Every Python function that takes an array, with the array in its place.
+ARRAY_CALLS = {
+    "eval (n, 2)": lambda a: aapat.eval(a),
+    "eval (m, n, 2)": lambda a: aapat.eval(a.reshape(1, *a.shape) if a.ndim == 2 else a),
+    "profile": lambda a: aapat.profile(a.reshape(1, *a.shape) if a.ndim == 2 else a),
+    "Pattern": lambda a: aapat.Pattern(a),
+    "discrepancy": lambda a: aapat.discrepancy(a + 0.5),
+    "spectrum": lambda a: aapat.spectrum(a + 0.5, size=8),
+    "write_points": lambda a: aapat.write_points("/nonexistent-dir/x.csv", a + 0.5),
+}
+
+
+def bad_arrays(rng):
+    """Arrays a careless caller hands over: NaN, inf, out of range, wrong shape, empty."""
+    good = rng.random((4, 2)) - 0.5
+    for value in (np.nan, np.inf, -np.inf, 3.0, -3.0, 1e300):
+        a = good.copy()
+        a[rng.integers(4), rng.integers(2)] = value
+        yield a
+    yield rng.random((4, 3))
+    yield rng.random(5)
+    yield np.zeros((0, 2))
+    yield rng.random((2, 2, 2, 2))
+
+
+@pytest.mark.parametrize("name", sorted(ARRAY_CALLS))
+def test_every_array_function_refuses_bad_arrays_with_aapat_error(name):
+    rng = np.random.default_rng(20261202)
+    call = ARRAY_CALLS[name]
+    for trial in range(20):
+        for a in bad_arrays(rng):
+            with pytest.raises(aapat.Error):
+                call(a)
+
+
+def test_discrepancy_of_nan_or_outside_points_is_refused_not_computed():
+    with pytest.raises(aapat.Error, match="not finite"):
+        aapat.discrepancy(np.array([[0.5, np.nan], [0.2, 0.3]]))
+    with pytest.raises(aapat.Error, match="outside the unit square"):
+        aapat.discrepancy(np.array([[-3.0, 0.5], [0.2, 0.3]]))
+    with pytest.raises(aapat.Error, match="outside the pixel"):
+        aapat.eval(np.array([[[5.0, 5.0], [0.0, 0.0]]]))
+
+
+def test_settings_out_of_range_are_refused():
+    with pytest.raises(aapat.Error, match="threads"):
+        aapat.eval(np.zeros((1, 2, 2)) + [[0.1, 0.2], [-0.1, -0.2]], threads=65537)
+    with pytest.raises(aapat.Error, match="threads"):
+        aapat.optimize(family="P(1,1,2)", threads=-5)
+    with pytest.raises(aapat.Error, match="max_per_edge"):
+        aapat.enumerate(max_per_edge=9)
+    with pytest.raises(aapat.Error, match="frequencies"):
+        aapat.spectrum_1d(["poisson"], frequencies=0)
+    with pytest.raises(aapat.Error, match="max_frequency"):
+        aapat.spectrum_1d(["poisson"], max_frequency=-1)
+    with pytest.raises(aapat.Error, match="did you mean 'recommended'"):
+        aapat.eval("rgss", objective="recomended")
+    with pytest.raises(aapat.Error, match="objective"):
+        aapat.eval("rgss", objective=3)

@@ -1,0 +1,23 @@
+// The JSON objects of the temporal results, made once: `aapat sequence eval
+// --json`, `aapat optimize --sequence --json` and Python's sequence_eval and
+// optimize_sequence return the same keys (docs/json.md). Flicker has one
+// meaning wherever its name appears: `flicker` is the mean over the period's
+// transitions, `worst_flicker` the largest, `flicker_per_transition` each.
+#pragma once
+
+#include "aapat/io/json_report.h"
+#include "aapat/temporal/sequence.h"
+#include "aapat/temporal/sequence_optimizer.h"
+#include "aapat/temporal/temporal_metrics.h"
+
+namespace aapat {
+
+// One row of `sequence eval`: the sequence's name, frames, family and every measure.
+JsonObject temporal_report_json(const Sequence& s, const TemporalReport& r);
+
+// The settings and result of a sequence search, with the objective J and
+// Halton's J of the same length; "result" holds the sequence file's object.
+JsonObject sequence_search_json(const SequenceSearch& search, std::string_view model,
+                                const Objective& objective, const SequenceSearchResult& r);
+
+}  // namespace aapat
