@@ -70,11 +70,11 @@ check() {  # check NAME FILES... -- ARGS...: every scale against one process
 }
 
 check optimize best.json -- optimize --family 'P(4,4,4)' --starts 24 \
-  --seed 5 -o best.json
+  --seed 5 --objective laine-aila -o best.json
 check optimize-lattice best.json -- optimize --family 'P(1,1,4)' --starts 6 --lattice 16 --seed 3 \
-  -o best.json
+  --objective laine-aila -o best.json
 check enumerate table.csv gallery.svg stdout.txt -- enumerate --cost 1.25,1.5 --optimize --starts 3 \
-  --csv table.csv --gallery gallery.svg
+  --objective laine-aila --csv table.csv --gallery gallery.svg
 check reference stdout.txt reference.png error.png -- render circles --pattern msaa-4 --size 48x40 \
   --reference-samples 64 --no-cache --json --reference reference.png --error error.png -o render.png
 check table3 stdout.txt -- table3 --patterns 40 --iterations 30 --json
@@ -86,7 +86,7 @@ check study table.md table.csv -- study --budgets 4 --patterns 8 --scenes circle
   --frames 1 --starts 1 --resamples 50 --no-cache --table table.md --csv table.csv
 
 # A run killed midway resumes from its checkpoint to the same files.
-long=(optimize --family 'P(4,4,4)' --starts 1000 --seed 9 -o best.json)
+long=(optimize --family 'P(4,4,4)' --starts 1000 --seed 9 --objective laine-aila -o best.json)
 records() {
   local n
   n=$(grep -c '^item ' "$1" 2>/dev/null)
@@ -160,10 +160,10 @@ one_rank_fails() {  # one_rank_fails NAME EXPECTED_STATUS ARGS_OF_RANK_0 -- ARGS
   [ -e "$name/best.json" ] && fail "$name: best.json written"
   echo "$name: exit $status, $(grep -m1 'aapat: error' "$name/stderr.txt")"
 }
-one_rank_fails parse-error-on-one-rank 1 optimize --family 'P(1,1,4)' --starts 8 -o best.json -- \
-  optimize --family 'P(1,1,4)' --starts 8 -o best.json --no-such-option
-one_rank_fails fails-before-items 1 optimize --family 'P(4,4,4)' --starts 400 -o best.json -- \
-  optimize --family 'P(4,4,4)' --starts 400 --seeds nonsense -o best.json
+one_rank_fails parse-error-on-one-rank 1 optimize --family 'P(1,1,4)' --starts 8 --objective laine-aila -o best.json -- \
+  optimize --family 'P(1,1,4)' --starts 8 --objective laine-aila -o best.json --no-such-option
+one_rank_fails fails-before-items 1 optimize --family 'P(4,4,4)' --starts 400 --objective laine-aila -o best.json -- \
+  optimize --family 'P(4,4,4)' --starts 400 --objective laine-aila --seeds nonsense -o best.json
 grep -q "rank 1: --seeds" fails-before-items/stderr.txt ||
   fail "fails-before-items: rank 1's error not reported: $(cat fails-before-items/stderr.txt)"
 

@@ -23,6 +23,8 @@ for preset in release asan; do
     scripts/check-docs.sh || status=1
     echo "== the installed package"
     scripts/test-install.sh || status=1
+    echo "== pip install . into a venv"
+    scripts/test-pip.sh || status=1
     echo "== the study report in headless Chromium"
     scripts/test-report.sh || status=1
   fi

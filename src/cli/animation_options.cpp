@@ -1,21 +1,31 @@
 #include "cli/animation_options.h"
 
+#include <fmt/format.h>
+
+#include <tuple>
+
+#include "aapat/core/filter_catalog.h"
 #include "cli/commands.h"
 
 namespace aapat {
 
 AnimationSettings AnimationOptions::settings() const {
   AnimationSettings s = a;
-  s.height = s.width;
+  std::tie(s.width, s.height) = parse_size(size, "--size", kMaxAnimationSize);
+  if (s.width < kMinAnimationSize || s.height < kMinAnimationSize)
+    throw Error(
+        fmt::format("--size: '{}' must be at least {} pixels a side", size, kMinAnimationSize));
   s.reference = reference.settings;
   return s;
 }
 
 void add_animation_options(CLI::App* cmd, AnimationOptions& o) {
   AnimationSettings& a = o.a;
-  cmd->add_option("--size", a.width, "width and height in pixels")
-      ->capture_default_str()
-      ->check(CLI::Range(8, 4096));
+  o.size = std::to_string(a.width);
+  cmd->add_option("--size", o.size,
+                  fmt::format("WIDTHxHEIGHT, or N for N x N, from {} to {} pixels",
+                              kMinAnimationSize, kMaxAnimationSize))
+      ->capture_default_str();
   cmd->add_option("--frames", a.frames, "frames")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));

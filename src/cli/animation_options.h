@@ -9,8 +9,11 @@
 
 namespace aapat {
 
+inline constexpr int kMinAnimationSize = 8, kMaxAnimationSize = 4096;
+
 struct AnimationOptions {
   AnimationSettings a;
+  std::string size;  // WIDTHxHEIGHT or N (N x N), as every command's --size
   ReferenceOptions reference;
   // The settings with the reference's options applied.
   AnimationSettings settings() const;

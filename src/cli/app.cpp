@@ -5,6 +5,7 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -13,6 +14,7 @@
 #include <ostream>
 
 #include "aapat/core/geometry.h"
+#include "aapat/core/nearest_name.h"
 #include "aapat/io/atomic_file.h"
 #include "aapat/version.h"
 #include "aapat/work/checkpoint.h"
@@ -94,6 +96,20 @@ std::string fingerprint(int argc, const char* const* argv) {
   return text;
 }
 
+// The command word of a command line that CLI11 could not parse: the first
+// argument that is neither an option nor the value of a global one; "" if none.
+std::string command_word(int argc, const char* const* argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--threads" || arg == "--checkpoint") {
+      ++i;
+      continue;
+    }
+    if (!arg.starts_with("-")) return std::string(arg);
+  }
+  return "";
+}
+
 }  // namespace
 
 int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
@@ -146,6 +162,16 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    // A mistyped command is named, with the nearest command.
+    std::vector<std::string> names;
+    for (const auto& [sub, action] : commands) names.push_back(sub->get_name());
+    const std::string word = command_word(argc, argv);
+    if (!word.empty() && std::find(names.begin(), names.end(), word) == names.end()) {
+      std::string message = fmt::format("unknown command '{}'{}: the commands are {}", word,
+                                        did_you_mean(word, names), fmt::join(names, ", "));
+      err << "aapat: error: " << message << "\n";
+      return items.agree(kExitUsage, message);
+    }
     // --help and --version exit 0; every mistake on the command line exits 2.
     const int status = app.exit(e, out, err) == 0 ? kExitOk : kExitUsage;
     std::string message = e.what();

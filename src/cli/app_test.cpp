@@ -290,7 +290,7 @@ TEST(CliOptimize, LockedSamplesStayAndFileSeedsStartFromTheFile) {
   const std::string seed = temp_path("seed.json"), out = temp_path("locked.json");
   ASSERT_EQ(run({"show", "flipquad", "-o", seed}).code, 0);
   const CliRun r = run({"optimize", "--family", "P(4,1+,2)", "--seeds", seed, "--starts", "4",
-                        "--lock", "0,2", "-o", out});
+                        "--lock", "0,2", "--objective", "laine-aila", "-o", out});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto before = nlohmann::json::parse(slurp(seed))["sets"][0];
   const auto after = nlohmann::json::parse(slurp(out))["sets"][0];

@@ -211,7 +211,8 @@ TEST(Hardening, MessagesNameTheRealProblem) {
 }
 
 TEST(Hardening, ASharingFamilyWithoutAPlacementSearchesThePlacements) {
-  const CliRun r = run({"optimize", "--family", "P(4,1+,2)", "--starts", "4", "--json"});
+  const CliRun r = run({"optimize", "--family", "P(4,1+,2)", "--starts", "4", "--objective",
+                        "laine-aila", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto doc = nlohmann::json::parse(r.out);
   EXPECT_LT(doc["e2"].get<double>(), 0.3595);  // Laine-Aila Table 2: best FLIPQUAD sites 0.3591
@@ -219,7 +220,8 @@ TEST(Hardening, ASharingFamilyWithoutAPlacementSearchesThePlacements) {
   EXPECT_NE(doc["placement"].get<std::string>().find("left"), std::string::npos);
   // A fractional n has no all-inside placement to fall back on: every placement
   // of its cost is searched too (it was refused, found building the catalog).
-  const CliRun q = run({"optimize", "--family", "P(4,1+,1.25)", "--starts", "2", "--json"});
+  const CliRun q = run({"optimize", "--family", "P(4,1+,1.25)", "--starts", "2", "--objective",
+                        "laine-aila", "--json"});
   ASSERT_EQ(q.code, 0) << q.err;
   EXPECT_LT(nlohmann::json::parse(q.out)["e2"].get<double>(), 0.5547);  // Hasselgren's scheme A
 }
@@ -296,7 +298,7 @@ TEST(Hardening, AFailedCommandLeavesNoOutputFile) {
 TEST(Hardening, AnOutputFormatThatCannotHoldTheResultFailsBeforeTheReport) {
   const std::string xyw = temp_path("tile.xyw");
   const CliRun r = run({"optimize", "--family", "P(4,1+,2)", "--placement", "left,right,bottom,top",
-                        "--starts", "2", "-o", xyw});
+                        "--starts", "2", "--objective", "laine-aila", "-o", xyw});
   EXPECT_EQ(r.code, kExitError);
   EXPECT_EQ(r.out, "");
   EXPECT_NE(r.err.find("write it as .json"), std::string::npos) << r.err;

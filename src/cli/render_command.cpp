@@ -43,7 +43,7 @@ struct Options {
   double rotate = 0, scale = 1;
   int samples = 16, zoom = 1;
   uint64_t seed = 1;
-  bool json = false, grid = false;
+  bool json = false, grid = false, measure = false;
   // Temporal mode: a sequence accumulated over frames of the static scene.
   std::string sequence;
   ModelOptions model;
@@ -278,8 +278,8 @@ RenderSettings single_settings(const Options& o, int w, int h) {
   const RenderOptions options = render_options(o);
   s.sampling.shading = options.shading();
   s.adaptive = options.adaptive_settings(s.sampling);
-  s.measure = o.json || !o.error_png.empty() || !o.histogram.empty() || !o.histogram_svg.empty() ||
-              !o.reference_png.empty();
+  s.measure = o.measure || o.json || !o.error_png.empty() || !o.histogram.empty() ||
+              !o.histogram_svg.empty() || !o.reference_png.empty();
   s.reference = reference_settings(o);
   return s;
 }
@@ -335,6 +335,9 @@ void run_single(const Options& o, std::ostream& out) {
       write_png_gray(o.error_png, w, h, error_pixels(r.image, *r.reference));
     if (!o.reference_png.empty()) write_png_gray(o.reference_png, w, h, grey_pixels(*r.reference));
     write_histogram(o, e, out);
+  } else {
+    text +=
+        "(add --measure to measure it against the dense reference: RMSE, max deviation, SSIM)\n";
   }
   out << (o.json ? json_text(js) : text);
 }
@@ -450,6 +453,8 @@ Action add_render_command(CLI::App& app) {
       ->check(CLI::Range(1, 16));
   cmd->add_option("--table", o->table, "--grid: also write the error table (markdown)");
   cmd->add_flag("--json", o->json, "print the figures as JSON");
+  cmd->add_flag("--measure", o->measure,
+                "measure the image against the dense reference (RMSE, max deviation, SSIM)");
   cmd->add_option("--sequence", o->sequence,
                   "temporal mode: a sequence file or generator spec, its frames accumulated by "
                   "--model over the static scene (docs/temporal.md)");

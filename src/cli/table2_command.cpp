@@ -59,7 +59,7 @@ Action add_table2_command(CLI::App& app) {
         "jittered samples per pixel with {}; E2 under the {}\naapat (paper)         E2             "
         "  "
         "RMSE              max dev.\n",
-        a.frames, a.width, a.width, a.reference.samples, make_filter(a.reference.filter).name(),
+        a.frames, a.width, a.height, a.reference.samples, make_filter(a.reference.filter).name(),
         named_objective(kPapersObjective).caption());
     for (const Table2Row& r : rows)
       out << fmt::format("{:<21} {:>6.3f} ({:.3f})  {:>6.3f} ({:.3f})  {:>4} ({})\n", r.label, r.e2,

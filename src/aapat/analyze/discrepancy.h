@@ -13,6 +13,7 @@
 
 #include "aapat/analyze/star_discrepancy.h"
 #include "aapat/core/geometry.h"
+#include "aapat/core/half_plane_area.h"
 
 namespace aapat {
 
@@ -37,19 +38,5 @@ struct EdgeDiscrepancy {
 // `progress(done, total)` hears each direction finish.
 EdgeDiscrepancy edge_discrepancy(const std::vector<Vec2>& points, int directions = 720,
                                  const std::function<void(int, int)>& progress = {});
-
-// Area of {p in [0,1]^2 : p . n <= t} for the unit normal n = (cos phi, sin phi).
-double half_plane_area(double phi, double t);
-// The same with phi fixed: the normal's terms computed once (the edge
-// discrepancy asks for N areas per direction).
-class HalfPlaneArea {
- public:
-  explicit HalfPlaneArea(double phi);
-  double operator()(double t) const;
-
- private:
-  double c_, s_, a_, b_, lo_, hi_, total_;
-  bool negative_c_, negative_s_;
-};
 
 }  // namespace aapat

@@ -114,10 +114,10 @@ double parse_number(std::string_view text, std::string_view what) {
 
 std::pair<int, int> parse_size(std::string_view text, std::string_view what, int max) {
   const auto x = text.find('x');
-  if (x == std::string_view::npos)
-    throw Error(fmt::format("{}: '{}' is not WIDTHxHEIGHT", what, text));
+  if (x == std::string_view::npos && text.find_first_not_of("0123456789") != std::string_view::npos)
+    throw Error(fmt::format("{}: '{}' is not WIDTHxHEIGHT nor N (N x N)", what, text));
   const double w = parse_number(text.substr(0, x), what),
-               h = parse_number(text.substr(x + 1), what);
+               h = x == std::string_view::npos ? w : parse_number(text.substr(x + 1), what);
   if (!(w >= 1 && h >= 1 && w <= max && h <= max) || w != std::floor(w) || h != std::floor(h))
     throw Error(fmt::format("{}: '{}' must be whole numbers from 1 to {}", what, text, max));
   return {static_cast<int>(w), static_cast<int>(h)};

@@ -27,7 +27,8 @@ inline constexpr std::string_view kDefaultFilter = "mitchell";
 // A finite number written as a decimal or a fraction ("1/3", "-1/4", "0.5").
 double parse_number(std::string_view text, std::string_view what);
 
-// "WIDTHxHEIGHT", both whole numbers from 1 to `max`.
+// "WIDTHxHEIGHT" or "N" (N x N), whole numbers from 1 to `max`: every
+// command's --size.
 std::pair<int, int> parse_size(std::string_view text, std::string_view what, int max);
 
 }  // namespace aapat

@@ -154,7 +154,8 @@ void expect_error(const std::string& spec, const std::string& message) {
 
 TEST(FilterSpec, RejectsBadSpecsWithClearMessages) {
   expect_error("mitchel",
-               "unknown filter 'mitchel': known filters are box, tent, gaussian, gaussian-half, "
+               "unknown filter 'mitchel' (did you mean 'mitchell'?): known filters are box, tent, "
+               "gaussian, gaussian-half, "
                "mitchell, notch, catmull-rom, keys, lanczos, lanczos-gaussian, blinn");
   expect_error("mitchell:d=1", "filter mitchell: unknown parameter 'd=1' (it takes b, c)");
   expect_error("notch:b=1", "filter notch: unknown parameter 'b=1' (it takes no parameters)");

@@ -9,7 +9,8 @@
 
 namespace aapat {
 
-// Levenshtein distance (insertions, deletions, substitutions), case-insensitive.
+// Edits from a to b (insertions, deletions, substitutions and swaps of two
+// neighbours: the optimal string alignment distance), case-insensitive.
 size_t edit_distance(std::string_view a, std::string_view b);
 
 // The candidate nearest to `name`, if it is within a third of the longer

@@ -1,5 +1,7 @@
 #include "aapat/core/spec.h"
 
+#include "aapat/core/nearest_name.h"
+
 #include <fmt/format.h>
 
 #include <cctype>
@@ -32,7 +34,10 @@ std::pair<std::string_view, std::string_view> split_spec(std::string_view text) 
 }
 
 void throw_unknown_spec(std::string_view kind, std::string_view name, const std::string& known) {
-  throw Error(fmt::format("unknown {} '{}': known {}s are {}", kind, name, kind, known));
+  std::vector<std::string> names;
+  for (std::string_view n : split(known)) names.emplace_back(trim(n));
+  throw Error(fmt::format("unknown {} '{}'{}: known {}s are {}", kind, name,
+                          did_you_mean(name, names), kind, known));
 }
 
 Spec::Spec(std::string kind, const SpecInfo& info, std::string_view parameters)

@@ -8,7 +8,6 @@
 #include <set>
 
 #include "aapat/core/geometry.h"
-#include "aapat/optimize/family.h"
 
 namespace aapat {
 namespace {
@@ -64,18 +63,6 @@ TEST(Enumerate, ConfigurationsAreDistinctClassesCoveringEverything) {
             }
     EXPECT_EQ(orbits.size(), raw) << n;
   }
-}
-
-TEST(Enumerate, SitesAreAValidPlacementOfTheFamily) {
-  for (double n : {1.25, 1.5, 1.75, 2.0})
-    for (const auto& c : enumerate_placements(n)) {
-      const FamilySpec spec = parse_family(fmt::format("P(4,1+,{})", n), c.sites());
-      EXPECT_EQ(static_cast<int>(spec.sites.size()), c.samples()) << c.sites();
-    }
-  PlacementConfig fliptri;
-  fliptri.corners = {0, 0, 0, 1};
-  fliptri.edges = {1, 1, 0, 0};
-  EXPECT_EQ(fliptri.sites(), "top-left,bottom,right");
 }
 
 TEST(Enumerate, RejectsCostsOffTheQuarterGrid) {

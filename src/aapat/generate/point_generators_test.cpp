@@ -136,7 +136,9 @@ TEST(Generators, BadSpecsAreNamed) {
   auto msg = [](const std::string& spec, int n) {
     return testing::error_message([&] { generate_points(spec, n, 0); });
   };
-  EXPECT_EQ(msg("jitter", 4).find("unknown generator 'jitter': known generators are regular, "),
+  EXPECT_EQ(msg("jitter", 4)
+                .find("unknown generator 'jitter' (did you mean 'jittered'?): known "
+                      "generators are regular, "),
             0u);
   EXPECT_EQ(msg("jittered", 5), "jittered: n = 5 must be a square number (k x k strata)");
   EXPECT_EQ(msg("halton:b1=4.5", 5), "generator halton: b1 = 4.5 must be a whole number in 2..64");

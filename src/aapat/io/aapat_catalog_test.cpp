@@ -47,6 +47,42 @@ TEST(AapatCatalog, EveryPatternHasTheE2OfItsProvenance) {
             std::string::npos);
 }
 
+// The names tell the truth: aapat-N[-API] is P(1,1,N), aapat-shared-N[-API]
+// the sharing family P(4,1+,N), aapat-2x2-N[-API] the 2x2 kernels P(4,4,N),
+// as `aapat list` shows them; and aapat-N keeps every sample strictly inside
+// its pixel, so that plain MSAA can use it.
+TEST(AapatCatalog, EveryNameMatchesItsFamilyAndItsSamplesAreWhereItSays) {
+  int checked = 0;
+  for (const SpecInfo& e : aapat_catalog()) {
+    const Pattern p = resolve_pattern(e.name);
+    std::string rest = e.name.substr(std::string("aapat-").size());
+    std::string expected;
+    bool one_pixel = false;
+    if (rest.starts_with("shared-")) {
+      rest = rest.substr(7);
+      expected = "P(4,1+,";
+    } else if (rest.starts_with("2x2-")) {
+      rest = rest.substr(4);
+      expected = "P(4,4,";
+    } else {
+      expected = "P(1,1,";
+      one_pixel = true;
+    }
+    expected += rest.substr(0, rest.find('-')) + ")";
+    EXPECT_EQ(family(p), expected) << e.name;
+    EXPECT_NE(e.summary.find(expected), std::string::npos) << e.name << ": " << e.summary;
+    if (one_pixel) {
+      for (const auto& set : p.sets)
+        for (const Vec2& v : set) {
+          EXPECT_TRUE(std::abs(v.x) < 0.5 && std::abs(v.y) < 0.5)
+              << e.name << ": (" << v.x << ", " << v.y << ") is not strictly inside the pixel";
+        }
+    }
+    ++checked;
+  }
+  EXPECT_GE(checked, 100);
+}
+
 // The catalog's promise: under the objective it was searched for, every
 // free aapat pattern (no API suffix) is at least as good as every published
 // or standard pattern of its family (Laine-Aila, Hasselgren, the MSAA and
@@ -57,7 +93,8 @@ TEST(AapatCatalog, EveryFreePatternBeatsThePublishedOnesOfItsFamily) {
   for (const auto& entry : pattern_registry().entries())
     if (entry.info.name != "grid-NxN")  // the family of grids: 2x2 to 4x4 below
       published.emplace_back(entry.info.name, catalog_pattern(entry.info.name));
-  for (const char* grid : {"grid-3x3", "grid-4x4"}) published.emplace_back(grid, catalog_pattern(grid));
+  for (const char* grid : {"grid-3x3", "grid-4x4"})
+    published.emplace_back(grid, catalog_pattern(grid));
   int compared = 0;
   for (const SpecInfo& e : aapat_catalog()) {
     const Pattern p = resolve_pattern(e.name);

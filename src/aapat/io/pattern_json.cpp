@@ -4,14 +4,24 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "aapat/core/nearest_name.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/io/atomic_file.h"
 #include "aapat/io/pattern_text.h"
 
 namespace aapat {
+namespace {
+
+// The API suffixes of the aapat catalog's lattice variants.
+constexpr std::array<std::string_view, 5> kApiSuffixes = {"-d3d12-tier1", "-d3d12-tier2", "-vulkan",
+                                                          "-gl", "-metal"};
+
+}  // namespace
 namespace {
 
 using json = nlohmann::ordered_json;  // keeps the file's key order
@@ -202,7 +212,22 @@ Pattern resolve_pattern(const std::string& name_or_path) {
   if (is_pattern_path(name_or_path) || std::filesystem::is_regular_file(name_or_path, ec))
     return load_pattern_file(name_or_path);
   if (in_aapat_catalog(name_or_path)) return aapat_catalog_pattern(name_or_path);
-  return catalog_pattern(name_or_path);
+  if (pattern_registry().find(name_or_path) || name_or_path.starts_with("grid-"))
+    return catalog_pattern(name_or_path);
+  // Neither: name both catalogs, and the nearest name of either.
+  std::vector<std::string> names, free;
+  for (const auto& e : pattern_registry().entries()) names.push_back(e.info.name);
+  for (const SpecInfo& e : aapat_catalog()) {
+    names.push_back(e.name);
+    if (!std::any_of(kApiSuffixes.begin(), kApiSuffixes.end(),
+                     [&](std::string_view api) { return e.name.ends_with(api); }))
+      free.push_back(e.name);
+  }
+  throw Error(fmt::format(
+      "unknown pattern '{}'{}: not a pattern file, a catalog name ({}) nor an aapat catalog "
+      "name ({}; each also on an API's lattice, e.g. aapat-8-d3d12-tier1; `aapat list`)",
+      name_or_path, did_you_mean(name_or_path, names), pattern_registry().names(),
+      fmt::join(free, ", ")));
 }
 
 }  // namespace aapat

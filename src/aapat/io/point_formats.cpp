@@ -53,6 +53,12 @@ class SetBuilder {
 std::vector<double> numbers_of(std::string_view line, char separator, const std::string& where) {
   std::vector<double> v;
   if (separator == ',') {
+    const std::string_view t = trim(line);
+    if (t.find(',') == std::string_view::npos && t.find_first_of(" \t") != std::string_view::npos)
+      throw Error(
+          fmt::format("{}: '{}' separates its numbers by spaces; a CSV point file takes "
+                      "'x,y' with a comma (or name the format: --format utk for spaces)",
+                      where, t));
     for (std::string_view f : split(line)) v.push_back(parse_number(trim(f), where));
     return v;
   }

@@ -22,7 +22,7 @@ std::vector<Vec2> parse_point_csv(std::string_view text, std::string_view source
     const auto comma = line.find(',');
     const std::string where = fmt::format("point file {} line {}", source, no);
     if (comma == std::string::npos || line.find(',', comma + 1) != std::string::npos)
-      throw Error(fmt::format("{}: expected 'x,y', got '{}'", where, line));
+      throw Error(fmt::format("{}: expected 'x,y' with a comma, got '{}'", where, line));
     const std::string_view lv(line);
     const Vec2 p{parse_number(lv.substr(0, comma), where + ": x"),
                  parse_number(lv.substr(comma + 1), where + ": y")};

@@ -2,11 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include "aapat/core/half_plane_area.h"
+
 #include <cmath>
 #include <cstring>
 #include <set>
 
-#include "aapat/analyze/discrepancy.h"
 #include "aapat/core/filter_catalog.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/render/image_error.h"

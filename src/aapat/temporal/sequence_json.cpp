@@ -1,5 +1,7 @@
 #include "aapat/temporal/sequence_json.h"
 
+#include "aapat/core/nearest_name.h"
+
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -190,6 +192,19 @@ Sequence resolve_sequence(const std::string& spec_or_path, const std::optional<P
   std::error_code ec;
   if (spec_or_path.ends_with(".json") || std::filesystem::is_regular_file(spec_or_path, ec))
     return load_sequence_file(spec_or_path);
+  if (!sequence_registry().contains(spec_or_path)) {
+    // Neither a generator nor a file: name the generators, the optimized
+    // sequences and the nearest of both.
+    std::vector<std::string> names, optimized;
+    for (const auto& e : sequence_registry().entries()) names.push_back(e.info.name);
+    for (const auto& entry : embedded::kAapatSequences) optimized.emplace_back(entry.first);
+    names.insert(names.end(), optimized.begin(), optimized.end());
+    const std::string name(split_spec(spec_or_path).first);
+    throw Error(fmt::format(
+        "unknown sequence '{}'{}: not a sequence file (.json), a generator ({}) nor an optimized "
+        "sequence ({})",
+        name, did_you_mean(name, names), sequence_registry().names(), fmt::join(optimized, ", ")));
+  }
   return make_sequence(spec_or_path, pattern);
 }
 
