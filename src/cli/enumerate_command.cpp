@@ -70,7 +70,8 @@ JsonObject enumeration_json(const Enumeration& e, const Options& o, const Object
   return doc;
 }
 
-std::string gallery(const Enumeration& e, const std::vector<double>& costs, int top) {
+std::string gallery(const Enumeration& e, const std::vector<double>& costs, int top,
+                    const Objective& objective) {
   std::vector<GalleryItem> items;
   for (double n : costs) {
     int shown = 0;
@@ -79,7 +80,9 @@ std::string gallery(const Enumeration& e, const std::vector<double>& costs, int 
         items.push_back({r.best, fmt::format("n = {}  E2 {:.4f}", format_cost(n), r.e2),
                          fmt::format("#{}: {} samples read", r.id, r.config.samples())});
   }
-  return gallery_svg(items, top, "Best P(4,1+,n) configurations per cost; disc area = weight");
+  return gallery_svg(items, top,
+                     "Best P(4,1+,n) configurations per cost, E2 under the objective " +
+                         objective.text() + "; disc area = weight");
 }
 
 struct EnumerateOptions {
@@ -120,7 +123,7 @@ void run_enumerate(EnumerateOptions& o, std::ostream& out) {
   text << rows_text(e, o.optimize, objective);
   if (!o.csv.empty()) write_output(o.csv, rows_csv(e, o.optimize, objective), out);
   if (o.json) out << json_text(enumeration_json(e, o, objective));
-  if (!o.gallery.empty()) write_output(o.gallery, gallery(e, s.costs, o.top), out);
+  if (!o.gallery.empty()) write_output(o.gallery, gallery(e, s.costs, o.top, objective), out);
   if (!o.best_dir.empty()) {
     ensure_directory(o.best_dir, "--best-dir");
     for (double n : s.costs)

@@ -62,16 +62,18 @@ void run_figure10(Figure10Options& o, std::ostream& out) {
     out << json_text(doc);
   }
   if (!o.svg.empty())
-    write_output(o.svg,
-                 line_plot_svg({"Best E2 against samples per pixel (Laine-Aila Fig. 10 re-run)",
-                                "samples per pixel n",
-                                "E2",
-                                {1, 2, 3, 4, 5, 6},
-                                1,
-                                6,
-                                true},
-                               lines),
-                 out);
+    write_output(
+        o.svg,
+        line_plot_svg({"Best E2 against samples per pixel (Laine-Aila Fig. 10 re-run), objective " +
+                           objective.text(),
+                       "samples per pixel n",
+                       "E2",
+                       {1, 2, 3, 4, 5, 6},
+                       1,
+                       6,
+                       true},
+                      lines),
+        out);
 }
 
 }  // namespace
