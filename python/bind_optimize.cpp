@@ -2,12 +2,9 @@
 // enumeration of the P(4,1+,n) placements, the GIL released while they run.
 #include <fmt/format.h>
 
-#include <chrono>
-#include <cmath>
 
 #include "aapat/study/enumeration.h"
 #include "aapat/study/optimize_run.h"
-#include "aapat/work/work_items.h"
 #include "bindings.h"
 
 namespace aapat::python {
@@ -77,22 +74,14 @@ OptimizeRunResult run_optimize(const py::object& family, const py::object& patte
   s.seeds = seeds;
   s.lock = lock;
   s.strictly_inside = !border_samples;
-  check_threads(threads, "optimize: threads");
   s.threads = threads;
   s.lattice = lattice;
   s.api = api;
   s.optimizer.method = parse_method(method);
-  if (iterations < 1)
-    throw Error(fmt::format("optimize: iterations {} must be at least 1", iterations));
   s.optimizer.max_iterations = iterations;
   s.optimizer.weights_only = weights_only;
   s.optimizer.nonnegative_weights = nonnegative;
-  if (time_limit < 0 || !std::isfinite(time_limit))
-    throw Error("optimize: time_limit must be a finite number of seconds >= 0");
-  if (time_limit > 0)
-    s.optimizer.deadline = std::chrono::steady_clock::now() +
-                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                               std::chrono::duration<double>(time_limit));
+  s.time_limit = time_limit;
   const auto report = progress_of(progress);
   py::gil_scoped_release release;
   return optimize_run(objective, s, report);
@@ -151,11 +140,17 @@ void bind_optimize(py::module_& m) {
                             progress);
       },
       py::kw_only(), py::arg("family") = py::none(), py::arg("pattern") = py::none(),
-      py::arg("placement") = "", py::arg("starts") = py::none(), py::arg("seed") = 1,
-      py::arg("seeds") = "jittered", py::arg("method") = "descent", py::arg("iterations") = 4000,
-      py::arg("weights_only") = false, py::arg("nonnegative") = false,
-      py::arg("lock") = std::vector<int>{}, py::arg("lattice") = 0, py::arg("api") = "",
-      py::arg("threads") = 0, py::arg("time_limit") = 0.0, py::arg("border_samples") = false,
+      // The defaults are the library's (a default-constructed OptimizeRunSettings).
+      py::arg("placement") = "", py::arg("starts") = py::none(),
+      py::arg("seed") = OptimizeRunSettings{}.seed, py::arg("seeds") = OptimizeRunSettings{}.seeds,
+      py::arg("method") = method_key(OptimizerSettings{}.method),
+      py::arg("iterations") = OptimizerSettings{}.max_iterations,
+      py::arg("weights_only") = OptimizerSettings{}.weights_only,
+      py::arg("nonnegative") = OptimizerSettings{}.nonnegative_weights,
+      py::arg("lock") = std::vector<int>{}, py::arg("lattice") = OptimizeRunSettings{}.lattice,
+      py::arg("api") = "", py::arg("threads") = OptimizeRunSettings{}.threads,
+      py::arg("time_limit") = OptimizeRunSettings{}.time_limit,
+      py::arg("border_samples") = !OptimizeRunSettings{}.strictly_inside,
       py::arg("progress") = py::none(), AAPAT_OBJECTIVE_ARGS,
       with_metric_args(
           R"doc(Optimize positions and weights: a family from random starts, or a pattern.
@@ -217,9 +212,12 @@ thread count). Returns an aapat.OptimizeResult (.pattern, .e2, .starts, ...).
         }
         return rows;
       },
-      py::kw_only(), py::arg("costs") = std::vector<double>{1.25, 1.5, 1.75, 2},
-      py::arg("max_per_edge") = 8, py::arg("cull_one_edge") = false, py::arg("optimize") = false,
-      py::arg("starts") = 32, py::arg("seed") = 1, py::arg("progress") = py::none(),
+      py::kw_only(), py::arg("costs") = EnumerationSettings{}.costs,
+      py::arg("max_per_edge") = EnumerationSettings{}.rules.max_per_edge,
+      py::arg("cull_one_edge") = EnumerationSettings{}.rules.cull_one_edge,
+      py::arg("optimize") = EnumerationSettings{}.optimize,
+      py::arg("starts") = EnumerationSettings{}.starts, py::arg("seed") = EnumerationSettings{}.seed,
+      py::arg("progress") = py::none(),
       AAPAT_OBJECTIVE_ARGS,
       with_metric_args(
           R"doc(Every placement configuration of the mirrored P(4,1+,n) family (Hasselgren Sec. 5).

@@ -25,7 +25,8 @@ void bind_studies(py::module_& m) {
                             py::arg("paper") = r.paper));
         return l;
       },
-      py::kw_only(), py::arg("patterns") = 1000, py::arg("iterations") = 4000, py::arg("seed") = 1,
+      py::kw_only(), py::arg("patterns") = Table3Settings{}.patterns,
+      py::arg("iterations") = Table3Settings{}.iterations, py::arg("seed") = Table3Settings{}.seed,
       py::arg("objective") = std::string(kPapersObjective), py::arg("filter") = py::none(),
       py::arg("acuity") = py::none(), py::arg("norm") = py::none(),
       with_metric_args(
@@ -50,7 +51,8 @@ dicts with the paper's five numbers beside.)doc"));
                             py::arg("series") = fig.series[p.series]));
         return l;
       },
-      py::kw_only(), py::arg("starts") = 32, py::arg("seed") = 1,
+      py::kw_only(), py::arg("starts") = Figure10Settings{}.starts,
+      py::arg("seed") = Figure10Settings{}.seed,
       py::arg("objective") = std::string(kPapersObjective), py::arg("filter") = py::none(),
       py::arg("acuity") = py::none(), py::arg("norm") = py::none(),
       with_metric_args(
@@ -99,7 +101,8 @@ on the translating circle (size x size, `frames` frames, 256-sample reference).)
                             py::arg("e2_lattice") = r.lattice_e2));
         return l;
       },
-      py::kw_only(), py::arg("starts") = 32, py::arg("seed") = 1, AAPAT_OBJECTIVE_ARGS,
+      py::kw_only(), py::arg("starts") = HardwareTableSettings{}.starts,
+      py::arg("seed") = HardwareTableSettings{}.seed, AAPAT_OBJECTIVE_ARGS,
       with_metric_args(
           R"doc(What the APIs' 1/16-pixel lattice costs: standard and optimized patterns at 2,
 4, 8 and 16 samples, and the sharing schemes, continuous and on the lattice.)doc"));

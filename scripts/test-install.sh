@@ -21,4 +21,4 @@ g++ -O2 examples/evaluate_and_optimize.cpp $(pkg-config --cflags --libs aapat) \
 build/example/evaluate_and_optimize_pc >/dev/null && echo "pkg-config build runs and finds the optimum"
 echo "== Python module (installed)"
 PYTHONPATH=$(dirname "$(find "$prefix" -name 'aapat.cpython-*.so' | head -1)") /usr/bin/python3 -c \
-  'import aapat; e = aapat.eval("rgss"); assert abs(e - 0.439) < 0.001, e; print("import aapat:", aapat.__version__, "rgss E2", round(e, 4))'
+  'import aapat; e = aapat.eval("rgss", objective="laine-aila"); assert abs(e - 0.439) < 0.001, e; print("import aapat:", aapat.__version__, "rgss E2 (laine-aila)", round(e, 4))'

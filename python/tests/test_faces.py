@@ -115,3 +115,41 @@ def test_settings_out_of_range_are_refused():
         aapat.eval("rgss", objective="recomended")
     with pytest.raises(aapat.Error, match="objective"):
         aapat.eval("rgss", objective=3)
+
+
+def assert_rows_agree(cli_rows, py_rows, extra=()):
+    """Every CLI row has its Python twin with the same keys (Python may add the
+    objects named in `extra`) and the same values."""
+    assert len(cli_rows) == len(py_rows)
+    for c, p in zip(cli_rows, py_rows):
+        assert set(p) - set(extra) == set(c)
+        for key in c:
+            assert p[key] == c[key], key
+
+
+def test_discrepancy_is_the_cli_document(aapat_cli, tmp_path):
+    path = str(tmp_path / "h.csv")
+    aapat.write_points(path, aapat.generate("halton", 64))
+    cli = cli_json(aapat_cli, "discrepancy", path)
+    py = aapat.discrepancy(aapat.read_points(path)[0])
+    assert py == {k: v for k, v in cli.items() if k != "source"}
+
+
+def test_enumerate_rows_are_the_cli_rows(aapat_cli):
+    cli = cli_json(aapat_cli, "enumerate", "--cost", "1.25", "--optimize", "--starts", "2")
+    py = aapat.enumerate(costs=[1.25], optimize=True, starts=2)
+    assert_rows_agree(cli["rows"], py, extra=("pattern",))
+
+
+def test_figure10_rows_are_the_cli_rows(aapat_cli):
+    cli = cli_json(aapat_cli, "figure10", "--starts", "2")
+    assert cli["objective"] == "laine-aila"  # a paper reproduction: the papers' objective
+    py = aapat.figure10(starts=2)
+    assert_rows_agree(cli["rows"], py, extra=("series",))
+
+
+def test_the_registry_is_aapat_list(aapat_cli):
+    cli = cli_json(aapat_cli, "list")
+    py = aapat.registry()
+    for kind in ("objectives", "filters", "acuity_tables", "generators", "scenes"):
+        assert [e["name"] for e in py[kind]] == [e["name"] for e in cli[kind]], kind

@@ -163,7 +163,7 @@ TEST(CliOptimize, WritesBestPatternWithProvenanceCsvAndSvg) {
   std::istringstream lines(slurp(csv));
   std::string header;
   std::getline(lines, header);
-  EXPECT_EQ(header, "start,initial_e2,final_e2,iterations,seconds");
+  EXPECT_EQ(header, "start,initial_e2,final_e2,iterations,seconds,objective");
   int rows = 0;
   for (std::string l; std::getline(lines, l);) ++rows;
   EXPECT_EQ(rows, 8);
@@ -662,8 +662,8 @@ TEST(CliHardware, SnapExportImportRoundTrip) {
 }
 
 TEST(CliHardware, LatticeOptimizationAndOptimizedWeights) {
-  CliRun r = run({"optimize", "--family", "P(1,1,4)", "--starts", "4", "--api", "d3d12-tier1", "-o",
-                  temp_path("l.json")});
+  CliRun r = run({"optimize", "--family", "P(1,1,4)", "--starts", "4", "--api", "d3d12-tier1",
+                  "--objective", "laine-aila", "-o", temp_path("l.json")});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("lattice 1/16 for d3d12-tier1"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("1x1 pixel grid, 4x MSAA"), std::string::npos) << r.out;

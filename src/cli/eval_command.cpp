@@ -2,6 +2,7 @@
 // each pattern; optionally the per-angle profile W(theta) E1(theta).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -34,10 +35,12 @@ void run_eval(EvalOptions& o, std::ostream& out) {
 
   JsonObject rows = JsonObject::array();
   std::vector<ProfileSeries> series;
+  size_t width = 22;  // the name column, wide enough for an optimized pattern's name
+  for (const Pattern& p : patterns) width = std::max(width, p.name.size());
   if (!o.json)
-    out << fmt::format("{}, {} angles\n{:<22} {:<14} {:>6} {:>8} {:>12} {:>7}{}\n",
-                       objective.caption(), metric.angle_count(), "pattern", "family", "n", "E2",
-                       "worst angle", "kernel", o.optimized_weights ? "  E2 opt. W" : "");
+    out << fmt::format("{}, {} angles\n{:<{}} {:<14} {:>6} {:>8} {:>12} {:>7}{}\n",
+                       objective.caption(), metric.angle_count(), "pattern", width, "family", "n",
+                       "E2", "worst angle", "kernel", o.optimized_weights ? "  E2 opt. W" : "");
   const std::vector<PatternEvaluation> evaluations =
       evaluate_patterns(metric, patterns, o.optimized_weights, !o.profile.empty());
   for (size_t i = 0; i < patterns.size(); ++i) {
@@ -55,7 +58,7 @@ void run_eval(EvalOptions& o, std::ostream& out) {
       if (v.e2_optimized_weights) rows.back()["e2_optimized_weights"] = *v.e2_optimized_weights;
     } else {
       out << fmt::format(
-          "{:<22} {:<14} {:>6} {:>8.4f} {:>12g} {:>7}{}\n", p.name, family(p),
+          "{:<{}} {:<14} {:>6} {:>8.4f} {:>12g} {:>7}{}\n", p.name, width, family(p),
           format_cost(v.samples_per_pixel), e.e2, e.worst_angle_deg, e.worst_kernel,
           v.e2_optimized_weights ? fmt::format("  {:>10.4f}", *v.e2_optimized_weights) : "");
     }

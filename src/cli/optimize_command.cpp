@@ -4,7 +4,6 @@
 
 #include <tbb/task_arena.h>
 
-#include <chrono>
 #include <memory>
 #include <ostream>
 
@@ -70,28 +69,32 @@ std::string optimize_text(const OptimizeRunResult& r) {
   return text + "\n";
 }
 
-std::string starts_csv(const MultiStartResult& result) {
-  std::string csv = "start,initial_e2,final_e2,iterations,seconds\n";
+std::string starts_csv(const MultiStartResult& result, const Objective& objective) {
+  std::string csv = "start,initial_e2,final_e2,iterations,seconds,objective\n";
   for (const auto& r : result.starts)
-    csv += fmt::format("{},{:.10g},{:.10g},{},{:.4f}\n", r.start, r.run.initial_e2, r.run.final_e2,
-                       r.run.iterations, r.seconds);
+    csv += fmt::format("{},{:.10g},{:.10g},{},{:.4f},\"{}\"\n", r.start, r.run.initial_e2,
+                       r.run.final_e2, r.run.iterations, r.seconds, objective.text());
   return csv;
 }
 
+// The defaults are the library's: a default-constructed OptimizeRunSettings
+// (and SequenceSearch for --sequence), as Python's are.
 struct OptimizeOptions {
-  std::string pattern, family, placement, seeds = "jittered", method = "descent";
+  std::string pattern, family, placement, seeds = OptimizeRunSettings{}.seeds,
+                                          method = method_key(OptimizerSettings{}.method);
   std::string output, csv, svg, api;
   MetricOptions metric;
-  int lattice = 0;
-  int starts = 16, threads = 0, iterations = 4000;
-  uint64_t seed = 1;
-  double time_limit = 0;
+  int lattice = OptimizeRunSettings{}.lattice;
+  int starts = kDefaultSearchStarts, threads = OptimizeRunSettings{}.threads,
+      iterations = OptimizerSettings{}.max_iterations;
+  uint64_t seed = OptimizeRunSettings{}.seed;
+  double time_limit = OptimizeRunSettings{}.time_limit;
   std::vector<int> lock;
   bool weights_only = false, nonnegative = false, starts_given = false, json = false;
   bool border_samples = false;
   // --sequence K: a jitter / alternating-MSAA sequence instead of a pattern.
   int sequence = 0, samples_per_frame = 1;
-  double flicker_weight = 3;
+  double flicker_weight = SequenceSearch{}.flicker_weight;
   std::string frame_measure = "worst";
   bool equal_weights = false;
   ModelOptions model;
@@ -180,10 +183,7 @@ void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ost
   s.optimizer.max_iterations = o.iterations;
   s.optimizer.weights_only = o.weights_only;
   s.optimizer.nonnegative_weights = o.nonnegative;
-  if (o.time_limit > 0)
-    s.optimizer.deadline = std::chrono::steady_clock::now() +
-                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                               std::chrono::duration<double>(o.time_limit));
+  s.time_limit = o.time_limit;
   OptimizeRunResult r;
   {
     Progress bar("optimize");
@@ -204,7 +204,7 @@ void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ost
     wrote += "wrote " + o.svg + "\n";
   }
   if (!o.csv.empty()) {
-    write_output(o.csv, starts_csv(r.search), out);
+    write_output(o.csv, starts_csv(r.search, r.objective), out);
     wrote += "wrote " + o.csv + "\n";
   }
   text << optimize_text(r) << wrote;

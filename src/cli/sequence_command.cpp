@@ -190,7 +190,8 @@ void add_show(CLI::App* parent, std::function<void(std::ostream&)>& action) {
     for (const std::string& spec : o->sequences) list.push_back(resolve_sequence(spec, pattern));
     if (!o->output.empty()) write_output(o->output, sequence_svg(list.front()), out);
     if (!o->curve.empty()) {
-      const Metric metric = o->metric.make();
+      const Objective objective = o->metric.resolve();
+      const Metric metric = objective.metric();
       const Accumulation model = o->model.make();
       std::vector<CurveSeries> series;
       int frames = o->frames;
@@ -201,7 +202,8 @@ void add_show(CLI::App* parent, std::function<void(std::ostream&)>& action) {
       for (const Sequence& s : list)
         series.push_back({s.name, evaluate_temporal(s, model, metric, frames).cut_curve});
       write_output(o->curve,
-                   convergence_svg(series, fmt::format("E2 after a cut, {}", o->model.text())),
+                   convergence_svg(series, fmt::format("E2 after a cut, {}, objective {}",
+                                                       o->model.text(), objective.text())),
                    out);
     }
     for (const std::string* path : {&o->output, &o->curve})

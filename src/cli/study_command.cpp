@@ -58,14 +58,8 @@ std::string summary_table(const StudyResult& r, const BudgetStudy& b) {
   t += fmt::format(" {:>8}\n", "mean");
   for (size_t o = 0; o < r.objectives.size(); ++o) {
     t += fmt::format("{:<26}", r.objectives[o].name());
-    for (size_t m = 0; m < kStudyMeasures.size(); ++m) {
-      double sum = 0;
-      int n = 0;
-      for (const StudyCorrelation& c : b.correlations)
-        if (c.objective == int(o) && c.measure == int(m) && !std::isnan(c.r.spearman.value))
-          sum += c.r.spearman.value, ++n;
-      t += fmt::format(" {:>14.3f}", n ? sum / n : NAN);
-    }
+    for (size_t m = 0; m < kStudyMeasures.size(); ++m)
+      t += fmt::format(" {:>14.3f}", measure_spearman(b, int(o), int(m)).mean);
     t += fmt::format(" {:>8.3f}\n", b.mean_spearman[o]);
   }
   return t;

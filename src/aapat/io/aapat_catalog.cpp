@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <utility>
 
+#include "aapat/core/objective.h"
 #include "aapat/io/pattern_json.h"
 
 namespace aapat::embedded {
@@ -18,9 +20,11 @@ std::vector<SpecInfo> aapat_catalog() {
   for (const auto& [name, text] : embedded::kAapatPatterns) {
     const nlohmann::json doc = nlohmann::json::parse(text);
     const nlohmann::json& why = doc.value("provenance", nlohmann::json::object());
-    std::string summary =
-        fmt::format("{}: E2 {} ({} {}, L{})", doc.value("family", "?"), why.value("e2", "?"),
-                    why.value("filter", "?"), why.value("acuity", "?"), why.value("norm", "?"));
+    // Under the objective it was designed for, from its provenance.
+    const std::optional<Objective> designed =
+        design_objective(pattern_from_json(text, fmt::format("data/patterns/{}.json", name)));
+    std::string summary = fmt::format("{}: E2 {} under the objective {}", doc.value("family", "?"),
+                                      why.value("e2", "?"), designed ? designed->text() : "?");
     if (why.contains("api"))
       summary += fmt::format(", on {}'s lattice E2 {}", why.value("api", "?"),
                              why.value("lattice_e2", "?"));

@@ -308,4 +308,16 @@ StudyResult objective_study(const StudySettings& s, const ReferenceSource& refer
   return r;
 }
 
+MeasureSpearman measure_spearman(const BudgetStudy& b, int objective, int measure) {
+  double sum = 0, lo = INFINITY, hi = -INFINITY;
+  int n = 0;
+  for (const StudyCorrelation& c : b.correlations)
+    if (c.objective == objective && c.measure == measure && !std::isnan(c.r.spearman.value)) {
+      sum += c.r.spearman.value, ++n;
+      lo = std::min(lo, c.r.spearman.low);
+      hi = std::max(hi, c.r.spearman.high);
+    }
+  return {n ? sum / n : NAN, lo, hi};
+}
+
 }  // namespace aapat

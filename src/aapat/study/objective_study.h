@@ -75,6 +75,15 @@ struct BudgetStudy {
   std::vector<double> mean_spearman;  // per objective, over scenes and measures
 };
 
+// One objective against one measure at one budget: Spearman's rho averaged
+// over the scenes (NaN when no scene has it), and the lowest and highest
+// ends of its scenes' bootstrap intervals. The one place the tables, the
+// JSON and the report average a budget's correlations.
+struct MeasureSpearman {
+  double mean = 0, low = 0, high = 0;
+};
+MeasureSpearman measure_spearman(const BudgetStudy& b, int objective, int measure);
+
 struct StudyResult {
   std::vector<StudyObjective> objectives;
   std::vector<std::string> scenes;

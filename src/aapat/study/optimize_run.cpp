@@ -3,11 +3,13 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 
 #include "aapat/core/lattice.h"
 #include "aapat/generate/enumerate.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/optimize/lattice_search.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 namespace {
@@ -74,6 +76,13 @@ void check_settings(const OptimizeRunSettings& s) {
     throw Error("optimize: give either a family to search or a pattern to polish");
   if (s.starts && !(*s.starts >= 1 && *s.starts <= 1000000))
     throw Error(fmt::format("optimize: starts {} is not in [1, 1000000]", *s.starts));
+  if (!(s.time_limit >= 0 && std::isfinite(s.time_limit)))
+    throw Error(fmt::format("optimize: time limit {} is not a finite number of seconds >= 0",
+                            s.time_limit));
+  if (s.optimizer.max_iterations < 1)
+    throw Error(
+        fmt::format("optimize: iterations {} must be at least 1", s.optimizer.max_iterations));
+  check_threads(s.threads, "optimize: threads");
   if (s.lattice != 0 && !(s.lattice >= 2 && s.lattice <= 256))
     throw Error(fmt::format("optimize: lattice {} is not in [2, 256] steps per pixel", s.lattice));
   if (!s.api.empty() && s.lattice != kLatticeSteps)
@@ -132,8 +141,12 @@ OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& 
   OptimizeRunSettings s = settings;
   if (!s.api.empty() && s.lattice == 0) s.lattice = kLatticeSteps;
   check_settings(s);
+  if (s.time_limit > 0)
+    s.optimizer.deadline = std::chrono::steady_clock::now() +
+                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                               std::chrono::duration<double>(s.time_limit));
   const bool polish = s.start.has_value();
-  const int starts = s.starts.value_or(polish ? 1 : 16);
+  const int starts = s.starts.value_or(polish ? 1 : kDefaultSearchStarts);
   OptimizeRunResult out;
   out.settings = s;
   out.objective = objective_of(metric);

@@ -18,6 +18,9 @@
 
 namespace aapat {
 
+// The random starts of a family search when none are given (a polish: 1).
+inline constexpr int kDefaultSearchStarts = 16;
+
 struct OptimizeRunSettings {
   // Either a family to search ("P(4,1+,2)") or a pattern to polish.
   std::string family;
@@ -30,6 +33,8 @@ struct OptimizeRunSettings {
   std::vector<int> lock;  // samples of set 0 that stay where they are
   OptimizerSettings optimizer;
   int threads = 0;  // 0: all cores; the result is the same for any count
+  // Seconds for the whole run from its start (0: none); sets optimizer.deadline.
+  double time_limit = 0;
   int lattice = 0;  // then search positions on the 1/lattice pixel grid (0: no)
   std::string api;  // with the lattice: the API profile the pattern must fit
   // Samples of a family without shared borders stay strictly inside the pixel

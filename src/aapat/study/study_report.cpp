@@ -179,14 +179,9 @@ std::string budget_section(const StudyResult& r, const BudgetStudy& b, const Stu
        polar_svg(curves) + "</figure>";
   // Scatter plots.
   for (const size_t o : {pap, rec}) {
-    double sum = 0;
-    int n = 0;
-    for (const StudyCorrelation& c : b.correlations)
-      if (c.objective == int(o) && c.measure == 0 && !std::isnan(c.r.spearman.value))
-        sum += c.r.spearman.value, ++n;
     h += "<figure><figcaption>" + xml_escape(r.objectives[o].name()) +
          fmt::format(" against the mean RMSE over the scenes: Spearman {:.3f} (mean over scenes)",
-                     n ? sum / n : NAN) +
+                     measure_spearman(b, int(o), 0).mean) +
          "</figcaption>" + scatter_svg(b, static_cast<int>(o), r.objectives[o].name()) +
          "</figure>";
   }
@@ -224,16 +219,9 @@ std::string budget_section(const StudyResult& r, const BudgetStudy& b, const Stu
     h += fmt::format(R"(<tr{}><td>{}</td>)", o == rec ? R"( class="best")" : "",
                      xml_escape(r.objectives[o].name()));
     for (size_t m = 0; m < kStudyMeasures.size(); ++m) {
-      double sum = 0, lo = INFINITY, hi = -INFINITY;
-      int n = 0;
-      for (const StudyCorrelation& c : b.correlations)
-        if (c.objective == int(o) && c.measure == int(m) && !std::isnan(c.r.spearman.value)) {
-          sum += c.r.spearman.value, ++n;
-          lo = std::min(lo, c.r.spearman.low);
-          hi = std::max(hi, c.r.spearman.high);
-        }
-      h += fmt::format("<td>{} <span class=\"note\">[{}, {}]</span></td>", fixed(n ? sum / n : NAN),
-                       fixed(lo, 2), fixed(hi, 2));
+      const MeasureSpearman s = measure_spearman(b, int(o), int(m));
+      h += fmt::format("<td>{} <span class=\"note\">[{}, {}]</span></td>", fixed(s.mean),
+                       fixed(s.low, 2), fixed(s.high, 2));
     }
     h += fmt::format("<td>{}</td></tr>", fixed(b.mean_spearman[o]));
   }
