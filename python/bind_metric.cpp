@@ -12,6 +12,7 @@
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/point_checks.h"
 #include "aapat/study/batch_e2.h"
+#include "aapat/study/eval_study.h"
 #include "aapat/work/work_items.h"
 #include "bindings.h"
 
@@ -188,6 +189,31 @@ void bind_metric(py::module_& m) {
         pattern); None: equal weights.
     threads: for arrays, the threads to use (0: all cores); the result is the
         same for any count.)doc"));
+
+  m.def(
+      "eval_report",
+      [](const py::object& patterns, bool optimized_weights, const py::object& objective,
+         const py::object& filter, const py::object& acuity, const py::object& norm) {
+        const Objective o = make_objective(objective, filter, acuity, norm);
+        const Metric metric = o.metric();
+        std::vector<Pattern> list;
+        if (py::isinstance<py::list>(patterns) || py::isinstance<py::tuple>(patterns)) {
+          for (const py::handle& h : patterns) list.push_back(to_pattern(h));
+        } else {
+          list.push_back(to_pattern(patterns));
+        }
+        std::vector<PatternEvaluation> evaluations;
+        {
+          py::gil_scoped_release release;
+          evaluations = evaluate_patterns(metric, list, optimized_weights, false);
+        }
+        return to_python(eval_json(o, metric.angle_count(), list, evaluations));
+      },
+      py::arg("patterns"), py::arg("optimized_weights") = false, AAPAT_OBJECTIVE_ARGS,
+      with_metric_args(R"doc(The `aapat eval --json` document of patterns (a name, file, Pattern,
+or a list of them): objective, filter, acuity, norm, angles and a row per
+pattern (pattern, family, n, e2, worst_angle_deg, worst_kernel, kernel_e2,
+and e2_optimized_weights with optimized_weights=True).)doc"));
 
   m.def(
       "profile",

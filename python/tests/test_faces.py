@@ -26,6 +26,13 @@ def test_eval_defaults_to_the_recommended_objective_on_both_faces(aapat_cli):
     assert round(papers["rows"][0]["e2"], 4) == 0.3643  # Laine-Aila Table 2
 
 
+def test_eval_report_is_the_cli_json(aapat_cli):
+    cli = cli_json(aapat_cli, "eval", "msaa-8", "flipquad", "--optimized-weights")
+    py = aapat.eval_report(["msaa-8", "flipquad"], optimized_weights=True)
+    py = {k: v for k, v in py.items() if k not in ("command", "schema")}
+    assert py == cli
+
+
 def test_optimize_report_is_the_cli_json(aapat_cli):
     args = ["--family", "P(1,1,3)", "--starts", "3", "--seed", "4"]
     cli = cli_json(aapat_cli, "optimize", *args)
@@ -153,3 +160,19 @@ def test_the_registry_is_aapat_list(aapat_cli):
     py = aapat.registry()
     for kind in ("objectives", "filters", "acuity_tables", "generators", "scenes"):
         assert [e["name"] for e in py[kind]] == [e["name"] for e in cli[kind]], kind
+
+
+def test_render_generate_and_spectrum_agree_with_the_cli(aapat_cli):
+    cli = cli_json(aapat_cli, "render", "circles", "--pattern", "msaa-4", "--size", "24x16",
+                   "--reference-samples", "16")
+    py = aapat.render("circles", pattern="msaa-4", size=(24, 16), reference=True,
+                      reference_samples=16)
+    for key in ("samples_per_pixel", "lookups_per_pixel", "shadings_per_pixel", "rmse",
+                "max_deviation", "ssim"):
+        assert py[key] == cli[key], key
+    rows = cli_json(aapat_cli, "generate", "halton", "--n", "16")["rows"]
+    assert aapat.generate("halton", 16).tolist() == [[r["x"], r["y"]] for r in rows]
+    spec = cli_json(aapat_cli, "spectrum", "jittered", "--n", "64", "--size", "16")
+    py = aapat.spectrum("jittered", n=64, size=16)
+    assert py["radius"].tolist() == [r["radius"] for r in spec["rows"]]
+    assert py["radial_power"].tolist() == [r["power"] for r in spec["rows"]]

@@ -33,44 +33,32 @@ void run_eval(EvalOptions& o, std::ostream& out) {
   std::vector<Pattern> patterns;
   for (const auto& name : o.patterns) patterns.push_back(resolve_pattern(name));
 
-  JsonObject rows = JsonObject::array();
-  std::vector<ProfileSeries> series;
-  size_t width = 22;  // the name column, wide enough for an optimized pattern's name
-  for (const Pattern& p : patterns) width = std::max(width, p.name.size());
-  if (!o.json)
-    out << fmt::format("{}, {} angles\n{:<{}} {:<14} {:>6} {:>8} {:>12} {:>7}{}\n",
-                       objective.caption(), metric.angle_count(), "pattern", width, "family", "n",
-                       "E2", "worst angle", "kernel", o.optimized_weights ? "  E2 opt. W" : "");
   const std::vector<PatternEvaluation> evaluations =
       evaluate_patterns(metric, patterns, o.optimized_weights, !o.profile.empty());
-  for (size_t i = 0; i < patterns.size(); ++i) {
-    const Pattern& p = patterns[i];
-    const PatternEvaluation& v = evaluations[i];
-    const PatternError& e = v.error;
-    if (o.json) {
-      rows.push_back({{"pattern", p.name},
-                      {"family", family(p)},
-                      {"n", v.samples_per_pixel},
-                      {"e2", e.e2},
-                      {"worst_angle_deg", e.worst_angle_deg},
-                      {"worst_kernel", e.worst_kernel},
-                      {"kernel_e2", e.kernel_e2}});
-      if (v.e2_optimized_weights) rows.back()["e2_optimized_weights"] = *v.e2_optimized_weights;
-    } else {
-      out << fmt::format(
-          "{:<{}} {:<14} {:>6} {:>8.4f} {:>12g} {:>7}{}\n", p.name, width, family(p),
-          format_cost(v.samples_per_pixel), e.e2, e.worst_angle_deg, e.worst_kernel,
-          v.e2_optimized_weights ? fmt::format("  {:>10.4f}", *v.e2_optimized_weights) : "");
-    }
-    if (!o.profile.empty()) series.push_back({p.name, v.worst_profile});
-  }
+  // The JSON document is the result; the text table is printed from its rows.
+  const JsonObject doc = eval_json(objective, metric.angle_count(), patterns, evaluations);
   if (o.json) {
-    JsonObject doc = json_report("eval");
-    doc.update(objective_json(objective));
-    doc["angles"] = metric.angle_count();
-    doc["rows"] = rows;
     out << json_text(doc);
+  } else {
+    size_t width = 22;  // the name column, wide enough for an optimized pattern's name
+    for (const JsonObject& row : doc["rows"])
+      width = std::max(width, row["pattern"].get<std::string>().size());
+    out << fmt::format("{}, {} angles\n{:<{}} {:<14} {:>6} {:>8} {:>12} {:>7}{}\n",
+                       objective.caption(), doc["angles"].get<int>(), "pattern", width, "family",
+                       "n", "E2", "worst angle", "kernel",
+                       o.optimized_weights ? "  E2 opt. W" : "");
+    for (const JsonObject& row : doc["rows"])
+      out << fmt::format("{:<{}} {:<14} {:>6} {:>8.4f} {:>12g} {:>7}{}\n",
+                         row["pattern"].get<std::string>(), width, row["family"].get<std::string>(),
+                         format_cost(row["n"].get<double>()), row["e2"].get<double>(),
+                         row["worst_angle_deg"].get<double>(), row["worst_kernel"].get<int>(),
+                         row.contains("e2_optimized_weights")
+                             ? fmt::format("  {:>10.4f}", row["e2_optimized_weights"].get<double>())
+                             : "");
   }
+  std::vector<ProfileSeries> series;
+  for (size_t i = 0; i < patterns.size(); ++i)
+    if (!o.profile.empty()) series.push_back({patterns[i].name, evaluations[i].worst_profile});
   if (!o.profile.empty()) {
     const std::string title = "W(theta) E1(theta), " + objective.caption();
     write_output(o.profile,

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "aapat/core/metric.h"
+#include "aapat/core/objective.h"
+#include "aapat/io/json_report.h"
 
 namespace aapat {
 
@@ -20,5 +22,12 @@ struct PatternEvaluation {
 std::vector<PatternEvaluation> evaluate_patterns(const Metric& metric,
                                                  const std::vector<Pattern>& patterns,
                                                  bool optimized_weights, bool profiles);
+
+// The `aapat eval --json` document: the objective, its angle count and a row
+// per pattern (pattern, family, n, e2, worst_angle_deg, worst_kernel,
+// kernel_e2[, e2_optimized_weights]); the command's text table is printed
+// from it and aapat.eval_report returns it.
+JsonObject eval_json(const Objective& objective, int angles, const std::vector<Pattern>& patterns,
+                     const std::vector<PatternEvaluation>& evaluations);
 
 }  // namespace aapat
