@@ -87,6 +87,30 @@ TEST(Cli, ListNamesCatalogFiltersAndTables) {
     EXPECT_NE(r.out.find(s), std::string::npos) << s;
 }
 
+// The mistakes a new user makes first are named, with the nearest name.
+TEST(Cli, MistakesNameWhatWasMeant) {
+  CliRun r = run({"evl", "rgss"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("unknown command 'evl' (did you mean 'eval'?)"), std::string::npos) << r.err;
+  r = run({"eval", "rgs"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("unknown pattern 'rgs' (did you mean 'rgss'?)"), std::string::npos);
+  EXPECT_NE(r.err.find("aapat-shared-2"), std::string::npos) << r.err;  // the aapat names too
+  r = run({"sequence", "eval", "aapat-taa8"});
+  EXPECT_NE(r.err.find("did you mean 'aapat-taa-8'?"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("halton"), std::string::npos) << r.err;
+  const std::string spaces = temp_path("spaces.csv");
+  std::ofstream(spaces) << "0.1 0.2\n";
+  r = run({"discrepancy", spaces});
+  EXPECT_NE(r.err.find("separates its numbers by spaces"), std::string::npos) << r.err;
+  r = run({"eval", "flipquad", "--objective", "laine-aila", "--filter", "mitchel"});
+  EXPECT_NE(r.err.find("did you mean 'mitchell'?"), std::string::npos) << r.err;
+  r = run({"render", "circles", "--pattern", "rgss", "--size", "16", "-o", temp_path("c.png")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("circles 16x16"), std::string::npos) << r.out;  // --size N is N x N
+  EXPECT_NE(r.out.find("add --measure"), std::string::npos) << r.out;
+}
+
 TEST(Cli, BadInputGivesAClearErrorAndNonZeroExit) {
   CliRun r = run({"eval", "nosuch"});
   EXPECT_EQ(r.code, 1);

@@ -20,10 +20,11 @@ std::vector<SpecInfo> aapat_catalog() {
   for (const auto& [name, text] : embedded::kAapatPatterns) {
     const nlohmann::json doc = nlohmann::json::parse(text);
     const nlohmann::json& why = doc.value("provenance", nlohmann::json::object());
-    // Under the objective it was designed for, from its provenance.
-    const std::optional<Objective> designed =
-        design_objective(pattern_from_json(text, fmt::format("data/patterns/{}.json", name)));
-    std::string summary = fmt::format("{}: E2 {} under the objective {}", doc.value("family", "?"),
+    // The family of the samples themselves, and the objective it was
+    // designed for, from its provenance.
+    const Pattern p = pattern_from_json(text, fmt::format("data/patterns/{}.json", name));
+    const std::optional<Objective> designed = design_objective(p);
+    std::string summary = fmt::format("{}: E2 {} under the objective {}", family(p),
                                       why.value("e2", "?"), designed ? designed->text() : "?");
     if (why.contains("api"))
       summary += fmt::format(", on {}'s lattice E2 {}", why.value("api", "?"),
