@@ -5,23 +5,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "aapat/core/hardware_layout.h"
 #include "aapat/core/nearest_name.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/io/atomic_file.h"
 #include "aapat/io/pattern_text.h"
 
 namespace aapat {
-namespace {
-
-// The API suffixes of the aapat catalog's lattice variants.
-constexpr std::array<std::string_view, 5> kApiSuffixes = {"-d3d12-tier1", "-d3d12-tier2", "-vulkan",
-                                                          "-gl", "-metal"};
-
-}  // namespace
 namespace {
 
 using json = nlohmann::ordered_json;  // keeps the file's key order
@@ -219,8 +212,10 @@ Pattern resolve_pattern(const std::string& name_or_path) {
   for (const auto& e : pattern_registry().entries()) names.push_back(e.info.name);
   for (const SpecInfo& e : aapat_catalog()) {
     names.push_back(e.name);
-    if (!std::any_of(kApiSuffixes.begin(), kApiSuffixes.end(),
-                     [&](std::string_view api) { return e.name.ends_with(api); }))
+    // The free designs: no API profile's name as a suffix (aapat-8, not aapat-8-vulkan).
+    const auto& profiles = profile_registry().entries();
+    if (std::none_of(profiles.begin(), profiles.end(),
+                     [&](const auto& p) { return e.name.ends_with("-" + p.info.name); }))
       free.push_back(e.name);
   }
   throw Error(fmt::format(

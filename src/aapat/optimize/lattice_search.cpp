@@ -17,8 +17,14 @@ namespace {
 constexpr int kReach = 2;       // lattice steps a generator may move at once
 constexpr size_t kWeighed = 4;  // moves tried with their weights optimized, per step
 
+// The largest |coordinate| a free sample may take on the lattice: within its
+// limit, and never the border's -steps/2 (which the API's other side lacks).
+double lattice_bound(double limit, int steps) {
+  return std::min(std::floor(limit * steps + 1e-12), steps / 2 - 1.0) / steps;
+}
+
 bool can_take(double v, double limit, int steps) {
-  return std::abs(v) <= std::min(limit, (steps / 2 - 1) / double(steps)) + 1e-12;
+  return std::abs(v) <= lattice_bound(limit, steps) + 1e-12;
 }
 
 }  // namespace
@@ -33,7 +39,7 @@ LatticeRun lattice_descent(const Metric& metric, Problem& problem, int steps,
     if (g.freedom == Freedom::kFree && g.limit < 0.5) {
       // A sample kept strictly inside stays so on the lattice (the API's
       // -8/16, on the border, is not taken).
-      const double inside = std::floor(g.limit * steps) / steps;
+      const double inside = lattice_bound(g.limit, steps);
       g.pos = {std::clamp(g.pos.x, -inside, inside), std::clamp(g.pos.y, -inside, inside)};
     }
   }
