@@ -1,5 +1,7 @@
 // `import aapat`: the library from Python with numpy arrays. Library errors
 // arrive as aapat.Error (a ValueError) with the library's message.
+#include <algorithm>
+
 #include "aapat/version.h"
 #include "bindings.h"
 
@@ -14,7 +16,18 @@ point sets with their spectra and discrepancies, and a test renderer, on numpy
 arrays. Specs name filters, acuity tables, generators and scenes
 ("name:key=value,..."); aapat.registry() lists them all.)doc";
   m.attr("__version__") = AAPAT_VERSION;
-  py::register_exception<Error>(m, "Error", PyExc_ValueError);
+  static py::exception<Error>& error = py::register_exception<Error>(m, "Error", PyExc_ValueError);
+  // A setting the library names as the command line's flag (max-per-edge)
+  // is named here as the keyword that gives it (max_per_edge).
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const ParameterError& e) {
+      std::string keyword = e.parameter();
+      std::replace(keyword.begin(), keyword.end(), '-', '_');
+      PyErr_SetString(error.ptr(), (keyword + e.detail()).c_str());
+    }
+  });
   m.attr("Error").attr("__doc__") =
       "A library error: bad input named with the spec, parameter or file at fault.";
   bind_patterns(m);

@@ -2,9 +2,8 @@
 // enumeration of the P(4,1+,n) placements, the GIL released while they run.
 #include <fmt/format.h>
 
-
-#include "aapat/study/enumeration.h"
 #include "aapat/study/optimize_run.h"
+#include "aapat/study/study_json.h"
 #include "bindings.h"
 
 namespace aapat::python {
@@ -184,11 +183,7 @@ thread count). Returns an aapat.OptimizeResult (.pattern, .e2, .starts, ...).
       [](const std::vector<double>& costs, int max_per_edge, bool cull_one_edge, bool optimize,
          int starts, uint64_t seed, const py::object& progress, const py::object& objective,
          const py::object& filter, const py::object& acuity, const py::object& norm) {
-        const Metric metric = make_metric(objective, filter, acuity, norm);
-        if (max_per_edge < 0 || max_per_edge > 8)
-          throw Error(fmt::format("enumerate: max_per_edge {} is not in [0, 8]", max_per_edge));
-        if (starts < 1 || starts > 100000)
-          throw Error(fmt::format("enumerate: starts {} is not in [1, 100000]", starts));
+        const Objective o = make_objective(objective, filter, acuity, norm);
         EnumerationSettings s;
         s.costs = costs;
         s.rules = {max_per_edge, cull_one_edge};
@@ -199,30 +194,26 @@ thread count). Returns an aapat.OptimizeResult (.pattern, .e2, .starts, ...).
         Enumeration e;
         {
           py::gil_scoped_release release;
-          e = enumerate_study(metric, s, report);
+          e = enumerate_study(o.metric(), s, report);
         }
-        py::list rows;
-        for (const EnumerationRow& r : e.rows) {
-          py::dict d(py::arg("id") = r.id, py::arg("n") = r.n,
-                     py::arg("placement") = r.config.sites(),
-                     py::arg("samples_read") = r.config.samples());
-          d["e2"] = optimize ? py::object(py::float_(r.e2)) : py::object(py::none());
-          d["pattern"] = optimize ? py::cast(r.best) : py::object(py::none());
-          rows.append(d);
-        }
+        // The rows of `aapat enumerate --json`, each with its best pattern.
+        py::list rows = rows_of(enumeration_json(o, s, e));
+        for (size_t i = 0; i < e.rows.size(); ++i)
+          rows[i]["pattern"] = optimize ? py::cast(e.rows[i].best) : py::object(py::none());
         return rows;
       },
       py::kw_only(), py::arg("costs") = EnumerationSettings{}.costs,
       py::arg("max_per_edge") = EnumerationSettings{}.rules.max_per_edge,
       py::arg("cull_one_edge") = EnumerationSettings{}.rules.cull_one_edge,
       py::arg("optimize") = EnumerationSettings{}.optimize,
-      py::arg("starts") = EnumerationSettings{}.starts, py::arg("seed") = EnumerationSettings{}.seed,
-      py::arg("progress") = py::none(),
+      py::arg("starts") = EnumerationSettings{}.starts,
+      py::arg("seed") = EnumerationSettings{}.seed, py::arg("progress") = py::none(),
       AAPAT_OBJECTIVE_ARGS,
       with_metric_args(
           R"doc(Every placement configuration of the mirrored P(4,1+,n) family (Hasselgren Sec. 5).
 
-Returns a list of dicts {id, n, placement, samples_read, e2, pattern}, ranked
+The rows of `aapat enumerate --json`, each with its best pattern: a list of
+dicts {id, n, placement, samples_read, e2, pattern}, ranked
 by E2 within each cost when optimized (e2 and pattern are None otherwise).
 
     costs: costs n, multiples of 1/4. max_per_edge: samples one edge may hold.

@@ -3,7 +3,7 @@
 
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/point_formats.h"
-#include "aapat/study/point_set_study.h"
+#include "aapat/study/study_json.h"
 #include "bindings.h"
 
 namespace aapat::python {
@@ -18,22 +18,6 @@ PointSets to_sets(const py::object& points) {
     sets.push_back(to_points(points.cast<Array>(), "points"));
   }
   return sets;
-}
-
-py::dict discrepancy_dict(const DiscrepancyReport& d) {
-  py::dict out(py::arg("points") = d.points);
-  for (const L2Value& v : d.l2) out[py::str(std::string(l2_kind_info(v.kind).key))] = v.value;
-  if (d.star) {
-    out["star_lower"] = d.star->lower;
-    out["star_upper"] = d.star->upper;
-    out["star_exact"] = d.star->exact;
-    out["star_gap"] = d.star->upper - d.star->lower;
-  }
-  if (d.edge) {
-    out["edge"] = d.edge->value;
-    out["edge_normal_deg"] = d.edge->normal_deg;
-  }
-  return out;
 }
 
 }  // namespace
@@ -87,13 +71,14 @@ void bind_points(py::module_& m) {
           py::gil_scoped_release release;
           d = discrepancy_report(p, m);
         }
-        return discrepancy_dict(d);
+        return values_of(discrepancy_json("", d));
       },
-      py::arg("points"), py::arg("measures") = "l2-star,star,edge",
+      py::arg("points"), py::arg("measures") = std::string(kDefaultDiscrepancyMeasures),
       R"doc(Discrepancies of an (n, 2) array in [0, 1]^2: the L2 kinds (star, Warnock;
 generalized, centred, wrap-around, symmetric, Hickernell; unanchored), each
 O(N log N) in double-double; star (exact up to 4096 points, else bounds with
-their gap); edge (720 directions). Returns a dict: points, then l2_star,
+their gap); edge (720 directions). Returns the values of `aapat discrepancy
+--json` (without its source): points, then l2_star,
 l2_generalized, l2_centred, l2_wrap_around, l2_unanchored, l2_symmetric,
 star_lower, star_upper, star_exact, star_gap, edge, edge_normal_deg (of the
 measures asked).

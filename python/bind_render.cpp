@@ -4,7 +4,7 @@
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/io/scene_json.h"
-#include "aapat/study/render_study.h"
+#include "aapat/study/study_json.h"
 #include "bindings.h"
 
 namespace aapat::python {
@@ -37,6 +37,10 @@ void bind_render(py::module_& m) {
         if (pattern.is_none() == generator.empty())
           throw Error("render: give either pattern= or generator=");
         if (!pattern.is_none()) s.sampling.pattern = to_pattern(pattern);
+        const std::string pattern_name = pattern.is_none() ? ""
+                                         : py::isinstance<py::str>(pattern)
+                                             ? pattern.cast<std::string>()
+                                             : s.sampling.pattern->name;
         s.sampling.generator = generator;
         s.sampling.samples = samples;
         s.sampling.seed = seed;
@@ -57,33 +61,26 @@ void bind_render(py::module_& m) {
           py::gil_scoped_release release;
           r = render_study(sc, s);
         }
-        py::dict d(py::arg("image") = image_array(r.image),
-                   py::arg("samples_per_pixel") = r.stats.samples_per_pixel,
-                   py::arg("lookups_per_pixel") = r.stats.lookups_per_pixel,
-                   py::arg("shadings_per_pixel") = r.stats.shadings_per_pixel);
+        // The values of `aapat render --json`, with the images as arrays.
+        py::dict d = values_of(render_json(scene, texture, pattern_name, s, r));
+        d["image"] = image_array(r.image);
         if (r.adaptive) {
           Array map({static_cast<py::ssize_t>(h), static_cast<py::ssize_t>(w)});
           for (int j = 0; j < h; ++j)  // top row first, as the image
             for (int i = 0; i < w; ++i)
               map.mutable_at(j, i) = r.adaptive->samples[static_cast<size_t>(h - 1 - j) * w + i];
           d["refinement_map"] = map;
-          d["evaluations"] = r.adaptive->evaluations;
-          d["refined_fraction"] = r.adaptive->refined_fraction;
         }
-        if (r.figures) {
-          d["reference"] = image_array(*r.reference);
-          d["rmse"] = r.figures->error.rmse;
-          d["max_deviation"] = r.figures->error.max_deviation;
-          d["ssim"] =
-              r.figures->ssim ? py::object(py::float_(*r.figures->ssim)) : py::object(py::none());
-        }
+        if (r.reference) d["reference_image"] = image_array(*r.reference);
         return d;
       },
       py::arg("scene"), py::kw_only(), py::arg("pattern") = py::none(), py::arg("generator") = "",
-      py::arg("samples") = 16, py::arg("filter") = py::none(),
-      py::arg("size") = std::pair<int, int>{256, 256}, py::arg("seed") = 1,
-      py::arg("reference") = false, py::arg("reference_samples") = 1024,
-      py::arg("reference_filter") = "mitchell", py::arg("texture") = "",
+      // The defaults are the library's (default-constructed settings).
+      py::arg("samples") = Sampling{}.samples, py::arg("filter") = py::none(),
+      py::arg("size") = std::pair<int, int>{RenderSettings{}.width, RenderSettings{}.height},
+      py::arg("seed") = Sampling{}.seed, py::arg("reference") = RenderSettings{}.measure,
+      py::arg("reference_samples") = ReferenceSettings{}.samples,
+      py::arg("reference_filter") = ReferenceSettings{}.filter, py::arg("texture") = "",
       py::arg("options") = py::dict(),
       R"doc(Render a test scene, as `aapat render` does (the same pixels for the same arguments).
 
@@ -100,10 +97,12 @@ void bind_render(py::module_& m) {
     options: the command's shading and refinement options by name, e.g.
         {"mode": "multisample", "texture-filter": "trilinear"} or
         {"adaptive": "contrast", "threshold": 0.1, "max-samples": 32}.
-Returns a dict: image ((height, width), top row first, values in [0, 1]),
-samples_per_pixel, lookups_per_pixel, shadings_per_pixel, with adaptive
-refinement: refinement_map (samples per pixel), evaluations, refined_fraction;
-with reference: reference, rmse, max_deviation, ssim.)doc");
+Returns the values of `aapat render --json` (scene, width, height, filter,
+samples_per_pixel, mode, lookups_per_pixel, shadings_per_pixel, ...; with
+adaptive refinement its "adaptive" dict; with reference: reference (what it
+is), rmse, max_deviation, ssim) and the images as arrays: image ((height,
+width), top row first, values in [0, 1]), reference_image, refinement_map
+(samples per pixel).)doc");
 }
 
 }  // namespace aapat::python

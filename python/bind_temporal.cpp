@@ -14,15 +14,6 @@
 namespace aapat::python {
 namespace {
 
-Accumulation make_model(const std::string& model, double alpha, int window,
-                        const std::string& resolve) {
-  try {
-    return make_accumulation(model, alpha, window, resolve);
-  } catch (const ParameterError& e) {
-    throw Error(fmt::format("{}{}", e.parameter(), e.detail()));
-  }
-}
-
 // (frames, samples per frame, 2) for equal-sized frames of one pixel.
 Array offsets_of(const Sequence& s) {
   const size_t k = s.frames.size(), n = s.frames[0].sets[0].size();
@@ -85,7 +76,7 @@ with pattern=...), a name of the optimized ones ("aapat-taa-8") or a file.)doc")
                                ? seq.cast<Sequence>()
                                : resolve_sequence(seq.cast<std::string>());
         const Metric metric = make_metric(objective, filter, acuity, norm);
-        const Accumulation a = make_model(model, alpha, window, resolve);
+        const Accumulation a = make_accumulation(model, alpha, window, resolve);
         TemporalReport r;
         {
           py::gil_scoped_release release;
@@ -122,7 +113,7 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
         s.iterations = iterations;
         s.optimize_weights = !equal_weights;
         if (!api.empty()) s.profile = &api_profile(api);
-        s.model = make_model(model, alpha, window, "");
+        s.model = make_accumulation(model, alpha, window, "");
         const Objective o = make_objective(objective, filter, acuity, norm);
         const Metric metric = o.metric();
         SequenceSearchResult r;

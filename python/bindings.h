@@ -55,6 +55,17 @@ inline Metric make_metric(const py::object& objective, const py::object& filter,
 // the same keys as the command line's --json.
 py::object to_python(const JsonObject& json);
 
+// A library document's rows (a list of dicts with the CLI's keys), or its
+// values without "command" and "schema".
+inline py::object rows_of(const JsonObject& doc) {
+  return to_python(doc.at("rows"));
+}
+inline py::object values_of(JsonObject doc) {
+  doc.erase("command");
+  doc.erase("schema");
+  return to_python(doc);
+}
+
 // An (m, n, 2) or (n, 2) array of samples in pixels from the centre: finite,
 // inside the pixel, else aapat.Error naming the sample.
 void check_samples(const Array& xy, const char* what);

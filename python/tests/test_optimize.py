@@ -75,7 +75,7 @@ def test_the_enumeration_counts_hasselgren_configurations():
     by_n = {}
     for r in rows:
         by_n[r["n"]] = by_n.get(r["n"], 0) + 1
-    cli_like = aapat.enumerate(costs=[1.25], optimize=True, starts=2)
+    cli_like = aapat.enumerate(costs=[1.25], optimize=True, starts=2, objective="laine-aila")
     assert all(r["e2"] is not None and r["pattern"].family == "P(4,1+,1.25)" for r in cli_like)
     assert by_n[1.25] == len(cli_like)
     assert sorted(r["e2"] for r in cli_like) == [r["e2"] for r in cli_like]

@@ -50,7 +50,8 @@ def test_render_gives_an_image_array_and_the_error_figures():
     assert r["image"].shape == (32, 48)
     assert 0 <= r["image"].min() and r["image"].max() <= 1
     assert r["rmse"] > 0 and r["max_deviation"] >= 1
-    assert r["reference"].shape == (32, 48)
+    assert r["reference_image"].shape == (32, 48)
+    assert r["reference"] == "64 jittered samples per pixel, mitchell:b=1/3,c=1/3"
     with pytest.raises(aapat.Error, match="give either pattern= or generator="):
         aapat.render("disc")
 
@@ -125,6 +126,6 @@ def test_render_textured_multisampled_and_adaptive():
     refined = aapat.render("spiral", generator="jittered", samples=4, filter="box", size=(32, 32),
                            options={"adaptive": "contrast", "threshold": 0.1})
     assert refined["refinement_map"].shape == (32, 32)
-    assert refined["evaluations"] == refined["refinement_map"].sum()
+    assert refined["adaptive"]["evaluations"] == refined["refinement_map"].sum()
     with pytest.raises(aapat.Error, match="unknown texture filter .cubic."):
         aapat.render("checkerboard", pattern="rgss", options={"texture-filter": "cubic"})

@@ -4,8 +4,7 @@
 #include <memory>
 #include <ostream>
 
-#include "aapat/io/json_report.h"
-#include "aapat/study/point_set_study.h"
+#include "aapat/study/study_json.h"
 #include "cli/commands.h"
 #include "cli/point_options.h"
 #include "cli/progress.h"
@@ -14,36 +13,26 @@ namespace aapat {
 
 namespace {
 
-JsonObject discrepancy_json(const std::string& source, const DiscrepancyReport& d) {
-  JsonObject doc = json_report("discrepancy");
-  doc.update(JsonObject{{"source", source}, {"points", d.points}});
-  for (const L2Value& v : d.l2) doc[std::string(l2_kind_info(v.kind).key)] = v.value;
-  if (d.star)
-    doc.update(JsonObject{{"star_lower", d.star->lower},
-                          {"star_upper", d.star->upper},
-                          {"star_exact", d.star->exact},
-                          {"star_gap", d.star->upper - d.star->lower}});
-  if (d.edge)
-    doc.update(JsonObject{{"edge", d.edge->value}, {"edge_normal_deg", d.edge->normal_deg}});
-  return doc;
-}
-
-// Six significant digits: the discrepancies of large sets are 1e-6 and less.
-std::string discrepancy_text(const std::string& source, const DiscrepancyReport& d) {
-  std::string text = fmt::format("{} ({} points)\n", source, d.points);
+// Printed from the document. Six significant digits: the discrepancies of
+// large sets are 1e-6 and less.
+std::string discrepancy_text(const JsonObject& doc) {
+  std::string text = fmt::format("{} ({} points)\n", doc["source"].get<std::string>(),
+                                 doc["points"].get<size_t>());
   auto line = [&](const std::string& label, const std::string& value) {
     text += fmt::format("  {:<28}{}\n", label + " discrepancy", value);
   };
-  for (const L2Value& v : d.l2)
-    line(std::string(l2_kind_info(v.kind).label), fmt::format("{:.6g}", v.value));
-  if (d.star && d.star->exact)
-    line("star", fmt::format("{:.6g} (exact)", d.star->upper));
-  else if (d.star)
-    line("star", fmt::format("in [{:.6g}, {:.6g}] (bounds; gap {:.3g})", d.star->lower,
-                             d.star->upper, d.star->upper - d.star->lower));
-  if (d.edge)
-    line("edge", fmt::format("{:.6g} (worst half-plane normal at {:g} degrees)", d.edge->value,
-                             d.edge->normal_deg));
+  auto value = [&](const char* key) { return doc[key].get<double>(); };
+  for (const L2KindInfo& kind : l2_kinds())
+    if (const std::string key(kind.key); doc.contains(key))
+      line(std::string(kind.label), fmt::format("{:.6g}", value(key.c_str())));
+  if (doc.contains("star_exact") && doc["star_exact"].get<bool>())
+    line("star", fmt::format("{:.6g} (exact)", value("star_upper")));
+  else if (doc.contains("star_exact"))
+    line("star", fmt::format("in [{:.6g}, {:.6g}] (bounds; gap {:.3g})", value("star_lower"),
+                             value("star_upper"), value("star_gap")));
+  if (doc.contains("edge"))
+    line("edge", fmt::format("{:.6g} (worst half-plane normal at {:g} degrees)", value("edge"),
+                             value("edge_normal_deg")));
   return text;
 }
 
@@ -54,7 +43,7 @@ Action add_discrepancy_command(CLI::App& app) {
       "discrepancy", "L2 (star, centred, ...), star and edge discrepancy of a point set");
   auto src = std::make_shared<PointOptions>();
   auto json = std::make_shared<bool>(false);
-  auto measures = std::make_shared<std::string>("l2-star,star,edge");
+  auto measures = std::make_shared<std::string>(kDefaultDiscrepancyMeasures);
   src->add_to(cmd);
   cmd->add_option("--measure", *measures,
                   "the discrepancies to compute, a comma list of l2-star, l2-generalized, "
@@ -68,7 +57,8 @@ Action add_discrepancy_command(CLI::App& app) {
       Progress bar("discrepancy");
       d = discrepancy_report(src->points(), m, bar.callback());
     }
-    out << (*json ? json_text(discrepancy_json(src->source, d)) : discrepancy_text(src->source, d));
+    const JsonObject doc = discrepancy_json(src->source, d);
+    out << (*json ? json_text(doc) : discrepancy_text(doc));
   };
 }
 

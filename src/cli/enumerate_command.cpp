@@ -11,10 +11,9 @@
 #include "aapat/core/text.h"
 #include "aapat/generate/enumerate.h"
 #include "aapat/io/atomic_file.h"
-#include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/pattern_svg.h"
-#include "aapat/study/enumeration.h"
+#include "aapat/study/study_json.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
@@ -31,43 +30,29 @@ std::string counts_text(const Enumeration& e, const EnumerationSettings& s) {
   return text + fmt::format("  total     {:>4}\n", e.rows.size());
 }
 
-std::string rows_text(const Enumeration& e, bool optimized, const Objective& objective) {
+// The table and the CSV are printed from the document's rows.
+std::string rows_text(const JsonObject& doc, const Objective& objective) {
+  const bool optimized = doc["optimized"].get<bool>();
   std::string text = optimized ? objective.caption() + "\n" : "";
   text += fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", "id", "n", "reads", "E2", "placement");
-  for (const EnumerationRow& r : e.rows)
-    text += fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", r.id, format_cost(r.n), r.config.samples(),
-                        optimized ? fmt::format("{:.4f}", r.e2) : "-", r.config.sites());
+  for (const JsonObject& r : doc["rows"])
+    text += fmt::format("{:>4} {:>5} {:>5} {:>8}  {}\n", r["id"].get<int>(),
+                        format_cost(r["n"].get<double>()), r["samples_read"].get<int>(),
+                        optimized ? fmt::format("{:.4f}", r["e2"].get<double>()) : "-",
+                        r["placement"].get<std::string>());
   return text;
 }
 
-std::string rows_csv(const Enumeration& e, bool optimized, const Objective& objective) {
+std::string rows_csv(const JsonObject& doc, const Objective& objective) {
+  const bool optimized = doc["optimized"].get<bool>();
   std::string csv = "id,n,placement,samples_read,e2,objective\n";
-  for (const EnumerationRow& r : e.rows)
-    csv += fmt::format("{},{},\"{}\",{},{},\"{}\"\n", r.id, format_cost(r.n), r.config.sites(),
-                       r.config.samples(), optimized ? fmt::format("{:.6f}", r.e2) : "",
+  for (const JsonObject& r : doc["rows"])
+    csv += fmt::format("{},{},\"{}\",{},{},\"{}\"\n", r["id"].get<int>(),
+                       format_cost(r["n"].get<double>()), r["placement"].get<std::string>(),
+                       r["samples_read"].get<int>(),
+                       optimized ? fmt::format("{:.6f}", r["e2"].get<double>()) : "",
                        optimized ? objective.text() : "");
   return csv;
-}
-
-template <class Options>
-JsonObject enumeration_json(const Enumeration& e, const Options& o, const Objective& objective) {
-  JsonObject rows = JsonObject::array();
-  for (const EnumerationRow& r : e.rows)
-    rows.push_back({{"id", r.id},
-                    {"n", r.n},
-                    {"placement", r.config.sites()},
-                    {"samples_read", r.config.samples()},
-                    {"e2", o.optimize ? JsonObject(r.e2) : JsonObject()}});
-  JsonObject doc = json_report("enumerate");
-  doc.update(JsonObject{{"family", "P(4,1+,n)"},
-                        {"max_per_edge", o.max_per_edge},
-                        {"cull_one_edge", o.cull_one_edge},
-                        {"optimized", o.optimize},
-                        {"starts", o.optimize ? JsonObject(o.starts) : JsonObject()},
-                        {"seed", o.seed}});
-  doc.update(objective_json(objective));
-  doc["rows"] = rows;
-  return doc;
 }
 
 std::string gallery(const Enumeration& e, const std::vector<double>& costs, int top,
@@ -85,11 +70,18 @@ std::string gallery(const Enumeration& e, const std::vector<double>& costs, int 
                          objective.text() + "; disc area = weight");
 }
 
+std::string join_costs(const std::vector<double>& costs) {
+  std::string text;
+  for (double n : costs) text += (text.empty() ? "" : ",") + format_cost(n);
+  return text;
+}
+
+// The options bind to the library's settings (and their defaults); the
+// library checks them.
 struct EnumerateOptions {
-  std::string costs = "1.25,1.5,1.75,2";
-  int max_per_edge = 8, starts = 32, top = 3;
-  bool cull_one_edge = false, optimize = false;
-  uint64_t seed = 1;
+  EnumerationSettings settings;
+  std::string costs = join_costs(EnumerationSettings{}.costs);
+  int top = 3;
   std::string csv, gallery, best_dir;
   bool json = false;
   MetricOptions metric;
@@ -101,28 +93,26 @@ void run_enumerate(EnumerateOptions& o, std::ostream& out) {
   std::ostream& text = o.json ? discard : out;
   const Objective objective = o.metric.resolve();  // a bad --objective or --filter fails first
   const Metric metric = objective.metric();
-  EnumerationSettings s;
+  EnumerationSettings s = o.settings;
   s.costs.clear();
   for (std::string_view c : split(o.costs)) s.costs.push_back(parse_number(c, "--cost"));
-  s.rules = {o.max_per_edge, o.cull_one_edge};
-  s.optimize = o.optimize;
-  s.starts = o.starts;
-  s.seed = o.seed;
-  if ((o.gallery.size() || o.best_dir.size()) && !o.optimize)
+  if ((o.gallery.size() || o.best_dir.size()) && !s.optimize)
     throw Error("--gallery and --best-dir show optimized patterns: add --optimize");
   if (!o.best_dir.empty()) check_directory_target(o.best_dir, "--best-dir");
+  const bool optimize = s.optimize;
   s.optimize = false;  // the counts first, so that they show before the long part
   Enumeration e = enumerate_study(metric, s);
   text << counts_text(e, s);
-  if (!o.optimize && o.csv.empty() && !o.json) return;
-  if (o.optimize) {
+  if (!optimize && o.csv.empty() && !o.json) return;
+  if (optimize) {
     Progress bar("enumerate");
     s.optimize = true;
     e = enumerate_study(metric, s, bar.callback());
   }
-  text << rows_text(e, o.optimize, objective);
-  if (!o.csv.empty()) write_output(o.csv, rows_csv(e, o.optimize, objective), out);
-  if (o.json) out << json_text(enumeration_json(e, o, objective));
+  const JsonObject doc = enumeration_json(objective, s, e);
+  text << rows_text(doc, objective);
+  if (!o.csv.empty()) write_output(o.csv, rows_csv(doc, objective), out);
+  if (o.json) out << json_text(doc);
   if (!o.gallery.empty()) write_output(o.gallery, gallery(e, s.costs, o.top, objective), out);
   if (!o.best_dir.empty()) {
     ensure_directory(o.best_dir, "--best-dir");
@@ -141,17 +131,15 @@ Action add_enumerate_command(CLI::App& app) {
   auto o = std::make_shared<EnumerateOptions>();
   cmd->add_option("--cost", o->costs, "comma list of costs n, multiples of 1/4")
       ->capture_default_str();
-  cmd->add_option("--max-per-edge", o->max_per_edge,
+  cmd->add_option("--max-per-edge", o->settings.rules.max_per_edge,
                   "samples one edge may hold (8: as many as the cost allows)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 8));
-  cmd->add_flag("--cull-one-edge", o->cull_one_edge,
+      ->capture_default_str();
+  cmd->add_flag("--cull-one-edge", o->settings.rules.cull_one_edge,
                 "drop configurations with every sample on one border line (the paper's hand cull)");
-  cmd->add_flag("--optimize", o->optimize, "optimize every configuration and rank by E2");
-  cmd->add_option("--starts", o->starts, "random starts per configuration")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
-  add_seed_option(cmd, o->seed, "random seed");
+  cmd->add_flag("--optimize", o->settings.optimize, "optimize every configuration and rank by E2");
+  cmd->add_option("--starts", o->settings.starts, "random starts per configuration")
+      ->capture_default_str();
+  add_seed_option(cmd, o->settings.seed, "random seed");
   cmd->add_option("--csv", o->csv, "write the table as CSV");
   cmd->add_flag("--json", o->json, "print the table as JSON (docs/json.md)");
   cmd->add_option("--gallery", o->gallery, "write an SVG of the best configurations of each n");

@@ -7,9 +7,8 @@
 #include <memory>
 #include <ostream>
 
-#include "aapat/io/json_report.h"
 #include "aapat/io/line_plot.h"
-#include "aapat/study/paper_tables.h"
+#include "aapat/study/study_json.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
@@ -19,8 +18,7 @@ namespace aapat {
 namespace {
 
 struct Figure10Options {
-  int starts = 32;
-  uint64_t seed = 1;
+  Figure10Settings settings;  // bound to the options, checked by the library
   std::string csv, svg;
   bool json = false;
   MetricOptions metric;
@@ -28,39 +26,35 @@ struct Figure10Options {
 
 void run_figure10(Figure10Options& o, std::ostream& out) {
   const Objective objective = o.metric.resolve();
-  const Metric metric = objective.metric();
   Figure10 fig;
   {
     Progress bar("figure10");
-    fig = figure10(metric, {o.starts, o.seed}, bar.callback());
+    fig = figure10(objective.metric(), o.settings, bar.callback());
   }
-  std::ostream discard(nullptr);
-  std::ostream& text = o.json ? discard : out;
-  text << fmt::format("Laine-Aila Figure 10 re-run: best E2 of {} jittered starts, seed {}, {}\n",
-                      o.starts, o.seed, objective.caption());
-  text << fmt::format("{:<14} {:>5} {:>8}  {}\n", "family", "n", "E2", "placement");
+  // The document is the result; the text, the CSV and the plot are drawn from it.
+  const JsonObject doc = figure10_json(objective, o.settings, fig);
+  std::string text = fmt::format(
+      "Laine-Aila Figure 10 re-run: best E2 of {} jittered starts, seed {}, {}\n{:<14} {:>5} "
+      "{:>8}  {}\n",
+      doc["starts"].get<int>(), doc["seed"].get<uint64_t>(), objective.caption(), "family", "n",
+      "E2", "placement");
   std::string csv = "family,n,e2,placement,objective\n";
-  JsonObject rows = JsonObject::array();
   std::vector<LineSeries> lines;
-  for (const auto& series : fig.series) lines.push_back({series, {}, {}});
-  for (const auto& p : fig.points) {
-    rows.push_back({{"family", p.family}, {"n", p.n}, {"e2", p.e2}, {"placement", p.placement}});
-    text << fmt::format("{:<14} {:>5} {:>8.4f}  {}\n", p.family, format_cost(p.n), p.e2,
-                        p.placement.empty() ? "all inside" : p.placement);
-    csv += fmt::format("{},{},{:.6f},\"{}\",\"{}\"\n", p.family, format_cost(p.n), p.e2,
-                       p.placement, objective.text());
-    LineSeries& line = lines[p.series];
-    line.x.push_back(p.n);
-    line.y.push_back(p.e2);
+  for (const JsonObject& p : doc["rows"]) {
+    const auto family = p["family"].get<std::string>(), series = p["series"].get<std::string>();
+    const auto placement = p["placement"].get<std::string>();
+    const double n = p["n"].get<double>(), e2 = p["e2"].get<double>();
+    text += fmt::format("{:<14} {:>5} {:>8.4f}  {}\n", family, format_cost(n), e2,
+                        placement.empty() ? "all inside" : placement);
+    csv += fmt::format("{},{},{:.6f},\"{}\",\"{}\"\n", family, format_cost(n), e2, placement,
+                       objective.text());
+    if (lines.empty() || lines.back().label != series) lines.push_back({series, {}, {}});
+    lines.back().x.push_back(n);
+    lines.back().y.push_back(e2);
   }
+  if (!o.json) out << text;
   if (!o.csv.empty()) write_output(o.csv, csv, out);
-  if (o.json) {
-    JsonObject doc = json_report("figure10");
-    doc.update(JsonObject{{"starts", o.starts}, {"seed", o.seed}});
-    doc.update(objective_json(objective));
-    doc["rows"] = rows;
-    out << json_text(doc);
-  }
+  if (o.json) out << json_text(doc);
   if (!o.svg.empty())
     write_output(
         o.svg,
@@ -82,10 +76,9 @@ Action add_figure10_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("figure10", "re-run Laine-Aila Figure 10: best E2 per family and n");
   auto o = std::make_shared<Figure10Options>();
-  cmd->add_option("--starts", o->starts, "random starts per family, n and placement")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
-  add_seed_option(cmd, o->seed, "random seed");
+  cmd->add_option("--starts", o->settings.starts, "random starts per family, n and placement")
+      ->capture_default_str();
+  add_seed_option(cmd, o->settings.seed, "random seed");
   cmd->add_option("--csv", o->csv, "write family, n, placement, E2 as CSV");
   cmd->add_option("--svg", o->svg, "write the plot");
   cmd->add_flag("--json", o->json, "print the points as JSON (docs/json.md)");

@@ -9,8 +9,7 @@
 #include <memory>
 #include <ostream>
 
-#include "aapat/io/json_report.h"
-#include "aapat/study/paper_tables.h"
+#include "aapat/study/study_json.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
@@ -22,50 +21,42 @@ Action add_hardware_table_command(CLI::App& app) {
       "hardware-table", "E2 of standard and optimized patterns on the 1/16 lattice of the APIs");
   struct Options {
     MetricOptions metric;
-    int starts = 32;
-    uint64_t seed = 1;
+    HardwareTableSettings settings;  // bound to the options, checked by the library
     bool json = false;
   };
   auto o = std::make_shared<Options>();
   o->metric.add_to(cmd);
-  cmd->add_option("--starts", o->starts, "random starts per family")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
-  add_seed_option(cmd, o->seed, "random seed");
+  cmd->add_option("--starts", o->settings.starts, "random starts per family")
+      ->capture_default_str();
+  add_seed_option(cmd, o->settings.seed, "random seed");
   cmd->add_flag("--json", o->json, "print the table as JSON (docs/json.md)");
   return [o](std::ostream& out) {
     const Objective objective = o->metric.resolve();
-    const Metric metric = objective.metric();
     std::vector<HardwareTableRow> rows;
     {
       Progress bar("hardware-table");
-      rows = hardware_table(metric, {o->starts, o->seed}, bar.callback());
+      rows = hardware_table(objective.metric(), o->settings, bar.callback());
     }
+    // The document is the result; the Markdown table is printed from it.
+    const JsonObject doc = hardware_table_json(objective, o->settings, rows);
     if (o->json) {
-      JsonObject js = JsonObject::array();
-      for (const HardwareTableRow& r : rows)
-        js.push_back({{"n", r.n},
-                      {"pattern", r.pattern},
-                      {"profile", r.profile},
-                      {"layout", r.layout},
-                      {"e2_continuous", r.continuous_e2},
-                      {"e2_lattice", r.lattice_e2}});
-      JsonObject doc = json_report("hardware-table");
-      doc.update(objective_json(objective));
-      doc.update(JsonObject{{"starts", o->starts}, {"seed", o->seed}, {"rows", js}});
       out << json_text(doc);
       return;
     }
     out << fmt::format(
         "E2 under the {}; continuous: the family's optimum from {} starts (catalog rows: the "
         "pattern as published); lattice: positions on 1/16 pixel, weights optimized\n\n",
-        objective.caption(), o->starts);
+        objective.caption(), doc["starts"].get<int>());
     out << "| n | pattern | profile | layout | E2 continuous | E2 on the lattice | lattice cost |\n"
            "| ---: | --- | --- | --- | ---: | ---: | ---: |\n";
-    for (const HardwareTableRow& r : rows)
-      out << fmt::format("| {} | {} | {} | {} | {:.4f} | {:.4f} | {:+.4f} |\n", r.n, r.pattern,
-                         r.profile, r.layout, r.continuous_e2, r.lattice_e2,
-                         r.lattice_e2 - r.continuous_e2);
+    for (const JsonObject& r : doc["rows"]) {
+      const double continuous = r["e2_continuous"].get<double>(),
+                   lattice = r["e2_lattice"].get<double>();
+      out << fmt::format("| {} | {} | {} | {} | {:.4f} | {:.4f} | {:+.4f} |\n",
+                         r["n"].get<std::string>(), r["pattern"].get<std::string>(),
+                         r["profile"].get<std::string>(), r["layout"].get<std::string>(),
+                         continuous, lattice, lattice - continuous);
+    }
   };
 }
 

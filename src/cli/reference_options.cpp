@@ -20,11 +20,6 @@ ReferenceSource ReferenceOptions::source() const {
       [](const std::string& message) { warnings() << "aapat: warning: " << message << "\n"; }));
 }
 
-std::string describe_reference(const ReferenceSettings& settings) {
-  return fmt::format("{} jittered samples per pixel, {}", settings.samples,
-                     make_filter(settings.filter).name());
-}
-
 void add_reference_options(CLI::App* cmd, ReferenceOptions& o, int samples_default) {
   o.settings.samples = samples_default;
   cmd->add_option("--reference-samples", o.settings.samples,

@@ -16,10 +16,6 @@ struct ReferenceOptions {
   ReferenceSource source() const;  // cached unless --no-cache
 };
 
-// "1024 jittered samples per pixel, mitchell:b=1/3,c=1/3": the reference as
-// the JSON documents name it.
-std::string describe_reference(const ReferenceSettings& settings);
-
 // `samples_default` is the reference's default samples per pixel.
 void add_reference_options(CLI::App* cmd, ReferenceOptions& o, int samples_default);
 

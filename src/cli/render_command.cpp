@@ -20,7 +20,7 @@
 #include "aapat/io/png_image.h"
 #include "aapat/io/refinement_map.h"
 #include "aapat/io/scene_json.h"
-#include "aapat/study/render_study.h"
+#include "aapat/study/study_json.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/taa_render.h"
 #include "cli/commands.h"
@@ -95,35 +95,8 @@ RenderOptions render_options(const Options& o) {
   return r;
 }
 
-// The shading and lookups of a rendering, for the report.
-JsonObject shading_json(const Sampling& s, const RenderStats& stats) {
-  return {{"mode", s.shading.mode == ShadingMode::supersample ? "supersample" : "multisample"},
-          {"shading_point", s.shading.point == ShadingPoint::centre ? "centre" : "centroid"},
-          {"texture_filter", s.shading.texture.name},
-          {"lookups_per_pixel", stats.lookups_per_pixel},
-          {"shadings_per_pixel", stats.shadings_per_pixel}};
-}
-
-JsonObject adaptive_json(const AdaptiveSettings& a, const AdaptiveImage& r) {
-  static const char* kNames[] = {"contrast", "variance", "neighbours", "primitive"};
-  return {{"criterion", kNames[static_cast<int>(a.criterion)]},
-          {"threshold", a.threshold},
-          {"max_depth", a.max_depth},
-          {"max_samples", a.max_samples},
-          {"per_square", a.per_square},
-          {"average_samples", r.average_samples},
-          {"refined_fraction", r.refined_fraction},
-          {"evaluations", r.evaluations}};
-}
-
 std::string ssim_text(const RenderFigures& f) {
   return f.ssim ? fmt::format("{:.4f}", *f.ssim) : "-";
-}
-
-JsonObject figures_json(const RenderFigures& f) {
-  return {{"rmse", f.error.rmse},
-          {"max_deviation", f.error.max_deviation},
-          {"ssim", f.ssim ? JsonObject(*f.ssim) : nullptr}};
 }
 
 void run_grid(const Options& o, std::ostream& out) {
@@ -310,23 +283,10 @@ void run_single(const Options& o, std::ostream& out) {
     text += fmt::format("adaptive ({} > {}): {:.1f}% of pixels refined, {} scene evaluations\n",
                         o.adaptive, s.adaptive->threshold, 100 * r.adaptive->refined_fraction,
                         r.adaptive->evaluations);
-  JsonObject js = json_report("render");
-  js.update(JsonObject{{"scene", o.scene},
-                       {"texture", o.texture.empty() ? JsonObject() : JsonObject(o.texture)},
-                       {"width", w},
-                       {"height", h}});
-  if (s.sampling.pattern)
-    js["pattern"] = o.pattern;
-  else
-    js.update(JsonObject{{"generator", o.generator}, {"samples", o.samples}});
-  js.update(JsonObject{{"filter", s.filter ? s.filter->name() : "pattern weights"},
-                       {"samples_per_pixel", r.stats.samples_per_pixel}});
-  js.update(shading_json(s.sampling, r.stats));
-  if (r.adaptive) js["adaptive"] = adaptive_json(*s.adaptive, *r.adaptive);
+  const JsonObject js =
+      render_json(o.scene, o.texture, o.pattern.empty() ? o.generator : o.pattern, s, r);
   if (r.figures) {
     const ImageError& e = r.figures->error;
-    js["reference"] = describe_reference(s.reference);
-    js.update(figures_json(*r.figures));
     text += fmt::format(
         "against {} jittered samples per pixel with {}: RMSE {:.3f}, max deviation {}, SSIM {}\n",
         s.reference.samples, make_filter(s.reference.filter).name(), e.rmse, e.max_deviation,

@@ -13,9 +13,8 @@
 #include "aapat/core/lattice.h"
 #include "aapat/io/api_export.h"
 #include "aapat/io/atomic_file.h"
-#include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
-#include "aapat/study/pattern_studies.h"
+#include "aapat/study/study_json.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 
@@ -47,33 +46,28 @@ Action add_snap_command(CLI::App& app) {
     if (o->nonnegative && !o->weights)
       throw Error("--nonnegative constrains the weights --optimize-weights finds: add it");
     const Objective objective = o->metric.resolve();
-    const Metric metric = objective.metric();
     const Pattern before = resolve_pattern(o->pattern);
-    const SnapResult r = snap_study(metric, before, o->lattice, o->weights, o->nonnegative);
+    const SnapResult r =
+        snap_study(objective.metric(), before, o->lattice, o->weights, o->nonnegative);
     const Pattern& after = r.snapped;
     if (!o->output.empty()) save_pattern_file(after, o->output);
+    // The document is the result; the text is printed from it.
+    const JsonObject doc = snap_json(objective, before.name, o->lattice, r);
     if (o->json) {
-      JsonObject js = json_report("snap");
-      js.update(JsonObject{{"pattern", before.name}, {"lattice", o->lattice}});
-      js.update(objective_json(objective));
-      js.update(JsonObject{{"e2_before", r.e2_before},
-                           {"e2_snapped", r.e2_snapped},
-                           {"largest_move", r.largest_move},
-                           {"family", family(after)},
-                           {"n", samples_per_pixel(after)}});
-      if (r.e2_optimized_weights) js["e2_optimized_weights"] = *r.e2_optimized_weights;
-      out << json_text(js);
+      out << json_text(doc);
       return;
     }
+    const double e2_before = doc["e2_before"].get<double>(),
+                 e2_snapped = doc["e2_snapped"].get<double>();
     out << objective.caption() << "\n";
     out << fmt::format(
         "{} on the 1/{} lattice ({}): E2 {:.4f} -> {:.4f} ({:+.4f}); largest move "
         "{:.4f} pixel\n",
-        before.name, o->lattice, family(after), r.e2_before, r.e2_snapped,
-        r.e2_snapped - r.e2_before, r.largest_move);
-    if (r.e2_optimized_weights)
+        doc["pattern"].get<std::string>(), o->lattice, doc["family"].get<std::string>(), e2_before,
+        e2_snapped, e2_snapped - e2_before, doc["largest_move"].get<double>());
+    if (doc.contains("e2_optimized_weights"))
       out << fmt::format("with weights optimized for the snapped positions: E2 {:.4f}\n",
-                         *r.e2_optimized_weights);
+                         doc["e2_optimized_weights"].get<double>());
     for (size_t k = 0; k < after.sets.size(); ++k)
       for (const Vec2& s : after.sets[k])
         out << fmt::format("  set {}: ({:>2}/{}, {:>2}/{})  {}\n", k, std::lround(s.x * o->lattice),

@@ -6,8 +6,7 @@
 #include <ostream>
 
 #include "aapat/core/filter_catalog.h"
-#include "aapat/io/json_report.h"
-#include "aapat/study/pattern_studies.h"
+#include "aapat/study/study_json.h"
 #include "cli/animation_options.h"
 #include "cli/commands.h"
 #include "cli/progress.h"
@@ -31,39 +30,26 @@ Action add_table2_command(CLI::App& app) {
       Progress bar("table2");
       rows = table2(a, o->reference.source(), bar.callback());
     }
+    // The document is the result; the text table is printed from it.
+    const JsonObject doc = table2_json(a, rows);
     if (o->json) {
-      JsonObject js = JsonObject::array();
-      for (const Table2Row& r : rows)
-        js.push_back({{"pattern", r.pattern},
-                      {"label", r.label},
-                      {"e2", r.e2},
-                      {"rmse", r.rmse},
-                      {"max_deviation", r.max_deviation},
-                      {"paper",
-                       {{"e2", r.paper_e2},
-                        {"rmse", r.paper_rmse},
-                        {"max_deviation", r.paper_max_deviation}}}});
-      JsonObject doc = json_report("table2");
-      doc.update(JsonObject{{"animation", "circle"},
-                            {"frames", a.frames},
-                            {"width", a.width},
-                            {"height", a.height},
-                            {"reference", describe_reference(a.reference)}});
-      doc.update(objective_json(named_objective(kPapersObjective)));
-      doc["rows"] = js;
       out << json_text(doc);
       return;
     }
     out << fmt::format(
         "Hasselgren Table 2 re-measured: translating circle, {} frames of {}x{}, reference {} "
-        "jittered samples per pixel with {}; E2 under the {}\naapat (paper)         E2             "
-        "  "
-        "RMSE              max dev.\n",
+        "jittered samples per pixel with {}; E2 under the {}\naapat (paper)         E2          "
+        "     RMSE              max dev.\n",
         a.frames, a.width, a.height, a.reference.samples, make_filter(a.reference.filter).name(),
         named_objective(kPapersObjective).caption());
-    for (const Table2Row& r : rows)
-      out << fmt::format("{:<21} {:>6.3f} ({:.3f})  {:>6.3f} ({:.3f})  {:>4} ({})\n", r.label, r.e2,
-                         r.paper_e2, r.rmse, r.paper_rmse, r.max_deviation, r.paper_max_deviation);
+    for (const JsonObject& r : doc["rows"]) {
+      const JsonObject& paper = r["paper"];
+      out << fmt::format("{:<21} {:>6.3f} ({:.3f})  {:>6.3f} ({:.3f})  {:>4} ({})\n",
+                         r["label"].get<std::string>(), r["e2"].get<double>(),
+                         paper["e2"].get<double>(), r["rmse"].get<double>(),
+                         paper["rmse"].get<double>(), r["max_deviation"].get<int>(),
+                         paper["max_deviation"].get<int>());
+    }
   };
 }
 

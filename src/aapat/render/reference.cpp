@@ -1,5 +1,7 @@
 #include "aapat/render/reference.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
 #include "aapat/core/filter_catalog.h"
@@ -35,6 +37,11 @@ Image render_reference(const Scene& scene, int width, int height, const Referenc
     img.values.insert(img.values.end(), values.begin(), values.end());
   }
   return img;
+}
+
+std::string describe_reference(const ReferenceSettings& settings) {
+  return fmt::format("{} jittered samples per pixel, {}", settings.samples,
+                     make_filter(settings.filter).name());
 }
 
 uint64_t reference_seed(uint64_t render_seed) {

@@ -16,6 +16,10 @@ struct ReferenceSettings {
   uint64_t seed = 1000004;
 };
 
+// "1024 jittered samples per pixel, mitchell:b=1/3,c=1/3": the reference as
+// the JSON documents name it.
+std::string describe_reference(const ReferenceSettings& settings);
+
 // The reference seed rules, written once. A rendering with seed S is
 // measured against a reference seeded S + 1000003 (independent of the
 // rendering's own jitter); frame f of an animation against one seeded

@@ -24,6 +24,9 @@ Enumeration enumerate_study(const Metric& metric, const EnumerationSettings& set
                             const StudyProgress& progress) {
   if (!(settings.starts >= 1 && settings.starts <= 100000))
     throw ParameterError("starts", fmt::format(" {}: expected 1 to 100000", settings.starts));
+  if (!(settings.rules.max_per_edge >= 0 && settings.rules.max_per_edge <= 8))
+    throw ParameterError("max-per-edge",
+                         fmt::format(" {}: expected 0 to 8", settings.rules.max_per_edge));
   Enumeration e;
   for (double n : settings.costs)
     for (const auto& c : enumerate_placements(n, settings.rules))

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "aapat/core/lattice.h"
+#include "aapat/core/spec.h"
 #include "aapat/generate/enumerate.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/optimize/lattice_search.h"
@@ -129,11 +130,20 @@ std::string method_key(Method m) {
   return text_of(m).key;
 }
 
-Method parse_method(std::string_view name) {
+std::string method_help() {
+  std::string text;
   for (const MethodText& t : kMethods)
+    text += fmt::format("{}{} ({})", text.empty() ? "" : ", ", t.key, t.name);
+  return text;
+}
+
+Method parse_method(std::string_view name) {
+  std::string keys;
+  for (const MethodText& t : kMethods) {
     if (name == t.key) return t.method;
-  throw Error(fmt::format(
-      "method '{}': known methods are descent, minimax, anneal, slsqp, mma, ccsaq", name));
+    keys += keys.empty() ? t.key : fmt::format(", {}", t.key);
+  }
+  throw_unknown_spec("method", name, keys);
 }
 
 OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& settings,

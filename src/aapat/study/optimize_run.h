@@ -71,6 +71,8 @@ struct OptimizeRunResult {
 std::string method_name(Method m);           // "Laine-Aila heuristic (t 0.99, c1 = 100 c0)", ...
 Method parse_method(std::string_view name);  // descent, minimax, anneal
 std::string method_key(Method m);            // the name parse_method reads
+// "descent (Laine-Aila heuristic ...), minimax (...), ...": every method, for help texts.
+std::string method_help();
 
 OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& settings,
                                const StudyProgress& progress = {});

@@ -25,6 +25,7 @@ struct DiscrepancyMeasures {
   bool star = true, edge = true;
 };
 DiscrepancyMeasures parse_measures(std::string_view list);  // ParameterError("measure")
+inline constexpr std::string_view kDefaultDiscrepancyMeasures = "l2-star,star,edge";
 
 struct L2Value {
   L2Kind kind;

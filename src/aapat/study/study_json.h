@@ -1,0 +1,71 @@
+// The JSON document of each study's result (docs/json.md), made once: the
+// command's --json prints it, its text and CSV tables are printed from it,
+// and the Python function returns it (or its rows) with the same keys.
+// eval_json, optimize_run_json and the temporal documents live beside
+// their studies; these are the rest.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "aapat/core/objective.h"
+#include "aapat/io/json_report.h"
+#include "aapat/study/enumeration.h"
+#include "aapat/study/paper_tables.h"
+#include "aapat/study/pattern_studies.h"
+#include "aapat/study/point_set_study.h"
+#include "aapat/study/render_study.h"
+
+namespace aapat {
+
+// Laine-Aila Table 3: rows {distribution, min, avg, max, opt_w, opt_wp,
+// paper: [the five published numbers]}.
+JsonObject table3_json(const Objective& objective, const Table3Settings& settings,
+                       const std::vector<Table3Row>& rows);
+
+// Laine-Aila Figure 10: rows {family, n, e2, placement ("" all inside), series}.
+JsonObject figure10_json(const Objective& objective, const Figure10Settings& settings,
+                         const Figure10& figure);
+
+// The lattice's cost: rows {n, pattern, profile, layout, e2_continuous, e2_lattice}.
+JsonObject hardware_table_json(const Objective& objective, const HardwareTableSettings& settings,
+                               const std::vector<HardwareTableRow>& rows);
+
+// Hasselgren Table 2: rows {pattern, label, e2, rmse, max_deviation,
+// paper: {e2, rmse, max_deviation}}, E2 under the papers' objective.
+JsonObject table2_json(const AnimationSettings& settings, const std::vector<Table2Row>& rows);
+
+// The P(4,1+,n) enumeration: rows {id, n, placement, samples_read, e2 (null
+// unless optimized)}.
+JsonObject enumeration_json(const Objective& objective, const EnumerationSettings& settings,
+                            const Enumeration& enumeration);
+
+// A pattern snapped to the lattice: e2_before, e2_snapped, largest_move,
+// family, n[, e2_optimized_weights].
+JsonObject snap_json(const Objective& objective, const std::string& pattern, int lattice,
+                     const SnapResult& result);
+
+// The discrepancies asked of a point set: points, then l2_star, ...,
+// star_lower, star_upper, star_exact, star_gap, edge, edge_normal_deg, as
+// computed. `source` names the set ("" leaves it out: Python's array).
+JsonObject discrepancy_json(const std::string& source, const DiscrepancyReport& report);
+
+// A rendering's shading and lookups: mode, shading_point, texture_filter,
+// lookups_per_pixel, shadings_per_pixel.
+JsonObject shading_json(const Sampling& sampling, const RenderStats& stats);
+// Its refinement: criterion, threshold, max_depth, max_samples, per_square,
+// average_samples, refined_fraction, evaluations.
+JsonObject adaptive_json(const AdaptiveSettings& settings, const AdaptiveImage& result);
+// Its error figures: rmse, max_deviation, ssim (null below one SSIM window).
+JsonObject figures_json(const RenderFigures& figures);
+
+// One rendering (`aapat render --json`, aapat.render's values): scene,
+// texture, width, height, pattern (or generator and samples), filter,
+// samples_per_pixel, the shading keys, adaptive {...} when refined, and when
+// measured reference, rmse, max_deviation, ssim. `scene`, `texture` and
+// `pattern` are the names the caller gave.
+JsonObject render_json(const std::string& scene, const std::string& texture,
+                       const std::string& pattern, const RenderSettings& settings,
+                       const RenderResult& result);
+
+}  // namespace aapat
