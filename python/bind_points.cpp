@@ -119,8 +119,10 @@ measures asked).
                         py::arg("points") = st.points, py::arg("realizations") = s.realizations,
                         py::arg("error_bound") = st.error_bound);
       },
-      py::arg("source"), py::arg("n") = 1024, py::arg("size") = 256, py::arg("realizations") = 1,
-      py::arg("seed") = 1, py::arg("method") = "exact",
+      py::arg("source"), py::arg("n") = kDefaultSpectrumPoints,
+      py::arg("size") = SpectrumSettings{}.size,
+      py::arg("realizations") = SpectrumSettings{}.realizations, py::arg("seed") = 1,
+      py::arg("method") = "exact",
       R"doc(The power spectrum P(f) = |sum exp(-2 pi i f.p)|^2 / N of points on the torus.
 
     source: a generator spec (drawn `realizations` times with seeds seed,
@@ -148,8 +150,9 @@ error_bound (on |P - exact P| at every f != 0; 0 for the exact sum).)doc");
         for (const LineSpectrum& s : spectra) d[py::str(s.kind)] = from_vector(s.power);
         return d;
       },
-      py::arg("kinds"), py::arg("n") = 7488, py::arg("seed") = 1, py::arg("frequencies") = 131072,
-      py::arg("max_frequency") = 4.0,
+      py::arg("kinds"), py::arg("n") = kDefaultLinePoints, py::arg("seed") = 1,
+      py::arg("frequencies") = kDefaultLineFrequencies,
+      py::arg("max_frequency") = kDefaultLineMaxFrequency,
       R"doc(Goss & Wu Fig. 8: 1D power spectra of n points with unit mean spacing.
 
     kinds: a list of "poisson" and/or "jittered". Returns a dict: frequency

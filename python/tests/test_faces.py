@@ -226,3 +226,12 @@ def test_the_type_stubs_are_the_modules_signatures():
     result = subprocess.run([sys.executable, tool, "--check", stubs], capture_output=True,
                             text=True, env={**os.environ, "PYTHONPATH": os.pathsep.join(sys.path)})
     assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_spectrum_1d_defaults_are_the_cli_defaults(aapat_cli):
+    """Goss & Wu's Figure 8 by default on both faces: 7488 points."""
+    cli = cli_json(aapat_cli, "spectrum", "--1d", "poisson", "--frequencies", "32")
+    assert cli["points"] == 7488
+    py = aapat.spectrum_1d(["poisson"], frequencies=32)
+    assert py["poisson"].tolist() == [r["poisson"] for r in cli["rows"]]
+    assert py["frequency"].tolist() == [r["frequency"] for r in cli["rows"]]

@@ -32,7 +32,9 @@ namespace aapat {
 namespace {
 
 struct Options {
-  std::string scene, pattern, generator, filter, size = "256x256", output;
+  // The defaults are the library's (default-constructed settings).
+  std::string scene, pattern, generator, filter,
+      size = fmt::format("{}x{}", RenderSettings{}.width, RenderSettings{}.height), output;
   std::string error_png, histogram, histogram_svg, translate, table, reference_png;
   std::string texture, refinement_map;
   // Set on `rendering` through RenderOptions::set, which checks each value.
@@ -41,17 +43,15 @@ struct Options {
   std::optional<int> max_depth, max_samples, per_square;
   ReferenceOptions reference;
   double rotate = 0, scale = 1;
-  int samples = 16, zoom = 1;
-  uint64_t seed = 1;
+  int samples = Sampling{}.samples, zoom = 1;
+  uint64_t seed = Sampling{}.seed;
   bool json = false, grid = false, measure = false;
   // Temporal mode: a sequence accumulated over frames of the static scene.
   std::string sequence;
   ModelOptions model;
   int frames = 0;
   bool cut = false;
-  std::vector<std::string> rows{"regular@4",  "n-queens@4",  "jittered@4",
-                                "regular@16", "n-queens@16", "jittered@16"};
-  std::vector<std::string> columns{"box", "tent", "gaussian-half"};
+  std::vector<std::string> rows = RenderGridSettings{}.rows, columns = RenderGridSettings{}.columns;
 };
 
 // The reference every figure of this run is measured against.

@@ -19,8 +19,12 @@ namespace {
 
 struct SpectrumOptions {
   PointOptions src;
-  int size = 256, realizations = 1, frequencies = 131072;
-  double max_frequency = 4;
+  // The library's defaults; --n's is the 2D one (kDefaultSpectrumPoints)
+  // and --1d's is kDefaultLinePoints unless --n is given.
+  int size = SpectrumSettings{}.size, realizations = SpectrumSettings{}.realizations,
+      frequencies = kDefaultLineFrequencies;
+  double max_frequency = kDefaultLineMaxFrequency;
+  const CLI::Option* n_option = nullptr;
   std::string png, csv, svg, one_d;
   bool json = false, fast = false;
 };
@@ -64,7 +68,8 @@ void run_line_spectra(const SpectrumOptions& o, std::ostream& out) {
     throw Error(fmt::format("--1d draws its own 1D points; drop the source '{}'", o.src.source));
   std::vector<std::string> kinds;
   for (std::string_view k : split(o.one_d)) kinds.emplace_back(trim(k));
-  const auto spectra = line_spectra(kinds, o.src.n, o.src.seed, o.frequencies, o.max_frequency);
+  const int n = o.n_option->count() ? o.src.n : kDefaultLinePoints;
+  const auto spectra = line_spectra(kinds, n, o.src.seed, o.frequencies, o.max_frequency);
   const size_t count = spectra.back().points;
   auto frequency = [&](int k) { return k * o.max_frequency / o.frequencies; };
   if (!o.csv.empty()) {
@@ -123,7 +128,9 @@ Action add_spectrum_command(CLI::App& app) {
       app.add_subcommand("spectrum", "Fourier power spectrum of a point set (2D, or 1D with --1d)");
   auto o = std::make_shared<SpectrumOptions>();
   cmd->add_option("source", o->src.source, "generator spec or a point file (2D; docs/formats.md)");
+  o->src.n = kDefaultSpectrumPoints;
   o->src.add_common(cmd);
+  o->n_option = cmd->get_option("--n");
   cmd->add_option("--size", o->size, "frequencies per axis, -size/2 .. size/2-1")
       ->capture_default_str()
       ->check(CLI::Range(8, 2048));

@@ -49,6 +49,9 @@ inline constexpr double kMaxSpectrumTerms = 68719476736.0;  // 2^36
 // Realization r of a point source (a file has one, whatever r).
 using PointSource = std::function<std::vector<Vec2>(int realization)>;
 
+// Points per realization of a generator when none is given (every face).
+inline constexpr int kDefaultSpectrumPoints = 1024;
+
 struct SpectrumSettings {
   int size = 256;              // frequencies -size/2 .. size/2-1 per axis
   int realizations = 1;        // point sets averaged
@@ -75,7 +78,11 @@ struct LineSpectrum {
   // (|f| < 2 / length) on: a curve a plot can draw.
   std::vector<double> bin_frequency, bin_power;
 };
-// The 1D spectra's limits (docs/limits.md), checked by line_spectra for every face.
+// The 1D spectra's defaults, Goss & Wu's Figure 8 (7488 points, 2^17
+// frequencies up to 4 cycles per mean spacing), and limits (docs/limits.md),
+// checked by line_spectra for every face.
+inline constexpr int kDefaultLinePoints = 7488, kDefaultLineFrequencies = 131072;
+inline constexpr double kDefaultLineMaxFrequency = 4;
 inline constexpr int kMinLineFrequencies = 16, kMaxLineFrequencies = 10'000'000;
 inline constexpr double kMinLineMaxFrequency = 0.01, kMaxLineMaxFrequency = 1000;
 std::vector<LineSpectrum> line_spectra(const std::vector<std::string>& kinds, int n, uint64_t seed,
