@@ -1,7 +1,9 @@
 // Exact-DFT power spectrum of 4096 points at 512 x 512 frequencies (issue: a
 // few seconds on 2 cores), one thread and all threads; the fast (NUFFT)
 // spectrum at 65,536 points x 1024^2 with its error against the exact sum
-// measured at 16,384 x 512^2; the discrepancies, each L2 kind alone.
+// measured at 16,384 x 512^2; the discrepancies, each L2 kind alone; FLIP of
+// a 1920 x 1080 pair (the whole process is measured against the reference
+// tool in docs/benchmarks.md).
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
@@ -12,6 +14,7 @@
 
 #include "aapat/analyze/discrepancy.h"
 #include "aapat/analyze/fast_spectrum.h"
+#include "aapat/analyze/flip.h"
 #include "aapat/analyze/l2_discrepancy.h"
 #include "aapat/analyze/spectrum.h"
 #include "aapat/generate/point_generators.h"
@@ -79,6 +82,19 @@ void Discrepancies(benchmark::State& state) {
   }
 }
 BENCHMARK(Discrepancies)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond);
+
+// FLIP at the default 67 pixels per degree: random colour images, the work
+// of any pair of their size.
+void Flip(benchmark::State& state) {
+  const int w = static_cast<int>(state.range(0)), h = static_cast<int>(state.range(1));
+  ColorImage a{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)}, b = a;
+  for (size_t k = 0; k < a.rgb.size(); ++k) {
+    a.rgb[k] = static_cast<float>((k * 2654435761u) % 1000) / 999.0f;
+    b.rgb[k] = std::clamp(a.rgb[k] + static_cast<float>((k * 40503u) % 7) / 100.0f, 0.0f, 1.0f);
+  }
+  for (auto _ : state) benchmark::DoNotOptimize(flip(a, b, default_pixels_per_degree()).mean);
+}
+BENCHMARK(Flip)->Args({256, 256})->Args({1920, 1080})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace aapat

@@ -1,7 +1,10 @@
 // The renderer: a scene sampled with a pattern or a per-pixel generator,
 // images as (height, width) arrays, measured against the dense reference.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include "aapat/analyze/flip.h"
+#include "aapat/io/png_image.h"
 #include "aapat/core/filter_catalog.h"
 #include "aapat/io/scene_json.h"
 #include "aapat/study/study_json.h"
@@ -19,9 +22,75 @@ Array image_array(const Image& img) {
   return a;
 }
 
+// An (h, w) grey or (h, w, 3) sRGB array in [0, 1] as a colour image.
+ColorImage color_image(const Array& a, const char* what) {
+  if (!((a.ndim() == 2) || (a.ndim() == 3 && a.shape(2) == 3)) || a.size() == 0) {
+    std::vector<py::ssize_t> shape(a.shape(), a.shape() + a.ndim());
+    throw Error(
+        fmt::format("diff: {} must be an (h, w) grey or (h, w, 3) RGB array, not of shape ({})",
+                    what, fmt::join(shape, ", ")));
+  }
+  const int h = static_cast<int>(a.shape(0)), w = static_cast<int>(a.shape(1));
+  ColorImage img{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
+  const double* v = a.data();
+  const int channels = a.ndim() == 3 ? 3 : 1;
+  for (size_t p = 0; p < img.pixels(); ++p)
+    for (int c = 0; c < 3; ++c) {
+      const double x = v[p * channels + (channels == 3 ? c : 0)];
+      if (!(x >= 0 && x <= 1))
+        throw Error(
+            fmt::format("diff: {} holds {} at pixel {}; values must be in [0, 1]", what, x, p));
+      img.rgb[3 * p + c] = static_cast<float>(x);
+    }
+  return img;
+}
+
 }  // namespace
 
 void bind_render(py::module_& m) {
+  m.def(
+      "read_image",
+      [](const std::string& path) {
+        const ColorImage img = read_png_color(path, "image").image;
+        Array out({static_cast<py::ssize_t>(img.height), static_cast<py::ssize_t>(img.width),
+                   py::ssize_t{3}});
+        std::copy(img.rgb.begin(), img.rgb.end(), out.mutable_data());
+        return out;
+      },
+      py::arg("path"),
+      R"doc(A PNG file (grey or colour, 8 or 16 bits; alpha dropped, as `aapat diff`
+reads it) as an (h, w, 3) array of sRGB values in [0, 1], top row first.)doc");
+
+  m.def(
+      "diff",
+      [](const Array& reference, const Array& test, double ppd) {
+        const ColorImage ref = color_image(reference, "reference"), tst = color_image(test, "test");
+        ImageDiff d;
+        {
+          py::gil_scoped_release release;
+          d = image_diff(ref, tst, ppd);
+        }
+        py::dict out = values_of(diff_json("", "", d));
+        Array map(
+            {static_cast<py::ssize_t>(d.flip.height), static_cast<py::ssize_t>(d.flip.width)});
+        std::copy(d.flip.map.begin(), d.flip.map.end(), map.mutable_data());
+        out["map"] = map;
+        return out;
+      },
+      py::arg("reference"), py::arg("test"), py::kw_only(),
+      py::arg("ppd") = default_pixels_per_degree(),
+      R"doc(How `test` differs from `reference`, as `aapat diff` measures it.
+
+Both are (h, w) grey or (h, w, 3) sRGB arrays with values in [0, 1], the same
+size. Returns the values of `aapat diff --json`: width, height, ppd, rmse
+and psnr (over the channels, on the 8-bit scale), ssim, and FLIP (Andersson
+et al. 2020): flip (the mean), flip_min, flip_max, flip_weighted_q1,
+flip_weighted_median, flip_weighted_q3, flip_histogram; and map, the per-pixel
+FLIP as an (h, w) array.
+
+    ppd: the observer's pixels per degree (default 67.02: 0.7 m from a 0.7 m
+        wide 3840-pixel screen).)doc");
+
   m.def(
       "render",
       [](const std::string& scene, const py::object& pattern, const std::string& generator,

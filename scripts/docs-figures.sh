@@ -62,6 +62,19 @@ AAPAT="$aapat" "$root/scripts/catalog-table.sh" docs/catalog-table.md >/dev/null
 # Jitter and alternating-MSAA sequences under box, EMA and EMA + resolve, and rendered TAA.
 AAPAT="$aapat" "$root/scripts/temporal-table.sh" docs/temporal-table.md >/dev/null
 "$aapat" hardware-table --objective laine-aila > docs/hardware-table.md
+# FLIP (docs/perceptual.md): msaa-8 and aapat-8 on the zone plate against its reference.
+flip_tmp=$(mktemp -d)
+"$aapat" render zoneplate --pattern msaa-8 --size 128x128 --reference-samples 256 --no-cache \
+  -o "$flip_tmp/msaa-8.png" --reference "$flip_tmp/reference.png" >/dev/null
+"$aapat" render zoneplate --pattern aapat-8 --size 128x128 -o "$flip_tmp/aapat-8.png" >/dev/null
+{
+  echo "pattern,rmse,flip,flip_weighted_median"
+  for p in msaa-8 aapat-8; do
+    "$aapat" diff "$flip_tmp/reference.png" "$flip_tmp/$p.png" --map "$img/flip-zoneplate-$p.png" --json |
+      python3 -c "import json,sys; d=json.load(sys.stdin); print('$p,%.3f,%.6f,%.4f' % (d['rmse'], d['flip'], d['flip_weighted_median']))"
+  done
+} > docs/flip-zoneplate.csv
+rm -rf "$flip_tmp"
 # Every registry of specs, as aapat list prints it (the same entries the parsers use).
 "$aapat" list > docs/registry.txt
 echo "figures written under docs/"

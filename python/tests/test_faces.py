@@ -75,6 +75,7 @@ ARRAY_CALLS = {
     "discrepancy": lambda a: aapat.discrepancy(a + 0.5),
     "spectrum": lambda a: aapat.spectrum(a + 0.5, size=8),
     "write_points": lambda a: aapat.write_points("/nonexistent-dir/x.csv", a + 0.5),
+    "diff": lambda a: aapat.diff(a + 0.5, np.full_like(a, 0.5)),
 }
 
 
@@ -235,3 +236,21 @@ def test_spectrum_1d_defaults_are_the_cli_defaults(aapat_cli):
     py = aapat.spectrum_1d(["poisson"], frequencies=32)
     assert py["poisson"].tolist() == [r["poisson"] for r in cli["rows"]]
     assert py["frequency"].tolist() == [r["frequency"] for r in cli["rows"]]
+
+
+def test_diff_is_the_cli_document(aapat_cli):
+    """aapat.diff on arrays gives `aapat diff --json`'s values for the same
+    pixels (the committed zoneplate pair: an aapat rendering against its
+    reference), and the reference implementation's mean FLIP."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    pair = [os.path.join(here, "..", "..", "testdata", "flip", f)
+            for f in ("zoneplate-ref.png", "zoneplate-msaa4.png")]
+    cli = cli_json(aapat_cli, "diff", *pair)
+    assert abs(cli["flip"] - 0.107815) < 1e-5  # NVlabs/flip v1.6 (testdata/flip/README.md)
+    ref, test = (aapat.read_image(p) for p in pair)
+    assert np.array_equal(ref[..., 0], ref[..., 2])  # a grey file: R = G = B
+    py = aapat.diff(ref, test)
+    assert py["map"].shape == ref.shape[:2]
+    assert aapat.diff(ref[..., 0], test[..., 1])["flip"] == py["flip"]  # grey arrays too
+    values = {k: v for k, v in py.items() if k != "map"}
+    assert values == {k: v for k, v in cli.items() if k not in ("reference", "test")}

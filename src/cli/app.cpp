@@ -157,6 +157,7 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   add(add_hardware_table_command);
   add(add_study_command);
   add(add_sequence_command);
+  add(add_diff_command);
   LocalEngine local;
   WorkEngine& items = engine ? *engine : local;
   try {

@@ -29,6 +29,7 @@ Action add_import_command(CLI::App& app);
 Action add_hardware_table_command(CLI::App& app);
 Action add_study_command(CLI::App& app);
 Action add_sequence_command(CLI::App& app);
+Action add_diff_command(CLI::App& app);
 
 // --seed: a whole number from 0 to 2^64 - 1; "-1" is refused, not wrapped.
 CLI::Option* add_seed_option(CLI::App* cmd, uint64_t& seed, const std::string& help);

@@ -351,5 +351,31 @@ TEST(Hardening, BadTexturesAndRefinementSettingsAreNamedAndWriteNothing) {
   }
 }
 
+// `aapat diff` refuses what it cannot compare, by name, and writes no map:
+// sizes that differ, a file that is not a PNG, a truncated PNG, a missing
+// file, a pixels-per-degree out of range. An alpha channel is ignored with a
+// warning that says so.
+TEST(Hardening, DiffRefusesWhatItCannotCompareAndWritesNoMap) {
+  const std::string dir = std::string(AAPAT_TESTDATA_DIR) + "/flip/";
+  const std::string map = temp_path("flip-map.png");
+  fs::remove(map);  // from an earlier run
+  const std::string ref = dir + "colour-ref.png", test = dir + "colour-test.png";
+  std::ifstream in(test, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string truncated = write("truncated.png", bytes.substr(0, bytes.size() / 2));
+  expect_error(run({"diff", ref, dir + "zoneplate-ref.png", "--map", map}), kExitError,
+               "the reference is 48x40 pixels and the test 64x48");
+  expect_error(run({"diff", ref, dir + "README.md", "--map", map}), kExitError,
+               "test image '" + dir + "README.md': not a PNG");
+  expect_error(run({"diff", ref, truncated, "--map", map}), kExitError, "cannot decode it");
+  expect_error(run({"diff", ref, dir + "missing.png"}), kExitError, "missing.png");
+  expect_error(run({"diff", ref, test, "--ppd", "0"}), kExitError, "--ppd 0: expected 1 to 1000");
+  EXPECT_FALSE(fs::exists(map));
+  const CliRun alpha = run({"diff", ref, dir + "colour-test-rgba.png", "--map", map});
+  EXPECT_EQ(alpha.code, 0) << alpha.err;
+  EXPECT_NE(alpha.err.find("alpha channel; it is ignored"), std::string::npos) << alpha.err;
+  EXPECT_TRUE(fs::exists(map));
+}
+
 }  // namespace
 }  // namespace aapat

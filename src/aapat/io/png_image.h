@@ -1,15 +1,37 @@
-// Greyscale PNG output through libpng, written whole or not at all.
+// PNG files through libpng: grey and colour images written whole or not at
+// all, and any PNG read as a colour image.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "aapat/analyze/color_image.h"
+
 namespace aapat {
 
-// `pixels` is width x height bytes, row by row from the top.
+// `pixels` is width x height x channels bytes (1: grey, 3: RGB), row by row
+// from the top.
+std::string png_bytes(int width, int height, int channels, const std::vector<uint8_t>& pixels);
 std::string png_gray_bytes(int width, int height, const std::vector<uint8_t>& pixels);
 void write_png_gray(const std::string& path, int width, int height,
                     const std::vector<uint8_t>& pixels);
+void write_png_rgb(const std::string& path, int width, int height,
+                   const std::vector<uint8_t>& pixels);
+
+// The largest image read_png_color takes (docs/limits.md): 2^25 pixels (8K
+// UHD), checked from the header before any pixel is decoded.
+inline constexpr size_t kMaxColorImagePixels = size_t{1} << 25;
+
+struct PngColor {
+  ColorImage image;  // sRGB values in [0, 1]; grey files give R = G = B
+  bool had_alpha = false;
+};
+// Any PNG: grey or colour, with or without alpha, 1 to 16 bits, palette or
+// not; 16-bit values are reduced to 8 bits, as FLIP's reference tool reads
+// them. Alpha is dropped: the colour compared is the colour stored. Throws
+// Error naming the file (`what` says what it is): missing, not a PNG,
+// truncated, or too large.
+PngColor read_png_color(const std::string& path, const std::string& what);
 
 }  // namespace aapat

@@ -174,4 +174,22 @@ JsonObject render_json(const std::string& scene, const std::string& texture,
   return doc;
 }
 
+JsonObject diff_json(const std::string& reference, const std::string& test, const ImageDiff& d) {
+  JsonObject doc = json_report("diff");
+  if (!reference.empty()) doc["reference"] = reference;
+  if (!test.empty()) doc["test"] = test;
+  doc.update(JsonObject{{"width", d.flip.width}, {"height", d.flip.height}, {"ppd", d.ppd}});
+  doc.update(JsonObject{{"rmse", d.rmse},
+                        {"psnr", d.psnr ? JsonObject(*d.psnr) : nullptr},
+                        {"ssim", d.ssim ? JsonObject(*d.ssim) : nullptr},
+                        {"flip", d.flip.mean},
+                        {"flip_min", d.flip.min},
+                        {"flip_max", d.flip.max},
+                        {"flip_weighted_q1", d.flip.weighted_q1},
+                        {"flip_weighted_median", d.flip.weighted_median},
+                        {"flip_weighted_q3", d.flip.weighted_q3},
+                        {"flip_histogram", d.flip.histogram}});
+  return doc;
+}
+
 }  // namespace aapat

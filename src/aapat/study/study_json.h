@@ -11,6 +11,7 @@
 #include "aapat/core/objective.h"
 #include "aapat/io/json_report.h"
 #include "aapat/study/enumeration.h"
+#include "aapat/study/image_diff.h"
 #include "aapat/study/paper_tables.h"
 #include "aapat/study/pattern_studies.h"
 #include "aapat/study/point_set_study.h"
@@ -67,5 +68,12 @@ JsonObject figures_json(const RenderFigures& figures);
 JsonObject render_json(const std::string& scene, const std::string& texture,
                        const std::string& pattern, const RenderSettings& settings,
                        const RenderResult& result);
+
+// `aapat diff`: reference, test, width, height, ppd, then rmse, psnr,
+// ssim, flip (the mean), flip_min, flip_max, flip_weighted_q1,
+// flip_weighted_median, flip_weighted_q3 and flip_histogram (pixels per
+// bucket of 1/100). `reference` and `test` name the images ("" leaves them
+// out: Python's arrays).
+JsonObject diff_json(const std::string& reference, const std::string& test, const ImageDiff& diff);
 
 }  // namespace aapat

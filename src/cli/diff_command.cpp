@@ -1,0 +1,83 @@
+// `aapat diff REFERENCE TEST`: how a test image differs from its reference,
+// by RMSE, PSNR and SSIM and by FLIP, the perceived difference (mean,
+// weighted quartiles and extremes); optionally the FLIP map as a PNG.
+#include <fmt/format.h>
+
+#include <memory>
+#include <ostream>
+
+#include "aapat/io/flip_map.h"
+#include "aapat/io/png_image.h"
+#include "aapat/study/study_json.h"
+#include "cli/app.h"
+#include "cli/commands.h"
+
+namespace aapat {
+namespace {
+
+struct DiffOptions {
+  std::string reference, test, map;
+  double ppd = default_pixels_per_degree();
+  bool json = false;
+};
+
+// A missing value (equal images have no PSNR) prints as "-".
+std::string number(const JsonObject& v, const char* format) {
+  return v.is_null() ? "-" : fmt::format(fmt::runtime(format), v.get<double>());
+}
+
+void run_diff(const DiffOptions& o, std::ostream& out) {
+  if (!o.map.empty() && !o.map.ends_with(".png"))
+    throw Error(fmt::format("--map: '{}' must end in .png", o.map));
+  const PngColor reference = read_png_color(o.reference, "reference image");
+  const PngColor test = read_png_color(o.test, "test image");
+  auto note_alpha = [](const PngColor& image, const std::string& path) {
+    if (image.had_alpha)
+      warnings() << fmt::format(
+          "aapat: warning: '{}' has an alpha channel; it is ignored and the colour stored is "
+          "compared (as FLIP's reference tool does)\n",
+          path);
+  };
+  note_alpha(reference, o.reference);
+  note_alpha(test, o.test);
+  const ImageDiff d = image_diff(reference.image, test.image, o.ppd);
+  if (!o.map.empty()) {
+    const RgbRaster r = flip_map_with_scale(d.flip.map, d.flip.width, d.flip.height);
+    write_png_rgb(o.map, r.width, r.height, r.pixels);
+  }
+  // The document is the result; the text is printed from it.
+  const JsonObject doc = diff_json(o.reference, o.test, d);
+  if (o.json) {
+    out << json_text(doc);
+    return;
+  }
+  out << fmt::format("{} against {}, {}x{}, {:.1f} pixels per degree\n", o.test, o.reference,
+                     doc["width"].get<int>(), doc["height"].get<int>(), doc["ppd"].get<double>());
+  out << fmt::format("  RMSE {:.3f} levels, PSNR {} dB, SSIM {}\n", doc["rmse"].get<double>(),
+                     number(doc["psnr"], "{:.2f}"), number(doc["ssim"], "{:.4f}"));
+  out << fmt::format(
+      "  FLIP mean {:.6f}; weighted quartiles {:.4f} {:.4f} {:.4f}; min {:.4f}, max {:.4f}\n",
+      doc["flip"].get<double>(), doc["flip_weighted_q1"].get<double>(),
+      doc["flip_weighted_median"].get<double>(), doc["flip_weighted_q3"].get<double>(),
+      doc["flip_min"].get<double>(), doc["flip_max"].get<double>());
+  if (!o.map.empty()) out << "wrote " << o.map << "\n";
+}
+
+}  // namespace
+
+Action add_diff_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "diff", "how a test image differs from its reference: RMSE, PSNR, SSIM and FLIP");
+  auto o = std::make_shared<DiffOptions>();
+  cmd->add_option("reference", o->reference, "the reference image (PNG)")->required();
+  cmd->add_option("test", o->test, "the test image (PNG, the same size)")->required();
+  cmd->add_option("--ppd", o->ppd,
+                  "the observer's pixels per degree (default: 0.7 m from a 0.7 m wide 3840-pixel "
+                  "screen)")
+      ->capture_default_str();
+  cmd->add_option("--map", o->map, "write the FLIP map with its colour scale (.png)");
+  cmd->add_flag("--json", o->json, "print JSON (docs/json.md)");
+  return [o](std::ostream& out) { run_diff(*o, out); };
+}
+
+}  // namespace aapat
