@@ -65,16 +65,16 @@ for key, title in (("box", "a box window of the period"), ("ema", "EMA alpha 0.1
               f"{r['worst_centroid']:.4f} | {r['prefixes'][-1]['star']:.4f} |")
     print()
 print("## Rendered TAA (EMA alpha 0.1, steady state, 64x64)\n")
-print("RMSE, maximum deviation and flicker on the 0-255 scale (flicker: the mean absolute")
+print("RMSE, maximum deviation and flicker on the 0-255 scale, SSIM and FLIP the means over frames (flicker: the mean absolute")
 print("change of the per-pixel error from one frame to the next); moving: 64 frames of the")
 print("animation; static: its first frame held for 32 frames.\n")
-print("| animation | sequence | RMSE | max dev. | SSIM | flicker | static RMSE | static SSIM | static flicker |")
-print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
+print("| animation | sequence | RMSE | max dev. | SSIM | FLIP | flicker | static RMSE | static SSIM | static FLIP | static flicker |")
+print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
 for k in range(count):
     a = json.load(open(f"{folder}/anim-{k}.json"))
     s = json.load(open(f"{folder}/still-{k}.json"))
     print(f"| {a['animation']} | {short(a['pattern'])} | {a['rmse']:.3f} | {a['max_deviation']} | "
-          f"{a['mean_ssim']:.4f} | {a['flicker']:.3f} | {s['rmse']:.3f} | {s['mean_ssim']:.4f} | "
-          f"{s['flicker']:.3f} |")
+          f"{a['mean_ssim']:.4f} | {a['mean_flip']:.4f} | {a['flicker']:.3f} | {s['rmse']:.3f} | "
+          f"{s['mean_ssim']:.4f} | {s['mean_flip']:.4f} | {s['flicker']:.3f} |")
 PY
 echo "wrote $out"

@@ -59,11 +59,12 @@ struct AnimateOptions : AnimationOptions {
 };
 
 std::string taa_csv(const TaaResult& r) {
-  std::string csv = "frame,rmse,max_deviation,ssim,flicker\n";
+  std::string csv = "frame,rmse,max_deviation,ssim,flip,flicker\n";
   for (size_t f = 0; f < r.frames.size(); ++f)
-    csv += fmt::format("{},{:.6f},{},{},{:.6f}\n", f, r.frames[f].rmse, r.frames[f].max_deviation,
+    csv += fmt::format("{},{:.6f},{},{},{:.6f},{:.6f}\n", f, r.frames[f].rmse,
+                       r.frames[f].max_deviation,
                        r.frames[f].ssim ? fmt::format("{:.6f}", *r.frames[f].ssim) : "",
-                       r.frames[f].flicker);
+                       r.frames[f].flip, r.frames[f].flicker);
   return csv;
 }
 
@@ -144,12 +145,14 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
       doc["steady"] = !o.cut;
       doc["static"] = o.still;
       doc["mean_ssim"] = taa->mean_ssim ? JsonObject(*taa->mean_ssim) : nullptr;
+      doc["mean_flip"] = taa->mean_flip;
       doc["flicker"] = taa->flicker;
       JsonObject::array_t rows;
       for (const TaaFrame& f : taa->frames)
         rows.push_back(JsonObject{{"rmse", f.rmse},
                                   {"max_deviation", f.max_deviation},
                                   {"ssim", f.ssim ? JsonObject(*f.ssim) : nullptr},
+                                  {"flip", f.flip},
                                   {"flicker", f.flicker}});
       doc["rows"] = rows;
     }
@@ -159,10 +162,11 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
   if (taa) {
     out << fmt::format(
         "{} animation{}, {} frames of {}x{}, {} under {}{}: RMSE {:.3f}, max deviation {}, mean "
-        "SSIM {}, flicker {:.3f} levels per pixel and frame\n",
+        "SSIM {}, mean FLIP {:.4f}, flicker {:.3f} levels per pixel and frame\n",
         a.animation, o.still ? " (static)" : "", a.frames, a.width, a.height, sequence->name,
         o.model.text(), o.cut ? " from a cut" : " in steady state", e.rmse, e.max_deviation,
-        taa->mean_ssim ? fmt::format("{:.4f}", *taa->mean_ssim) : "-", taa->flicker);
+        taa->mean_ssim ? fmt::format("{:.4f}", *taa->mean_ssim) : "-", taa->mean_flip,
+        taa->flicker);
     return;
   }
   out << fmt::format("{} animation, {} frames of {}x{}, {}: RMSE {:.3f}, max deviation {}\n",

@@ -136,7 +136,7 @@ void run_grid(const Options& o, std::ostream& out) {
   std::string rule = "| --- | --- | ---: |";
   if (lookups) table += " lookups/pixel |", rule += " ---: |";
   if (refined) table += " refined |", rule += " ---: |";
-  table += " RMSE | max dev. | SSIM |\n" + rule + " ---: | ---: | ---: |\n";
+  table += " RMSE | max dev. | SSIM | FLIP |\n" + rule + " ---: | ---: | ---: | ---: |\n";
   // Refinement maps on one scale: 1 sample to the most any mapped cell took
   // (a uniform sampling's map is its constant count).
   const size_t pixels = static_cast<size_t>(w) * h;  // (clang 14 captures no structured binding)
@@ -168,7 +168,8 @@ void run_grid(const Options& o, std::ostream& out) {
     if (lookups) table += fmt::format(" {:.2f} |", c.stats.lookups_per_pixel);
     if (refined)
       table += c.adaptive ? fmt::format(" {:.1f}% |", 100 * c.adaptive->refined_fraction) : " - |";
-    table += fmt::format(" {:.3f} | {} | {} |\n", e.rmse, e.max_deviation, ssim_text(c.figures));
+    table += fmt::format(" {:.3f} | {} | {} | {:.4f} |\n", e.rmse, e.max_deviation,
+                         ssim_text(c.figures), c.figures.flip);
     JsonObject cell = c.sampling.pattern ? JsonObject{{"pattern", c.row}}
                                          : JsonObject{{"generator", c.sampling.generator},
                                                       {"samples", c.sampling.samples}};
@@ -288,9 +289,10 @@ void run_single(const Options& o, std::ostream& out) {
   if (r.figures) {
     const ImageError& e = r.figures->error;
     text += fmt::format(
-        "against {} jittered samples per pixel with {}: RMSE {:.3f}, max deviation {}, SSIM {}\n",
+        "against {} jittered samples per pixel with {}: RMSE {:.3f}, max deviation {}, SSIM {}, "
+        "FLIP {:.4f}\n",
         s.reference.samples, make_filter(s.reference.filter).name(), e.rmse, e.max_deviation,
-        ssim_text(*r.figures));
+        ssim_text(*r.figures), r.figures->flip);
     if (!o.error_png.empty())
       write_png_gray(o.error_png, w, h, error_pixels(r.image, *r.reference));
     if (!o.reference_png.empty()) write_png_gray(o.reference_png, w, h, grey_pixels(*r.reference));
@@ -339,16 +341,17 @@ void run_temporal(const Options& o, std::ostream& out) {
                          {"rmse", r.total.rmse},
                          {"max_deviation", r.total.max_deviation},
                          {"mean_ssim", r.mean_ssim ? JsonObject(*r.mean_ssim) : nullptr},
+                         {"mean_flip", r.mean_flip},
                          {"flicker", r.flicker}});
     out << json_text(js);
     return;
   }
   out << fmt::format(
       "{} {}x{}, {} under {}, {} frames{}: RMSE {:.3f}, max deviation {}, mean SSIM {}, "
-      "flicker {:.3f} levels per pixel and frame\n",
+      "mean FLIP {:.4f}, flicker {:.3f} levels per pixel and frame\n",
       o.scene, w, h, s.name, o.model.text(), scenes.frames,
       o.cut ? " from a cut" : " in steady state", r.total.rmse, r.total.max_deviation,
-      r.mean_ssim ? fmt::format("{:.4f}", *r.mean_ssim) : "-", r.flicker);
+      r.mean_ssim ? fmt::format("{:.4f}", *r.mean_ssim) : "-", r.mean_flip, r.flicker);
 }
 
 }  // namespace

@@ -70,11 +70,14 @@ TEST(SequenceCli, TemporalRenderingReportsEveryMeasure) {
                       "--size", "24", "--reference-samples", "16", "--no-cache", "--csv", csv});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("in steady state: RMSE"), std::string::npos) << r.out;
-  EXPECT_TRUE(testing::slurp(csv).starts_with("frame,rmse,max_deviation,ssim,flicker\n"));
+  EXPECT_TRUE(testing::slurp(csv).starts_with("frame,rmse,max_deviation,ssim,flip,flicker\n"));
   const auto still = run({"render", "spiral", "--size", "24x24", "--sequence", "r2:frames=4",
                           "--reference-samples", "16", "--no-cache", "--json"});
   ASSERT_EQ(still.code, 0) << still.err;
-  EXPECT_EQ(nlohmann::json::parse(still.out)["frames"], 4);
+  const auto doc = nlohmann::json::parse(still.out);
+  EXPECT_EQ(doc["frames"], 4);
+  EXPECT_GT(doc["mean_flip"].get<double>(), 0);  // FLIP is reported wherever the others are
+  EXPECT_LT(doc["mean_flip"].get<double>(), 1);
 }
 
 // Every refusal names the problem, exits non-zero and leaves no file.

@@ -18,6 +18,7 @@
 #include "aapat/optimize/family.h"
 #include "aapat/optimize/multistart.h"
 #include "aapat/render/image_error.h"
+#include "aapat/render/image_flip.h"
 #include "aapat/render/renderer.h"
 #include "aapat/render/ssim.h"
 #include "aapat/work/byte_codec.h"
@@ -114,12 +115,12 @@ std::vector<StudyPattern> budget_patterns(const StudySettings& s,
 
 // One pattern's rendered measures on one scene: every frame against its
 // reference, the deviations of all frames together.
-std::array<double, 4> render_measures(const Pattern& p, const std::vector<Scene>& frames,
-                                      const std::vector<Image>& references, int size) {
+StudyMeasures render_measures(const Pattern& p, const std::vector<Scene>& frames,
+                              const std::vector<Image>& references, int size) {
   Sampling sampling;
   sampling.pattern = p;
   ImageError total;
-  double pixels = 0, ssim_sum = 0;
+  double pixels = 0, ssim_sum = 0, flip_sum = 0;
   for (size_t f = 0; f < frames.size(); ++f) {
     const Image image = render(frames[f], size, size, sampling, std::nullopt);
     const ImageError e = compare(image, references[f]);
@@ -127,12 +128,13 @@ std::array<double, 4> render_measures(const Pattern& p, const std::vector<Scene>
     total.max_deviation = std::max(total.max_deviation, e.max_deviation);
     pixels += static_cast<double>(image.values.size());
     ssim_sum += size >= kSsimWindow ? ssim(image, references[f]) : 1.0;
+    flip_sum += flip_mean(image, references[f]);
   }
   summarize(total, pixels);
   double tail = 0;
   for (int i = kTailLevel; i < 256; ++i) tail += total.contribution[i];
-  return {total.rmse, double(total.max_deviation), 1 - ssim_sum / double(frames.size()),
-          std::sqrt(tail)};
+  const double n = static_cast<double>(frames.size());
+  return {total.rmse, double(total.max_deviation), 1 - ssim_sum / n, std::sqrt(tail), flip_sum / n};
 }
 
 }  // namespace

@@ -33,8 +33,9 @@ struct StudyObjective {
 };
 
 // The rendered measures, each larger = worse.
-inline constexpr std::array<const char*, 4> kStudyMeasures = {"rmse", "max_deviation",
-                                                              "one_minus_ssim", "tail_rms"};
+inline constexpr std::array<const char*, 5> kStudyMeasures = {"rmse", "max_deviation",
+                                                              "one_minus_ssim", "tail_rms", "flip"};
+using StudyMeasures = std::array<double, kStudyMeasures.size()>;
 
 struct StudySettings {
   std::vector<int> budgets{2, 4, 8};  // samples per pixel, P(1,1,n)
@@ -58,9 +59,9 @@ struct StudySettings {
 struct StudyPattern {
   std::string name, source;  // source: "catalog", "optimized for ...", "generator ..."
   Pattern pattern;
-  std::vector<double> objective;                // per objective: E2
-  std::vector<std::array<double, 4>> measures;  // per scene: kStudyMeasures
-  std::vector<double> profile;  // W E1 every degree (uniform table, the objectives' filter)
+  std::vector<double> objective;        // per objective: E2
+  std::vector<StudyMeasures> measures;  // per scene: kStudyMeasures
+  std::vector<double> profile;          // W E1 every degree (uniform table, the objectives' filter)
 };
 
 struct StudyCorrelation {

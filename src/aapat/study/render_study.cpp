@@ -7,6 +7,7 @@
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/io/pattern_json.h"
+#include "aapat/render/image_flip.h"
 #include "aapat/render/ssim.h"
 #include "aapat/render/texture_filter.h"
 
@@ -29,7 +30,7 @@ Scene view_scene(Scene scene, int width, int height, double rotate_deg, double s
 }
 
 RenderFigures measure(const Image& image, const Image& reference) {
-  RenderFigures f{compare(image, reference), std::nullopt};
+  RenderFigures f{compare(image, reference), std::nullopt, flip_mean(image, reference)};
   if (image.width >= kSsimWindow && image.height >= kSsimWindow) f.ssim = ssim(image, reference);
   return f;
 }

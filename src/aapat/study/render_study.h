@@ -25,6 +25,7 @@ Scene view_scene(Scene scene, int width, int height, double rotate_deg, double s
 struct RenderFigures {
   ImageError error;
   std::optional<double> ssim;  // for images at least one SSIM window wide and high
+  double flip = 0;             // the mean FLIP (render/image_flip.h)
 };
 RenderFigures measure(const Image& image, const Image& reference);
 

@@ -149,7 +149,8 @@ JsonObject adaptive_json(const AdaptiveSettings& a, const AdaptiveImage& r) {
 JsonObject figures_json(const RenderFigures& f) {
   return {{"rmse", f.error.rmse},
           {"max_deviation", f.error.max_deviation},
-          {"ssim", f.ssim ? JsonObject(*f.ssim) : nullptr}};
+          {"ssim", f.ssim ? JsonObject(*f.ssim) : nullptr},
+          {"flip", f.flip}};
 }
 
 JsonObject render_json(const std::string& scene, const std::string& texture,

@@ -57,13 +57,14 @@ JsonObject shading_json(const Sampling& sampling, const RenderStats& stats);
 // Its refinement: criterion, threshold, max_depth, max_samples, per_square,
 // average_samples, refined_fraction, evaluations.
 JsonObject adaptive_json(const AdaptiveSettings& settings, const AdaptiveImage& result);
-// Its error figures: rmse, max_deviation, ssim (null below one SSIM window).
+// Its error figures: rmse, max_deviation, ssim (null below one SSIM
+// window), flip (the mean FLIP).
 JsonObject figures_json(const RenderFigures& figures);
 
 // One rendering (`aapat render --json`, aapat.render's values): scene,
 // texture, width, height, pattern (or generator and samples), filter,
 // samples_per_pixel, the shading keys, adaptive {...} when refined, and when
-// measured reference, rmse, max_deviation, ssim. `scene`, `texture` and
+// measured reference, rmse, max_deviation, ssim, flip. `scene`, `texture` and
 // `pattern` are the names the caller gave.
 JsonObject render_json(const std::string& scene, const std::string& texture,
                        const std::string& pattern, const RenderSettings& settings,

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "aapat/render/image_flip.h"
 #include "aapat/render/ssim.h"
 
 namespace aapat {
@@ -38,7 +39,7 @@ TaaResult render_taa(const TaaScenes& settings, const Sequence& s, const Accumul
   const int period = s.period();
   TaaResult r;
   std::vector<int> previous_error;
-  double pixels = 0, ssim_sum = 0, flicker_sum = 0;
+  double pixels = 0, ssim_sum = 0, flip_sum = 0, flicker_sum = 0;
   for (int f = 0; f < settings.frames; ++f) {
     const Scene scene = settings.scene_at(f);
     const std::vector<double> u = phase_weights(a, period, steady ? f % period : f, steady);
@@ -62,7 +63,8 @@ TaaResult render_taa(const TaaScenes& settings, const Sequence& s, const Accumul
     for (int i = 0; i < 256; ++i) r.total.count[i] += e.count[i];
     r.total.max_deviation = std::max(r.total.max_deviation, e.max_deviation);
     pixels += static_cast<double>(shown.values.size());
-    TaaFrame frame{e.rmse, e.max_deviation, std::nullopt, 0};
+    TaaFrame frame{e.rmse, e.max_deviation, std::nullopt, flip_mean(shown, reference), 0};
+    flip_sum += frame.flip;
     if (shown.width >= kSsimWindow && shown.height >= kSsimWindow) {
       frame.ssim = ssim(shown, reference);
       ssim_sum += *frame.ssim;
@@ -82,6 +84,7 @@ TaaResult render_taa(const TaaScenes& settings, const Sequence& s, const Accumul
   }
   summarize(r.total, pixels);
   if (r.frames.front().ssim) r.mean_ssim = ssim_sum / settings.frames;
+  r.mean_flip = flip_sum / settings.frames;
   r.flicker = settings.frames > 1 ? flicker_sum / (settings.frames - 1) : 0;
   return r;
 }

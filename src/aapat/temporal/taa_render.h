@@ -10,7 +10,7 @@
 // disocclusions are not modelled; the difference from the metric is the
 // scenes' own content, which is what the renderer measures.
 //
-// Per frame against the dense reference: RMSE, largest deviation, SSIM, and
+// Per frame against the dense reference: RMSE, largest deviation, SSIM, FLIP and
 // the temporal flicker, the mean absolute change of the per-pixel error
 // (on the 0-255 scale) from the previous frame.
 #pragma once
@@ -28,6 +28,7 @@ struct TaaFrame {
   double rmse = 0;
   int max_deviation = 0;
   std::optional<double> ssim;  // none for images under the SSIM window (render/ssim.h)
+  double flip = 0;             // the mean FLIP (render/image_flip.h)
   double flicker = 0;          // 0 for the first frame
 };
 
@@ -35,6 +36,7 @@ struct TaaResult {
   std::vector<TaaFrame> frames;
   ImageError total;                 // every frame's deviations together (animate's figures)
   std::optional<double> mean_ssim;  // over frames
+  double mean_flip = 0;             // over frames
   double flicker = 0;               // over frames 1, 2, ...
 };
 

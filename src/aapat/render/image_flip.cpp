@@ -1,0 +1,23 @@
+#include "aapat/render/image_flip.h"
+
+#include "aapat/render/image_error.h"
+
+namespace aapat {
+
+ColorImage color_image(const Image& image) {
+  ColorImage c{image.width, image.height,
+               std::vector<float>(static_cast<size_t>(image.width) * image.height * 3)};
+  for (int j = 0; j < image.height; ++j)  // the renderer's row 0 is the bottom
+    for (int i = 0; i < image.width; ++i) {
+      const float v = static_cast<float>(grey_level(image.at(i, j))) / 255.0f;
+      float* out = &c.rgb[3 * (static_cast<size_t>(image.height - 1 - j) * image.width + i)];
+      out[0] = out[1] = out[2] = v;
+    }
+  return c;
+}
+
+double flip_mean(const Image& image, const Image& reference) {
+  return flip(color_image(reference), color_image(image), default_pixels_per_degree()).mean;
+}
+
+}  // namespace aapat
