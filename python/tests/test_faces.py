@@ -254,3 +254,15 @@ def test_diff_is_the_cli_document(aapat_cli):
     assert aapat.diff(ref[..., 0], test[..., 1])["flip"] == py["flip"]  # grey arrays too
     values = {k: v for k, v in py.items() if k != "map"}
     assert values == {k: v for k, v in cli.items() if k not in ("reference", "test")}
+
+
+def test_render_flip_is_aapat_diff_of_its_files(aapat_cli, tmp_path):
+    """FLIP means one thing wherever its name appears: the mean FLIP `render`
+    reports is `aapat diff` of the image and the reference it writes."""
+    image, reference = str(tmp_path / "image.png"), str(tmp_path / "reference.png")
+    rendered = cli_json(aapat_cli, "render", "spiral", "--pattern", "rgss", "--size", "40x32",
+                        "--reference-samples", "16", "--no-cache", "-o", image,
+                        "--reference", reference)
+    diffed = cli_json(aapat_cli, "diff", reference, image)
+    assert rendered["flip"] == diffed["flip"]
+    assert abs(rendered["ssim"] - diffed["ssim"]) < 1e-12

@@ -118,9 +118,12 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
     bar.update(f + 1, a.frames, "");
   };
   std::optional<TaaResult> taa;
+  std::optional<AnimationResult> plain;
   if (sequence)
     taa = render_taa(a, *sequence, *model, !o.cut, o.still, on_frame, o.reference.source());
-  const ImageError e = taa ? taa->total : animate(a, s, filter, on_frame, o.reference.source());
+  else
+    plain = animate(a, s, filter, on_frame, o.reference.source());
+  const ImageError e = taa ? taa->total : plain->total;
   if (taa && !o.csv.empty()) write_output(o.csv, taa_csv(*taa), out);
   if (!o.gif.empty()) write_gif(o.gif, gif);
   if (!o.mp4.empty()) write_mp4(frames_dir, o.mp4, o.fps);
@@ -155,6 +158,13 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
                                   {"flip", f.flip},
                                   {"flicker", f.flicker}});
       doc["rows"] = rows;
+    } else {
+      doc["mean_flip"] = plain->mean_flip;
+      JsonObject::array_t rows;
+      for (const AnimationFrame& f : plain->frames)
+        rows.push_back(
+            JsonObject{{"rmse", f.rmse}, {"max_deviation", f.max_deviation}, {"flip", f.flip}});
+      doc["rows"] = rows;
     }
     out << json_text(doc);
     return;
@@ -169,8 +179,10 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
         taa->flicker);
     return;
   }
-  out << fmt::format("{} animation, {} frames of {}x{}, {}: RMSE {:.3f}, max deviation {}\n",
-                     a.animation, a.frames, a.width, a.height, o.pattern, e.rmse, e.max_deviation);
+  out << fmt::format(
+      "{} animation, {} frames of {}x{}, {}: RMSE {:.3f}, max deviation {}, mean FLIP {:.4f}\n",
+      a.animation, a.frames, a.width, a.height, o.pattern, e.rmse, e.max_deviation,
+      plain->mean_flip);
 }
 
 }  // namespace

@@ -313,8 +313,11 @@ FlipResult flip(const ColorImage& reference, const ColorImage& test, double ppd)
   const CsfFilters csf = csf_filters(ppd);
   const Opponent ref_lab = filtered_lab(ref, w, h, csf), tst_lab = filtered_lab(tst, w, h, csf);
   const FeatureFilters ff = feature_filters(ppd);
-  const auto [ref_edge, ref_point] = features(ref.y, w, h, ff);
-  const auto [tst_edge, tst_point] = features(tst.y, w, h, ff);
+  // (Plain names, not structured bindings: clang 14's lambdas cannot capture those.)
+  const std::pair<Plane, Plane> ref_features = features(ref.y, w, h, ff);
+  const std::pair<Plane, Plane> tst_features = features(tst.y, w, h, ff);
+  const Plane &ref_edge = ref_features.first, &ref_point = ref_features.second;
+  const Plane &tst_edge = tst_features.first, &tst_point = tst_features.second;
 
   const float cmax = max_color_distance(), knee = kPc * cmax;
   FlipResult r{w, h, std::vector<float>(n), 0, 0, 0, 0, 0, 0, {}};

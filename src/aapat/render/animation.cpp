@@ -2,15 +2,18 @@
 
 #include <cmath>
 
+#include "aapat/render/image_flip.h"
+
 namespace aapat {
 
-ImageError animate(const AnimationSettings& a, const Sampling& sampling,
-                   const std::optional<Filter>& filter,
-                   const std::function<void(int, const Image&)>& on_frame,
-                   const ReferenceSource& references) {
+AnimationResult animate(const AnimationSettings& a, const Sampling& sampling,
+                        const std::optional<Filter>& filter,
+                        const std::function<void(int, const Image&)>& on_frame,
+                        const ReferenceSource& references) {
   const ReferenceSource source = references ? references : render_reference;
-  ImageError total;
-  double pixels = 0;
+  AnimationResult r;
+  ImageError& total = r.total;
+  double pixels = 0, flip_sum = 0;
   for (int f = 0; f < a.frames; ++f) {
     const Scene scene = animation_frame(a.animation, a.width, a.height, f, a.frames);
     const Image image = render(scene, a.width, a.height, sampling, filter);
@@ -21,10 +24,13 @@ ImageError animate(const AnimationSettings& a, const Sampling& sampling,
     for (int i = 0; i < 256; ++i) total.count[i] += e.count[i];
     total.max_deviation = std::max(total.max_deviation, e.max_deviation);
     pixels += static_cast<double>(image.values.size());
+    r.frames.push_back({e.rmse, e.max_deviation, flip_mean(image, reference)});
+    flip_sum += r.frames.back().flip;
     if (on_frame) on_frame(f, image);
   }
   summarize(total, pixels);
-  return total;
+  r.mean_flip = a.frames > 0 ? flip_sum / a.frames : 0;
+  return r;
 }
 
 }  // namespace aapat

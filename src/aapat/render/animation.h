@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "aapat/render/image_error.h"
 #include "aapat/render/reference.h"
@@ -21,11 +22,23 @@ struct AnimationSettings {
   ReferenceSettings reference{256, "mitchell", 1};
 };
 
+// Each frame's figures against its reference.
+struct AnimationFrame {
+  double rmse = 0;
+  int max_deviation = 0;
+  double flip = 0;  // the mean FLIP (render/image_flip.h)
+};
+struct AnimationResult {
+  ImageError total;  // every frame's deviations together
+  std::vector<AnimationFrame> frames;
+  double mean_flip = 0;  // over frames
+};
+
 // Calls on_frame(frame, image) for each frame if given (to write PNGs).
 // References come from `references` (render_reference when empty).
-ImageError animate(const AnimationSettings& settings, const Sampling& sampling,
-                   const std::optional<Filter>& filter,
-                   const std::function<void(int, const Image&)>& on_frame = {},
-                   const ReferenceSource& references = {});
+AnimationResult animate(const AnimationSettings& settings, const Sampling& sampling,
+                        const std::optional<Filter>& filter,
+                        const std::function<void(int, const Image&)>& on_frame = {},
+                        const ReferenceSource& references = {});
 
 }  // namespace aapat

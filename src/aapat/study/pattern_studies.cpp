@@ -50,7 +50,7 @@ std::vector<Table2Row> table2(const AnimationSettings& settings, const Reference
   for (Table2Row& r : rows) {
     Sampling s;
     s.pattern = resolve_pattern(r.pattern);
-    const ImageError e = animate(settings, s, std::nullopt, {}, references);
+    const ImageError e = animate(settings, s, std::nullopt, {}, references).total;
     r.e2 = metric.evaluate(*s.pattern).e2;
     r.rmse = e.rmse;
     r.max_deviation = e.max_deviation;
