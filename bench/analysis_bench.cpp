@@ -61,7 +61,7 @@ void L2DiscrepancyKind(benchmark::State& state) {
   state.SetLabel(std::string(l2_kind_info(kind).name));
 }
 BENCHMARK(L2DiscrepancyKind)
-    ->ArgsProduct({{65536, 1000000}, {0, 1, 2, 3, 4, 5}})
+    ->ArgsProduct({{65536, 1000000}, {0, 1, 2, 3, 4, 5, 6}})
     ->Unit(benchmark::kMillisecond);
 
 void StarDiscrepancyBounds(benchmark::State& state) {

@@ -75,17 +75,22 @@ void bind_points(py::module_& m) {
       },
       py::arg("points"), py::arg("measures") = std::string(kDefaultDiscrepancyMeasures),
       R"doc(Discrepancies of an (n, 2) array in [0, 1]^2: the L2 kinds (star, Warnock;
-generalized, centred, wrap-around, symmetric, Hickernell; unanchored), each
-O(N log N) in double-double; star (exact up to 4096 points, else bounds with
-their gap); edge (720 directions). Returns the values of `aapat discrepancy
---json` (without its source): points, then l2_star,
-l2_generalized, l2_centred, l2_wrap_around, l2_unanchored, l2_symmetric,
-star_lower, star_upper, star_exact, star_gap, edge, edge_normal_deg (of the
-measures asked).
+generalized, centred, wrap-around, symmetric, Hickernell; unanchored;
+mixture, Zhou, Fang & Ning), each O(N log N) in double-double; star (exact up
+to 4096 points, else bounds with their gap); edge (720 directions). Returns
+the values of `aapat discrepancy --json` (without its source): points, then
+l2_star, l2_generalized, l2_centred, l2_wrap_around, l2_unanchored,
+l2_symmetric, l2_mixture, star_lower, star_upper, star_exact, star_gap, edge,
+edge_normal_deg (of the measures asked).
+
+Every value is the discrepancy D, not D^2: scipy.stats.qmc.discrepancy returns
+CD, WD and MD squared (compare l2_centred**2, l2_wrap_around**2,
+l2_mixture**2) and the L2-star not.
 
     measures: a comma list of "l2-star", "l2-generalized", "l2-centred",
-        "l2-wrap-around", "l2-unanchored", "l2-symmetric", "star", "edge", or
-        "all". The L2 discrepancies take up to 10^7 points, the others 65,536.)doc");
+        "l2-wrap-around", "l2-unanchored", "l2-symmetric", "l2-mixture",
+        "star", "edge", or "all". The L2 discrepancies take up to 10^7
+        points, the others 65,536.)doc");
 
   m.def(
       "spectrum",

@@ -1,4 +1,7 @@
 """Generators, discrepancy and spectra as arrays; the renderer's images."""
+import math
+from fractions import Fraction
+
 import numpy as np
 import pytest
 
@@ -129,3 +132,49 @@ def test_render_textured_multisampled_and_adaptive():
     assert refined["adaptive"]["evaluations"] == refined["refinement_map"].sum()
     with pytest.raises(aapat.Error, match="unknown texture filter .cubic."):
         aapat.render("checkerboard", pattern="rgss", options={"texture-filter": "cubic"})
+
+
+def mixture_squared_exactly(x):
+    """Zhou, Fang & Ning's mixture discrepancy squared, MD^2, as
+    scipy.stats.qmc writes it, in exact rational arithmetic (x: Fractions)."""
+    n = len(x)
+    half = Fraction(1, 2)
+    single = 0
+    for p in x:
+        term = 1
+        for c in p:
+            term *= Fraction(5, 3) - abs(c - half) / 4 - abs(c - half) ** 2 / 4
+        single += term
+    pairs = 0
+    for p in x:
+        for q in x:
+            term = 1
+            for a, b in zip(p, q):
+                term *= (Fraction(15, 8) - abs(a - half) / 4 - abs(b - half) / 4
+                         - 3 * abs(a - b) / 4 + abs(a - b) ** 2 / 2)
+            pairs += term
+    return Fraction(19, 12) ** 2 - 2 * single / n + pairs / n ** 2
+
+
+def test_mixture_discrepancy_is_exact_rational_arithmetic_on_small_sets():
+    rng = np.random.default_rng(11)
+    for n in (1, 2, 5, 12):
+        grid = rng.integers(0, 65, size=(n, 2))  # on a grid of 1/64: ties and centre lines
+        exact = mixture_squared_exactly([[Fraction(int(v), 64) for v in p] for p in grid])
+        got = aapat.discrepancy(grid / 64.0, measures="l2-mixture")["l2_mixture"]
+        assert abs(got ** 2 - float(exact)) <= 1e-13 * float(exact), n
+
+
+def test_mixture_discrepancy_agrees_with_a_compensated_pairwise_sum():
+    """3,000 arbitrary points: the O(N^2) sum in float64, compensated (math.fsum)."""
+    x = np.random.default_rng(5).random((3000, 2))
+    g = np.abs(x - 0.5)
+    single = math.fsum(np.prod(5 / 3 - g / 4 - g * g / 4, axis=1))
+    pair = np.ones((len(x), len(x)))
+    for k in range(2):
+        d = np.abs(x[:, k][:, None] - x[:, k][None, :])
+        pair *= 15 / 8 - g[:, k][:, None] / 4 - g[:, k][None, :] / 4 - 3 * d / 4 + d * d / 2
+    n = len(x)
+    md2 = (19 / 12) ** 2 - 2 * single / n + math.fsum(pair.ravel()) / n ** 2
+    got = aapat.discrepancy(x, measures="l2-mixture")["l2_mixture"]
+    assert abs(got ** 2 - md2) <= 1e-9 * md2

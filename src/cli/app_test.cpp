@@ -383,9 +383,10 @@ TEST(CliPoints, DiscrepancyComputesOnlyTheMeasuresAsked) {
   EXPECT_NE(t.out.find("edge discrepancy"), std::string::npos);
   const CliRun bad = run({"discrepancy", "regular", "--measure", "l3"});
   EXPECT_EQ(bad.code, 1);
-  EXPECT_NE(bad.err.find("--measure 'l3': the measures are l2-star, l2-generalized, l2-centred, "
-                         "l2-wrap-around, l2-unanchored, l2-symmetric, star, edge or all"),
-            std::string::npos)
+  EXPECT_NE(
+      bad.err.find("--measure 'l3': the measures are l2-star, l2-generalized, l2-centred, "
+                   "l2-wrap-around, l2-unanchored, l2-symmetric, l2-mixture, star, edge or all"),
+      std::string::npos)
       << bad.err;
   // Every L2 kind, in the JSON and in the text, one line each.
   const CliRun all = run({"discrepancy", "halton", "--n", "256", "--measure", "all", "--json"});

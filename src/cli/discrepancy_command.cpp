@@ -45,9 +45,11 @@ Action add_discrepancy_command(CLI::App& app) {
   auto json = std::make_shared<bool>(false);
   auto measures = std::make_shared<std::string>(kDefaultDiscrepancyMeasures);
   src->add_to(cmd);
+  std::string kinds;
+  for (const L2KindInfo& k : l2_kinds()) kinds += std::string(k.name) + ", ";
   cmd->add_option("--measure", *measures,
-                  "the discrepancies to compute, a comma list of l2-star, l2-generalized, "
-                  "l2-centred, l2-wrap-around, l2-unanchored, l2-symmetric, star, edge, or all")
+                  "the discrepancies to compute, a comma list of " + kinds +
+                      "star, edge, or all (each reported as D, not D^2)")
       ->capture_default_str();
   cmd->add_flag("--json", *json, "print JSON (the measures computed)");
   return [src, json, measures](std::ostream& out) {

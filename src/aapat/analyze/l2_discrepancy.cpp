@@ -54,6 +54,8 @@ CoordinateKernel kernel_of(L2Kind kind) {
     case L2Kind::symmetric:  // A = 1 - 2 |s - t|
       return {Coordinate::x, 1, {{1, -2, 0}, {-2, 0, 0}, {0, 0, 0}}, 4, {none, Ratio{2}, Ratio{-2}},
               third};
+    case L2Kind::mixture:  // two coordinates at once: mixture_squared below
+      break;
   }
   return {};
 }
@@ -163,6 +165,67 @@ DoubleDouble pair_sum(const CoordinateKernel& k, std::span<const DoubleDouble> x
   return total;
 }
 
+// The mixture discrepancy's D^2. Per coordinate, in x, with g = |x - 1/2|:
+//   A(s, t) = P(s, t) + (3/2) min(s, t) + G(s) + G(t),
+//   P = 15/8 - 3/4 (s + t) + (s - t)^2 / 2,  G = -g / 4
+// (|s - t| = s + t - 2 min(s, t)). Over both coordinates the product
+//   (P_x + c m_x + H_x)(P_y + c m_y + H_y),  H(i, j) = G_i + G_j,
+// expands into the sums of pair_sums.h: P P by moments, P m and m m by the
+// sweeps, H P and H H by moments of (g, the other coordinate), H m by a
+// sweep with the column g.
+DoubleDouble mixture_squared(const std::vector<Vec2>& p) {
+  const size_t n = p.size();
+  const double nn = static_cast<double>(n);
+  const DoubleDouble k = DoubleDouble(19) / 12.0;
+  if (n == 0) return k * k - DoubleDouble(1);  // as the other kinds with projections
+  std::vector<DoubleDouble> x(n), y(n), gx(n), gy(n);
+  const DoubleDouble five_thirds = DoubleDouble(5) / 3.0;
+  DoubleDouble single;
+  for (size_t i = 0; i < n; ++i) {
+    x[i] = p[i].x, y[i] = p[i].y;
+    gx[i] = in_coordinate(Coordinate::from_centre, p[i].x);
+    gy[i] = in_coordinate(Coordinate::from_centre, p[i].y);
+    const DoubleDouble cx = five_thirds - (gx[i] + gx[i] * gx[i]) / 4.0;
+    const DoubleDouble cy = five_thirds - (gy[i] + gy[i] * gy[i]) / 4.0;
+    single += cx * cy;
+  }
+  const PairPolynomial q = {{15.0 / 8, -0.75, 0.5}, {-0.75, -1, 0}, {0.5, 0, 0}};
+  const PairPolynomial h = {{0, -0.25, 0}, {-0.25, 0, 0}, {0, 0, 0}};  // G_i + G_j in g
+  const DoubleDouble c(1.5);
+  const std::vector<size_t> x_order = ascending_order(x), y_order = ascending_order(y);
+  // P_x P_y.
+  Moments mxy;
+  moments(x, y, mxy);
+  DoubleDouble pairs;
+  for (int a = 0; a < 3; ++a)
+    for (int r = 0; r < 3; ++r)
+      for (int s = 0; s < 3; ++s)
+        for (int t = 0; t < 3; ++t)
+          if (q[a][r] != 0 && q[s][t] != 0)
+            pairs += DoubleDouble(q[a][r] * q[s][t]) * (mxy[a][s] * mxy[r][t]);
+  // c (P_x m_y + m_x P_y + H_x m_y + m_x H_y) + c^2 m_x m_y.
+  pairs += c * (polynomial_min_sum(q, x, y, y_order) + polynomial_min_sum(q, y, x, x_order) +
+                polynomial_min_sum(h, gx, y, y_order) + polynomial_min_sum(h, gy, x, x_order));
+  pairs += c * c * min_min_sum(x, y, x_order, y_order);
+  // H_x P_y = sum q[a][r] ((sum_i G_i y_i^a)(sum_j y_j^r) + (sum_i y_i^a)(sum_j G_j y_j^r)),
+  // and P_x H_y likewise; G = -g / 4.
+  Moments gxy, xgy;
+  moments(gx, y, gxy);
+  moments(x, gy, xgy);
+  for (int a = 0; a < 3; ++a)
+    for (int r = 0; r < 3; ++r)
+      if (q[a][r] != 0) {
+        const DoubleDouble hp = gxy[1][a] * gxy[0][r] + gxy[0][a] * gxy[1][r];
+        const DoubleDouble ph = xgy[a][1] * xgy[r][0] + xgy[a][0] * xgy[r][1];
+        pairs += DoubleDouble(-0.25 * q[a][r]) * (hp + ph);
+      }
+  // H_x H_y = (1/16) (2 N sum_i gx_i gy_i + 2 sum gx sum gy).
+  Moments gg;
+  moments(gx, gy, gg);
+  pairs += (gg[1][1] * (2 * nn) + gg[1][0] * gg[0][1] * 2.0) / 16.0;
+  return k * k - single * 2.0 / nn + pairs / nn / nn;
+}
+
 DoubleDouble single_term(const CoordinateKernel& k, DoubleDouble t) {
   return DoubleDouble(k.projections) + k.single[0].value() + k.single[1].value() * t +
          k.single[2].value() * (t * t);
@@ -183,6 +246,8 @@ std::span<const L2KindInfo> l2_kinds() {
        "every box [s, t) inside the square"},
       {L2Kind::symmetric, "l2-symmetric", "l2_symmetric", "L2-symmetric",
        "Hickernell's reflection-invariant discrepancy"},
+      {L2Kind::mixture, "l2-mixture", "l2_mixture", "L2-mixture",
+       "Zhou, Fang & Ning's mixture discrepancy (MD), centred and wrap-around mixed"},
   };
   return kinds;
 }
@@ -195,6 +260,7 @@ const L2KindInfo& l2_kind_info(L2Kind kind) {
 
 double l2_discrepancy(const std::vector<Vec2>& p, L2Kind kind) {
   check_l2_star_size(p.size());
+  if (kind == L2Kind::mixture) return std::sqrt(std::max(0.0, mixture_squared(p).value()));
   const CoordinateKernel k = kernel_of(kind);
   const size_t n = p.size();
   const DoubleDouble box = DoubleDouble(k.projections) + k.box.value();

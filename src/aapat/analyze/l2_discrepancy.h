@@ -11,7 +11,13 @@
 //  - centred: the box between t and its nearest corner, with projections;
 //  - wrap-around: every box on the torus, with projections;
 //  - unanchored: every box [s, t) with s < t, a = 0;
-//  - symmetric: Hickernell's reflection-invariant kernel, with projections.
+//  - symmetric: Hickernell's reflection-invariant kernel, with projections;
+//  - mixture: Zhou, Fang & Ning's mixture discrepancy (MD, 2013), whose
+//    pair term mixes the centred (|u - 1/2|) and wrap-around (|u - v|) ones:
+//      A = 15/8 - |s - 1/2|/4 - |t - 1/2|/4 - 3|s - t|/4 + |s - t|^2/2,
+//      C = 5/3 - |s - 1/2|/4 - |s - 1/2|^2/4,  K = 19/12.
+// Every value returned is the discrepancy D itself, not D^2 (scipy.stats.qmc
+// returns the centred, wrap-around and mixture ones squared, L2-star not).
 // All are summed in O(N log N) in double-double (analyze/pair_sums.h):
 // correct to about 1e-12 relative at any size up to kMaxL2StarPoints.
 #pragma once
@@ -24,7 +30,7 @@
 
 namespace aapat {
 
-enum class L2Kind { star, generalized, centred, wrap_around, unanchored, symmetric };
+enum class L2Kind { star, generalized, centred, wrap_around, unanchored, symmetric, mixture };
 
 struct L2KindInfo {
   L2Kind kind;

@@ -55,6 +55,16 @@ ExactForm exact_form(L2Kind kind) {
     case L2Kind::symmetric:  // 2 (1 - |u-v|) (the 2^s factor); 1 + 2u - 2u^2; 4/3
       return {[](Int a, Int c) { return 24 * 1024 * (1024 - abs_int(a - c)); },
               [](Int a) { return 12 * ((Int(1) << 20) + 2048 * a - 2 * a * a); }, Int(16) << 20};
+    case L2Kind::mixture:  // Zhou, Fang & Ning 2013, Eq. (13) with d = 2; scipy.stats.qmc's form
+      // 15/8 - |u-1/2|/4 - |v-1/2|/4 - 3|u-v|/4 + |u-v|^2/2; 5/3 - |u-1/2|/4 - |u-1/2|^2/4; 19/12
+      return {[](Int a, Int c) {
+                return (Int(45) << 19) - 3 * 1024 * (abs_int(a - 512) + abs_int(c - 512)) -
+                       9 * 1024 * abs_int(a - c) + 6 * (a - c) * (a - c);
+              },
+              [](Int a) {
+                return (Int(20) << 20) - 3 * 1024 * abs_int(a - 512) - 3 * (a - 512) * (a - 512);
+              },
+              Int(19) << 20};
   }
   return {};
 }
@@ -165,6 +175,7 @@ Family1D family(L2Kind kind) {
               }
           }};
     case L2Kind::symmetric:
+    case L2Kind::mixture:  // not the measure of a box family
       break;
   }
   return {};
@@ -261,13 +272,13 @@ RC_GTEST_PROP(L2Discrepancy, WrapAroundIsTranslationInvariant, ()) {
   RC_ASSERT(std::abs(l2_discrepancy(on_grid(ab), L2Kind::wrap_around) - before) <= 1e-12 * before);
 }
 
-// The centred and symmetric discrepancies treat every corner alike: a
-// reflection of either axis, or swapping them, keeps them.
-RC_GTEST_PROP(L2Discrepancy, CentredAndSymmetricAreReflectionInvariant, ()) {
+// The centred, symmetric and mixture discrepancies treat every corner alike:
+// a reflection of either axis, or swapping them, keeps them.
+RC_GTEST_PROP(L2Discrepancy, CentredSymmetricAndMixtureAreReflectionInvariant, ()) {
   auto ab = random_grid(*rc::gen::arbitrary<uint64_t>(), *rc::gen::inRange(1, 100));
   auto reflected = ab;
   for (auto& [a, b] : reflected) a = 1024 - a, std::swap(a, b);
-  for (const L2Kind kind : {L2Kind::centred, L2Kind::symmetric}) {
+  for (const L2Kind kind : {L2Kind::centred, L2Kind::symmetric, L2Kind::mixture}) {
     const double before = l2_discrepancy(on_grid(ab), kind);
     RC_ASSERT(std::abs(l2_discrepancy(on_grid(reflected), kind) - before) <= 1e-12 * before);
   }
@@ -280,6 +291,9 @@ TEST(L2Discrepancy, ClosedFormsOfOnePoint) {
               std::sqrt(1.0 / 144 - 2.0 / 64 + 1.0 / 16), 1e-15);
   // One point anywhere on the torus: -(4/3)^2 + (3/2)^2.
   EXPECT_NEAR(l2_discrepancy({{0.3, 0.8}}, L2Kind::wrap_around), std::sqrt(2.25 - 16.0 / 9), 1e-15);
+  // The mixture discrepancy of the centre: (19/12)^2 - 2 (5/3)^2 + (15/8)^2.
+  EXPECT_NEAR(l2_discrepancy({{0.5, 0.5}}, L2Kind::mixture),
+              std::sqrt(361.0 / 144 - 50.0 / 9 + 225.0 / 64), 1e-15);
   // No points: the boxes' areas alone (the star's 1/3, as before).
   EXPECT_NEAR(l2_discrepancy({}, L2Kind::star), 1.0 / 3, 1e-15);
   EXPECT_EQ(l2_star_discrepancy({{0.25, 0.75}}), l2_discrepancy({{0.25, 0.75}}, L2Kind::star));
