@@ -63,8 +63,15 @@ CLI::Option* add_seed_option(CLI::App* cmd, uint64_t& seed, const std::string& h
           [](const std::string& text) {
             const bool digits =
                 !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-            return digits ? std::string()
-                          : "a seed is a whole number from 0 to 2^64 - 1, not '" + text + "'";
+            // Compared as text: a larger number would be clamped to 2^64 - 1 on conversion.
+            const std::string most = "18446744073709551615";
+            const std::string_view value = std::string_view(text).substr(
+                std::min(text.find_first_not_of('0'), text.size() - (text.empty() ? 0 : 1)));
+            const bool fits =
+                value.size() < most.size() || (value.size() == most.size() && value <= most);
+            return digits && fits
+                       ? std::string()
+                       : "a seed is a whole number from 0 to 2^64 - 1, not '" + text + "'";
           },
           "UINT64"));
 }
@@ -207,7 +214,13 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
       for (auto& [sub, action] : commands)
         if (sub->parsed()) action(out);
     }
-    out.flush();
+    // What went to standard output must have arrived (a full disk, a closed
+    // pipe): checked before the files are committed, so that a failed run
+    // leaves none of them.
+    if (!out.flush())
+      throw Error(
+          "standard output: a write failed (a full disk or a closed pipe?); the output is "
+          "incomplete");
     // Every process of the run agrees first: a failure anywhere writes nothing.
     std::string message;
     agreed = true;

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 #include "cli/app.h"
@@ -279,6 +280,37 @@ TEST(Hardening, JsonIsAFlagWithOneShapeOnEveryCommand) {
     EXPECT_EQ(doc["schema"], 1);
     EXPECT_FALSE(doc.contains("size")) << args[0];  // sizes are width and height
   }
+}
+
+// Standard output that cannot be written (a full disk, /dev/full, a closed
+// pipe) fails the command with exit 1 and commits none of its files.
+TEST(Hardening, AFailedWriteToStandardOutputFailsTheCommand) {
+  struct Full : std::streambuf {
+    int overflow(int) override { return traits_type::eof(); }
+    std::streamsize xsputn(const char*, std::streamsize) override { return 0; }
+  } full;
+  std::ostream out(&full);
+  std::ostringstream err;
+  const std::string json = temp_path("full-stdout.json");
+  fs::remove(json);
+  const char* argv[] = {"aapat", "optimize",    "--family",   "P(1,1,2)", "--starts",
+                        "1",     "--objective", "laine-aila", "-o",       json.c_str()};
+  EXPECT_EQ(run_aapat(10, argv, out, err), kExitError);
+  EXPECT_NE(err.str().find("standard output: a write failed"), std::string::npos) << err.str();
+  EXPECT_FALSE(fs::exists(json));
+  std::ostream listing(&full);
+  const char* list[] = {"aapat", "list"};
+  EXPECT_EQ(run_aapat(2, list, listing, err), kExitError);
+}
+
+// A seed past 2^64 - 1 is refused, not clamped to it; the largest one and
+// leading zeros are fine.
+TEST(Hardening, SeedsOutOfRangeAreRefused) {
+  for (const char* bad : {"18446744073709551616", "99999999999999999999", "-1", "1e3"})
+    expect_error(run({"generate", "jittered", "--n", "1", "--seed", bad}), kExitUsage,
+                 "a seed is a whole number from 0 to 2^64 - 1");
+  for (const char* good : {"18446744073709551615", "0", "007"})
+    EXPECT_EQ(run({"generate", "jittered", "--n", "1", "--seed", good}).code, kExitOk) << good;
 }
 
 TEST(Hardening, AFailedCommandLeavesNoOutputFile) {
