@@ -5,6 +5,7 @@
 // and inconsistent JSON. Each asserts the exact behaviour now promised.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -311,6 +312,32 @@ TEST(Hardening, SeedsOutOfRangeAreRefused) {
                  "a seed is a whole number from 0 to 2^64 - 1");
   for (const char* good : {"18446744073709551615", "0", "007"})
     EXPECT_EQ(run({"generate", "jittered", "--n", "1", "--seed", good}).code, kExitOk) << good;
+}
+
+// Every kind of file input refuses what is not a regular file, by name, at
+// once: a FIFO (which would block) and /dev/zero (which would fill memory),
+// through the one function that reads inputs (core/read_file.h).
+TEST(Hardening, InputsThatAreNotRegularFilesAreRefused) {
+  std::vector<std::string> fifos;
+  for (const char* name : {"in.csv", "in.json", "in.png", "scene.json", "seq.json"}) {
+    const std::string path = temp_path(std::string("fifo-") + name);
+    fs::remove(path);
+    ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0) << path;
+    fifos.push_back(path);
+  }
+  const std::string png = std::string(AAPAT_TESTDATA_DIR) + "/flip/colour-ref.png";
+  for (const std::string& odd : {fifos[0], std::string("/dev/zero")})
+    expect_error(run({"eval", "rgss", "--acuity", odd}), kExitError, "not a regular file");
+  expect_error(run({"show", fifos[1]}), kExitError, "not a regular file");
+  expect_error(run({"discrepancy", fifos[0]}), kExitError, "not a regular file");
+  expect_error(run({"diff", fifos[2], png}), kExitError, "not a regular file");
+  expect_error(run({"render", fifos[3], "--pattern", "rgss", "--size", "8"}), kExitError,
+               "not a regular file");
+  expect_error(run({"sequence", "eval", fifos[4]}), kExitError, "not a regular file");
+  expect_error(
+      run({"render", "checkerboard", "--pattern", "rgss", "--size", "8", "--texture", fifos[2]}),
+      kExitError, "not a regular file");
+  for (const std::string& f : fifos) fs::remove(f);
 }
 
 TEST(Hardening, AFailedCommandLeavesNoOutputFile) {

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/geometry.h"
+#include "aapat/core/read_file.h"
 #include "aapat/core/text.h"
 
 namespace aapat {
@@ -173,23 +173,14 @@ const AcuityRegistry& acuity_registry() {
 AcuityTable make_acuity(std::string_view spec) {
   // A registered table by its spec, else a CSV file.
   if (acuity_registry().contains(spec)) return acuity_registry().make(spec);
+  const std::string path(spec);
   std::error_code ec;
-  if (std::filesystem::is_directory(std::string(spec), ec))
-    throw Error(fmt::format("acuity table '{}': it is a folder, not a CSV file", spec));
-  constexpr uintmax_t kMaxBytes = 16u << 20;
-  if (const auto bytes = std::filesystem::file_size(std::string(spec), ec);
-      !ec && bytes > kMaxBytes)
-    throw Error(
-        fmt::format("acuity table '{}': {} bytes exceed the limit of {}", spec, bytes, kMaxBytes));
-  std::ifstream file{std::string(spec)};
-  if (!file)
+  if (!std::filesystem::exists(path, ec))
     throw Error(fmt::format(
         "unknown acuity table '{}': not laine-aila, uniform:step=S, linear:step=S or a readable "
         "CSV file",
         spec));
-  std::stringstream buffer;
-  buffer << file.rdbuf();
-  return parse_acuity_csv(buffer.str(), spec);
+  return parse_acuity_csv(read_file(path, "acuity table", size_t{16} << 20), spec);
 }
 
 }  // namespace aapat

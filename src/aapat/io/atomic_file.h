@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "aapat/core/read_file.h"  // read_file, for the file inputs of this layer
+
 namespace aapat {
 
 // Writes `content` to `path` whole or not at all. Inside an open transaction
@@ -20,12 +22,6 @@ void write_file_atomically(const std::string& path, std::string_view content);
 // again if the transaction does not commit, unless `keep_on_rollback`.
 void write_file_now(const std::string& path, std::string_view content,
                     bool keep_on_rollback = false);
-
-// Reads a whole regular file of at most `max_bytes`; the message names `what`,
-// the path and the reason (missing, a folder, too large, unreadable).
-inline constexpr size_t kMaxInputFileBytes = size_t{256} << 20;
-std::string read_file(const std::string& path, std::string_view what,
-                      size_t max_bytes = kMaxInputFileBytes);
 
 // Creates `path` (and its parents) as a folder, or checks that it is one;
 // throws Error naming `what` when it is a file or cannot be made. Inside a
