@@ -180,7 +180,8 @@ TEST(Hardening, MessagesNameTheRealProblem) {
   fs::create_directories(dir + "/s.json");
   expect_error(run({"render", dir + "/s.json", "--pattern", "rgss"}), kExitError,
                "it is a folder, not a file");
-  expect_error(run({"eval", "rgss", "--acuity", dir}), kExitError, "it is a folder, not a CSV");
+  expect_error(run({"eval", "rgss", "--acuity", dir}), kExitError,
+               "acuity table '" + dir + "': it is a folder, not a file");
   fs::create_directories(dir + "/p.csv");
   expect_error(run({"discrepancy", dir + "/p.csv"}), kExitError, "it is a folder, not a file");
   expect_error(run({"import", dir}), kExitError, "it is a folder, not a file");
