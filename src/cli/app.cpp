@@ -86,6 +86,17 @@ void write_output(const std::string& path, const std::string& content, std::ostr
 
 namespace {
 
+// An argument as a shell would need it quoted, so that the joined command
+// line is unambiguous: `--csv 'a.csv --seed 2'` is not `--csv a.csv --seed 2`.
+std::string shell_quoted(std::string_view arg) {
+  if (!arg.empty() && arg.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                            "0123456789-_=.,:/+@%()") == std::string_view::npos)
+    return std::string(arg);
+  std::string quoted = "'";
+  for (char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
 // The command a checkpoint belongs to: the arguments less those that do not
 // change a result (--threads, --checkpoint), and the version.
 std::string fingerprint(int argc, const char* const* argv) {
@@ -98,7 +109,7 @@ std::string fingerprint(int argc, const char* const* argv) {
     }
     if (arg.starts_with("--threads=") || arg.starts_with("--checkpoint=")) continue;
     text += " ";
-    text += arg;
+    text += shell_quoted(arg);
   }
   return text;
 }
@@ -138,7 +149,13 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
                  "keep every finished work item in FILE and resume from it when run again with "
                  "the same command (the same output as a run that never stopped); before the "
                  "command")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->check(CLI::Validator(
+          [](const std::string& path) {
+            return path.empty() ? std::string("an empty path names no checkpoint file")
+                                : std::string();
+          },
+          "FILE"));
   std::vector<std::pair<CLI::App*, Action>> commands;
   auto add = [&](auto adder) {
     const size_t before = app.get_subcommands({}).size();

@@ -341,6 +341,24 @@ TEST(Hardening, InputsThatAreNotRegularFilesAreRefused) {
   for (const std::string& f : fifos) fs::remove(f);
 }
 
+// A checkpoint belongs to its command line word for word: arguments are
+// quoted in its identity, so that one argument holding spaces is not the
+// same command as several; an empty checkpoint path is refused.
+TEST(Hardening, ACheckpointKnowsWhereEachArgumentEnds) {
+  const std::string checkpoint = temp_path("quoted.ckpt");
+  fs::remove(checkpoint);
+  // Joined with spaces, `-o 'P --format x.csv'` and `-o P --format x.csv` read the same.
+  const std::string one = temp_path("p --format x.csv"), two = temp_path("p");
+  const CliRun first =
+      run({"--checkpoint", checkpoint, "generate", "jittered", "--n", "4", "-o", one});
+  ASSERT_EQ(first.code, kExitOk) << first.err;
+  expect_error(run({"--checkpoint", checkpoint, "generate", "jittered", "--n", "4", "-o", two,
+                    "--format", "x.csv"}),
+               kExitError, "belongs to another command");
+  expect_error(run({"--checkpoint", "", "list"}), kExitUsage, "an empty path");
+  fs::remove(checkpoint);
+}
+
 TEST(Hardening, AFailedCommandLeavesNoOutputFile) {
   const std::string json = temp_path("best.json"), svg = temp_path("best.svg");
   // The CSV's folder does not exist: the pattern and the drawing must not appear either.

@@ -15,7 +15,14 @@
 namespace aapat {
 namespace {
 
-constexpr std::string_view kMagic = "aapat-checkpoint 1\n";
+// Version 2: a record's checksum covers its set and index as well as its
+// bytes (version 1's covered the bytes alone, so swapped indices passed).
+constexpr std::string_view kMagic = "aapat-checkpoint 2\n";
+constexpr std::string_view kAnyVersion = "aapat-checkpoint ";
+
+uint64_t record_sum(int call, int item, std::string_view bytes) {
+  return fnv1a(fmt::format("{} {} {}", call, item, bytes));
+}
 
 // The command on one line: newlines in arguments would end it early.
 std::string one_line(std::string text) {
@@ -45,7 +52,7 @@ size_t read_records(const std::string& data, size_t at,
     const size_t begin = eol + 1;
     if (size > data.size() || begin + size + 1 > data.size() || data[begin + size] != '\n') break;
     const std::string_view bytes(data.data() + begin, size);
-    if (fnv1a(bytes) != sum) break;
+    if (record_sum(call, item, bytes) != sum) break;
     items[{call, item}] = std::string(bytes);
     at = begin + size + 1;
   }
@@ -65,9 +72,15 @@ Checkpoint::Checkpoint(std::string path, std::string fingerprint) : path_(std::m
     const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (!in.eof() && in.fail()) throw Error(fmt::format("--checkpoint {}: cannot be read", path_));
     if (!data.empty()) {
-      if (data.compare(0, kMagic.size(), kMagic) != 0)
+      if (data.compare(0, kMagic.size(), kMagic) != 0) {
+        if (data.compare(0, kAnyVersion.size(), kAnyVersion) == 0)
+          throw Error(fmt::format(
+              "--checkpoint {}: written by another version of aapat (an older record format); "
+              "delete it or name another file",
+              path_));
         throw Error(fmt::format(
             "--checkpoint {}: not an aapat checkpoint (refusing to overwrite it)", path_));
+      }
       if (data.compare(0, header.size(), header) != 0) {
         const size_t from =
             std::min(data.size(), kMagic.size() + std::string_view("command ").size());
@@ -123,8 +136,8 @@ std::optional<std::string> Checkpoint::find(int call, int item) const {
 }
 
 void Checkpoint::record(int call, int item, std::string_view result) {
-  const std::string head =
-      fmt::format("item {} {} {} {:x}\n", call, item, result.size(), fnv1a(result));
+  const std::string head = fmt::format("item {} {} {} {:x}\n", call, item, result.size(),
+                                       record_sum(call, item, result));
   append({head, result, "\n"});
 }
 

@@ -203,6 +203,33 @@ TEST(Checkpoint, ARecordCutOffByAKillIsDroppedAndRecomputed) {
   std::filesystem::remove(path);
 }
 
+// A record's checksum covers its set and index: two records with their
+// indices swapped (or any index edited) are dropped and recomputed, never
+// resumed with each other's values.
+TEST(Checkpoint, SwappedRecordIndicesAreNotResumed) {
+  const std::string path = temporary_path("swapped");
+  {
+    Checkpoint checkpoint(path, "cmd");
+    checkpoint.record(0, 3, square(3));
+    checkpoint.record(0, 4, square(4));
+  }
+  std::string data;
+  {
+    std::ifstream in(path, std::ios::binary);
+    data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const size_t three = data.find("item 0 3 "), four = data.find("item 0 4 ");
+  ASSERT_NE(three, std::string::npos);
+  ASSERT_NE(four, std::string::npos);
+  data[three + 7] = '4', data[four + 7] = '3';
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << data;
+  Checkpoint checkpoint(path, "cmd");
+  EXPECT_EQ(checkpoint.restored(), 0);
+  EXPECT_FALSE(checkpoint.find(0, 3));
+  EXPECT_FALSE(checkpoint.find(0, 4));
+  std::filesystem::remove(path);
+}
+
 TEST(Checkpoint, AnotherCommandsFileOrAnyOtherFileIsRefused) {
   const std::string path = temporary_path("other");
   { Checkpoint checkpoint(path, "aapat optimize --seed 1"); }
