@@ -36,12 +36,12 @@ void check_ffmpeg(const std::string& path) {
 }
 
 // MP4 through ffmpeg, from the frames' PNGs in `dir`; written whole or not at all.
-void write_mp4(const std::string& dir, const std::string& path, int fps) {
+void write_mp4(const std::string& dir, const std::string& path, int fps, int frames) {
   const std::string tmp = path + ".tmp.mp4";
   const std::string command = fmt::format(
-      "ffmpeg -y -loglevel error -framerate {} -i '{}/frame-%04d.png' -vf "
+      "ffmpeg -y -loglevel error -framerate {} -i '{}/frame-%0{}d.png' -vf "
       "'scale=trunc(iw/2)*2:trunc(ih/2)*2:flags=neighbor' -pix_fmt yuv420p '{}'",
-      fps, dir, tmp);
+      fps, dir, frame_digits(frames), tmp);
   if (std::system(command.c_str()) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
     throw Error(fmt::format("--mp4 {}: ffmpeg failed ({})", path, command));
@@ -112,7 +112,7 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
   const auto on_frame = [&](int f, const Image& img) {
     // Written now: ffmpeg reads them; on an error the run's new frames are deleted.
     if (!frames_dir.empty())
-      write_file_now(fmt::format("{}/frame-{:04d}.png", frames_dir, f),
+      write_file_now(fmt::format("{}/frame-{:0{}d}.png", frames_dir, f, frame_digits(a.frames)),
                      png_gray_bytes(img.width, img.height, grey_pixels(img)));
     if (!o.gif.empty()) gif.frames.push_back(grey_pixels(img));
     bar.update(f + 1, a.frames, "");
@@ -126,7 +126,7 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
   const ImageError e = taa ? taa->total : plain->total;
   if (taa && !o.csv.empty()) write_output(o.csv, taa_csv(*taa), out);
   if (!o.gif.empty()) write_gif(o.gif, gif);
-  if (!o.mp4.empty()) write_mp4(frames_dir, o.mp4, o.fps);
+  if (!o.mp4.empty()) write_mp4(frames_dir, o.mp4, o.fps, a.frames);
   if (!o.histogram.empty()) {
     std::string csv = "deviation,count,contribution\n";
     for (int i = 0; i < 256; ++i)

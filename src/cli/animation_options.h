@@ -3,6 +3,8 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <string>
 
 #include "aapat/render/animation.h"
 #include "cli/reference_options.h"
@@ -20,5 +22,12 @@ struct AnimationOptions {
 };
 
 void add_animation_options(CLI::App* cmd, AnimationOptions& o);
+
+// The digits of a frame's number in its file name (frame-0042.png): at least
+// 4, and enough for the last of `frames`, so that the names sort in frame
+// order for any count.
+inline int frame_digits(int frames) {
+  return std::max(4, static_cast<int>(std::to_string(std::max(frames - 1, 0)).size()));
+}
 
 }  // namespace aapat

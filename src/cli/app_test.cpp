@@ -1,4 +1,5 @@
 #include "cli/app.h"
+#include "cli/animation_options.h"
 #include "testing/cli_run.h"
 
 #include <gtest/gtest.h>
@@ -540,6 +541,15 @@ TEST(CliAnimate, TranslatingCircleOrdersThePatternsAsThePaper) {
             0);
   EXPECT_TRUE(fs::exists(dir + "/frame-0002.png"));
   EXPECT_EQ(run({"animate", "square", "--pattern", "rgss"}).code, 1);
+}
+
+// Frame files sort in frame order for any count: 4 digits up to 10,000
+// frames, then as many as the last frame needs.
+TEST(CliAnimate, FrameNamesSortForAnyCount) {
+  EXPECT_EQ(frame_digits(1), 4);
+  EXPECT_EQ(frame_digits(10000), 4);  // frame-9999 is the last
+  EXPECT_EQ(frame_digits(10001), 5);  // frame-10000 needs frame-00000 .. before it
+  EXPECT_EQ(frame_digits(1000001), 7);
 }
 
 }  // namespace

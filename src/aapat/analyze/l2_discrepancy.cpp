@@ -117,9 +117,8 @@ DoubleDouble min_terms(const PairTerms& q, DoubleDouble c, std::span<const Doubl
 }
 
 // sum_ij Q'(x_i, x_j) Q'(y_i, y_j) = sum q[p][r] q[s][t] M[p][s] M[r][t], M the moments.
-DoubleDouble polynomial_times_polynomial(const PairTerms& q, std::span<const DoubleDouble> x,
+DoubleDouble polynomial_times_polynomial(const PairPolynomial& q, std::span<const DoubleDouble> x,
                                          std::span<const DoubleDouble> y) {
-  if (!q.any) return {};
   Moments m;
   moments(x, y, m);
   DoubleDouble total;
@@ -127,8 +126,8 @@ DoubleDouble polynomial_times_polynomial(const PairTerms& q, std::span<const Dou
     for (int r = 0; r < 3; ++r)
       for (int s = 0; s < 3; ++s)
         for (int t = 0; t < 3; ++t)
-          if (q.q[p][r] != 0 && q.q[s][t] != 0)
-            total += DoubleDouble(q.q[p][r] * q.q[s][t]) * (m[p][s] * m[r][t]);
+          if (q[p][r] != 0 && q[s][t] != 0)
+            total += DoubleDouble(q[p][r] * q[s][t]) * (m[p][s] * m[r][t]);
   return total;
 }
 
@@ -140,7 +139,7 @@ DoubleDouble pair_sum(const CoordinateKernel& k, std::span<const DoubleDouble> x
   //   (Q'_x + c m_x)(Q'_y + c m_y) = Q'_x Q'_y + c Q'_x m_y + c m_x Q'_y + c^2 m_x m_y.
   const PairTerms q(k);
   const DoubleDouble c(k.min_weight);
-  DoubleDouble total = polynomial_times_polynomial(q, x, y);
+  DoubleDouble total = q.any ? polynomial_times_polynomial(q.q, x, y) : DoubleDouble();
   const std::vector<size_t> x_order = ascending_order(x), y_order = ascending_order(y);
   if (k.coordinate != Coordinate::from_centre)
     return total + min_terms(q, c, x, y, x_order, y_order);
@@ -193,16 +192,7 @@ DoubleDouble mixture_squared(const std::vector<Vec2>& p) {
   const PairPolynomial h = {{0, -0.25, 0}, {-0.25, 0, 0}, {0, 0, 0}};  // G_i + G_j in g
   const DoubleDouble c(1.5);
   const std::vector<size_t> x_order = ascending_order(x), y_order = ascending_order(y);
-  // P_x P_y.
-  Moments mxy;
-  moments(x, y, mxy);
-  DoubleDouble pairs;
-  for (int a = 0; a < 3; ++a)
-    for (int r = 0; r < 3; ++r)
-      for (int s = 0; s < 3; ++s)
-        for (int t = 0; t < 3; ++t)
-          if (q[a][r] != 0 && q[s][t] != 0)
-            pairs += DoubleDouble(q[a][r] * q[s][t]) * (mxy[a][s] * mxy[r][t]);
+  DoubleDouble pairs = polynomial_times_polynomial(q, x, y);  // P_x P_y
   // c (P_x m_y + m_x P_y + H_x m_y + m_x H_y) + c^2 m_x m_y.
   pairs += c * (polynomial_min_sum(q, x, y, y_order) + polynomial_min_sum(q, y, x, x_order) +
                 polynomial_min_sum(h, gx, y, y_order) + polynomial_min_sum(h, gy, x, x_order));
