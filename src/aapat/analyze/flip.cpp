@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 
 #include "aapat/core/geometry.h"
 
@@ -24,8 +23,9 @@ constexpr float kQc = 0.7f, kPc = 0.4f, kPt = 0.95f, kW = 0.082f, kQf = 0.5f;
 constexpr float kAy = 1, kBy = 0.0047f, kAcx = 1, kBcx = 0.0053f;
 constexpr float kAcz1 = 34.1f, kBcz1 = 0.04f, kAcz2 = 13.5f, kBcz2 = 0.025f;
 
-// D65 white, and sRGB primaries to XYZ and back.
-constexpr std::array<float, 3> kWhite = {0.950428545f, 1.0f, 1.088900371f};
+// D65 white (color_image.h) and its inverse, as the paper's code rounds them.
+constexpr std::array<float, 3> kWhite = {float(kD65White[0]), float(kD65White[1]),
+                                         float(kD65White[2])};
 constexpr std::array<float, 3> kInvWhite = {1.052156925f, 1.0f, 0.918357670f};
 
 struct Vec3f {
@@ -42,9 +42,8 @@ Vec3f rgb_to_xyz(Vec3f c) {
 }
 
 Vec3f xyz_to_rgb(Vec3f c) {
-  return {3.241003275f * c.x - 1.537398934f * c.y - 0.498615861f * c.z,
-          -0.969224334f * c.x + 1.875930071f * c.y + 0.041554224f * c.z,
-          0.055639423f * c.x - 0.204011202f * c.y + 1.057148933f * c.z};
+  const std::array<float, 3> rgb = xyz_to_linear_rgb(c.x, c.y, c.z);
+  return {rgb[0], rgb[1], rgb[2]};
 }
 
 // YyCxCz: CIELab with the cube root left out, so that it is linear in XYZ.

@@ -20,10 +20,8 @@ std::array<uint8_t, 3> flip_color(double v) {
   auto inverse = [](double t) {
     return t > 6.0 / 29 ? t * t * t : 3 * (6.0 / 29) * (6.0 / 29) * (t - 4.0 / 29);
   };
-  const double x = 0.950428545 * inverse(fx), y = inverse(fy), z = 1.088900371 * inverse(fz);
-  const double rgb[3] = {3.241003275 * x - 1.537398934 * y - 0.498615861 * z,
-                         -0.969224334 * x + 1.875930071 * y + 0.041554224 * z,
-                         0.055639423 * x - 0.204011202 * y + 1.057148933 * z};
+  const std::array<double, 3> rgb = xyz_to_linear_rgb(
+      kD65White[0] * inverse(fx), kD65White[1] * inverse(fy), kD65White[2] * inverse(fz));
   std::array<uint8_t, 3> out{};
   for (int c = 0; c < 3; ++c)
     out[c] = static_cast<uint8_t>(

@@ -150,6 +150,20 @@ RefinementCriterion parse_refinement_criterion(std::string_view text) {
                                                text));
 }
 
+std::string_view refinement_criterion_name(RefinementCriterion criterion) {
+  switch (criterion) {
+    case RefinementCriterion::contrast:
+      return "contrast";
+    case RefinementCriterion::variance:
+      return "variance";
+    case RefinementCriterion::neighbours:
+      return "neighbours";
+    case RefinementCriterion::primitive:
+      return "primitive";
+  }
+  return "contrast";
+}
+
 void validate(const AdaptiveSettings& s) {
   const int first = s.initial.pattern ? static_cast<int>(s.initial.pattern->sets.front().size())
                                       : s.initial.samples;

@@ -28,6 +28,8 @@ enum class RefinementCriterion {
                // textured primitive texture regions whose values differ by > threshold
 };
 RefinementCriterion parse_refinement_criterion(std::string_view text);
+// The name the parser reads: "contrast", "variance", "neighbours", "primitive".
+std::string_view refinement_criterion_name(RefinementCriterion criterion);
 
 struct AdaptiveSettings {
   Sampling initial;  // 1 to 5 samples per pixel, from a generator or a pattern that shares none

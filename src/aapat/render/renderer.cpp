@@ -161,10 +161,18 @@ ShadingMode parse_shading_mode(std::string_view text) {
   throw ParameterError("mode", fmt::format(" '{}': use supersample or multisample", text));
 }
 
+std::string_view shading_mode_name(ShadingMode mode) {
+  return mode == ShadingMode::supersample ? "supersample" : "multisample";
+}
+
 ShadingPoint parse_shading_point(std::string_view text) {
   if (text == "centre" || text == "center") return ShadingPoint::centre;
   if (text == "centroid") return ShadingPoint::centroid;
   throw ParameterError("shading-point", fmt::format(" '{}': use centre or centroid", text));
+}
+
+std::string_view shading_point_name(ShadingPoint point) {
+  return point == ShadingPoint::centre ? "centre" : "centroid";
 }
 
 namespace {

@@ -48,6 +48,9 @@ struct Shading {
 };
 ShadingMode parse_shading_mode(std::string_view text);    // supersample, multisample
 ShadingPoint parse_shading_point(std::string_view text);  // centre (center), centroid
+// The names the parsers read (the reports' names): "supersample", "centre", ...
+std::string_view shading_mode_name(ShadingMode mode);
+std::string_view shading_point_name(ShadingPoint point);
 
 struct Sampling {
   std::optional<Pattern> pattern;  // tiled over the image, or

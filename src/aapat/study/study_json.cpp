@@ -127,16 +127,15 @@ JsonObject discrepancy_json(const std::string& source, const DiscrepancyReport& 
 }
 
 JsonObject shading_json(const Sampling& s, const RenderStats& stats) {
-  return {{"mode", s.shading.mode == ShadingMode::supersample ? "supersample" : "multisample"},
-          {"shading_point", s.shading.point == ShadingPoint::centre ? "centre" : "centroid"},
+  return {{"mode", shading_mode_name(s.shading.mode)},
+          {"shading_point", shading_point_name(s.shading.point)},
           {"texture_filter", s.shading.texture.name},
           {"lookups_per_pixel", stats.lookups_per_pixel},
           {"shadings_per_pixel", stats.shadings_per_pixel}};
 }
 
 JsonObject adaptive_json(const AdaptiveSettings& a, const AdaptiveImage& r) {
-  static const char* kNames[] = {"contrast", "variance", "neighbours", "primitive"};
-  return {{"criterion", kNames[static_cast<int>(a.criterion)]},
+  return {{"criterion", refinement_criterion_name(a.criterion)},
           {"threshold", a.threshold},
           {"max_depth", a.max_depth},
           {"max_samples", a.max_samples},
