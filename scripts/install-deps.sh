@@ -7,6 +7,7 @@ packages=(cmake ninja-build g++ pkg-config
   clang libclang-rt-14-dev  # clang builds the ASan+UBSan preset with the libFuzzer targets
   pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module and its tests
   python3-venv python3-pip python3-setuptools python3-wheel  # pip install . (setup.py drives CMake)
+  libassimp-dev assimp-testmodels libjpeg-dev  # model files (io/mesh_file.h), their JPEG textures, and the real models the tests and study render
   chromium python3-pil  # the study report opened in a real browser (scripts/test-report.sh)
   libopenmpi-dev openmpi-bin)  # runs across processes and machines (src/cluster, docs/cluster.md)
 missing=()

@@ -113,8 +113,8 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
     // Written now: ffmpeg reads them; on an error the run's new frames are deleted.
     if (!frames_dir.empty())
       write_file_now(fmt::format("{}/frame-{:0{}d}.png", frames_dir, f, frame_digits(a.frames)),
-                     png_gray_bytes(img.width, img.height, grey_pixels(img)));
-    if (!o.gif.empty()) gif.frames.push_back(grey_pixels(img));
+                     png_gray_bytes(img.width, img.height, level_pixels(img)));
+    if (!o.gif.empty()) gif.frames.push_back(level_pixels(img));
     bar.update(f + 1, a.frames, "");
   };
   std::optional<TaaResult> taa;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -20,6 +21,7 @@
 #include "aapat/io/png_image.h"
 #include "aapat/io/refinement_map.h"
 #include "aapat/io/scene_json.h"
+#include "aapat/render/color_render.h"
 #include "aapat/study/study_json.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/taa_render.h"
@@ -68,7 +70,11 @@ Scene make_view_scene(const Options& o, int w, int h) {
     if (parts.size() != 2) throw Error(fmt::format("--translate: '{}' is not X,Y", o.translate));
     translation = {parse_number(parts[0], "--translate"), parse_number(parts[1], "--translate")};
   }
-  return view_scene(resolve_scene(o.scene, w, h, o.texture), w, h, o.rotate, o.scale, translation);
+  Scene scene =
+      view_scene(resolve_scene(o.scene, w, h, o.texture), w, h, o.rotate, o.scale, translation);
+  for (const std::string& warning : scene_warnings(scene))
+    std::cerr << "aapat: warning: " << warning << "\n";
+  return scene;
 }
 
 // The shading and refinement options given on the command line.
@@ -104,6 +110,11 @@ void run_grid(const Options& o, std::ostream& out) {
   if (o.output.empty() || !o.output.ends_with(".png"))
     throw Error("render --grid: give the sheet's file with -o SHEET.png");
   const Scene scene = make_view_scene(o, w, h);
+  if (is_colour(scene))
+    throw Error(
+        fmt::format("--grid: {} is a colour (mesh) scene; the contact sheet is grey for "
+                    "now: render its cells one by one",
+                    o.scene));
   const RenderGridSettings s{w, h, o.rows, o.columns, o.seed, reference_settings(o)};
   std::vector<RenderGridCell> cells;
   {
@@ -158,8 +169,8 @@ void run_grid(const Options& o, std::ostream& out) {
       sheet.cells.push_back({w, h, refinement_map_pixels(map_of(c), w, h, 1, most),
                              fmt::format("MAP 1-{} AVG {:.2f}", most, c.stats.samples_per_pixel)});
     } else {
-      sheet.cells.push_back(
-          {w, h, grey_pixels(c.image), fmt::format("RMSE {:.2f} MAX {}", e.rmse, e.max_deviation)});
+      sheet.cells.push_back({w, h, level_pixels(c.image),
+                             fmt::format("RMSE {:.2f} MAX {}", e.rmse, e.max_deviation)});
     }
     const std::string spp = c.adaptive ? fmt::format("{:.2f}", c.stats.samples_per_pixel)
                                        : format_cost(c.stats.samples_per_pixel);
@@ -265,7 +276,7 @@ void run_single(const Options& o, std::ostream& out) {
   const Scene scene = make_view_scene(o, w, h);
   const RenderSettings s = single_settings(o, w, h);
   const RenderResult r = render_study(scene, s, o.reference.source());
-  if (!o.output.empty()) write_png_gray(o.output, w, h, grey_pixels(r.image));
+  if (!o.output.empty()) write_png_image(o.output, r.image);
   if (!o.refinement_map.empty()) {
     const GreyRaster map = refinement_map_with_legend(r.adaptive->samples, w, h);
     write_png_gray(o.refinement_map, map.width, map.height, map.pixels);
@@ -295,7 +306,7 @@ void run_single(const Options& o, std::ostream& out) {
         ssim_text(*r.figures), r.figures->flip);
     if (!o.error_png.empty())
       write_png_gray(o.error_png, w, h, error_pixels(r.image, *r.reference));
-    if (!o.reference_png.empty()) write_png_gray(o.reference_png, w, h, grey_pixels(*r.reference));
+    if (!o.reference_png.empty()) write_png_image(o.reference_png, *r.reference);
     write_histogram(o, e, out);
   } else {
     text +=
@@ -316,6 +327,11 @@ void run_temporal(const Options& o, std::ostream& out) {
   if (!o.output.empty() && !o.output.ends_with(".png"))
     throw Error(fmt::format("'{}' must end in .png", o.output));
   const Scene scene = make_view_scene(o, w, h);
+  if (is_colour(scene))
+    throw Error(
+        fmt::format("--sequence: {} is a colour (mesh) scene; the temporal renderer "
+                    "takes grey scenes for now",
+                    o.scene));
   const Sequence s = resolve_sequence(o.sequence);
   const Accumulation model = o.model.make();
   TaaScenes scenes;
@@ -328,7 +344,7 @@ void run_temporal(const Options& o, std::ostream& out) {
   Image last;
   const TaaResult r = render_taa(
       scenes, s, model, !o.cut, [&](int, const Image& img) { last = img; }, o.reference.source());
-  if (!o.output.empty()) write_png_gray(o.output, w, h, grey_pixels(last));
+  if (!o.output.empty()) write_png_gray(o.output, w, h, level_pixels(last));
   if (o.json) {
     JsonObject js = json_report("render");
     js.update(JsonObject{{"scene", o.scene},

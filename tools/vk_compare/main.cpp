@@ -620,7 +620,7 @@ int run(int argc, char** argv) {
     for (size_t k = 0; k < px.size(); ++k)
       px[k] = static_cast<uint8_t>(std::lround(255 * std::clamp(double(gpu_values[k]), 0.0, 1.0)));
     if (!gpu_png.empty()) aapat::write_png_gray(gpu_png, w, h, px);
-    if (!cpu_png.empty()) aapat::write_png_gray(cpu_png, w, h, aapat::grey_pixels(cpu));
+    if (!cpu_png.empty()) aapat::write_png_gray(cpu_png, w, h, aapat::level_pixels(cpu));
     if (expect >= 0 && e.max_deviation > expect) {
       fmt::print(stderr, "aapat-vk-compare: max deviation {} is above the expected {}\n",
                  e.max_deviation, expect);

@@ -1,5 +1,7 @@
 #include "aapat/io/png_image.h"
 
+#include "aapat/render/image_error.h"
+
 #include <fmt/format.h>
 #include <png.h>
 
@@ -78,10 +80,18 @@ void write_png_rgb(const std::string& path, int width, int height,
   write_png(path, width, height, 3, pixels);
 }
 
+void write_png_image(const std::string& path, const Image& image) {
+  write_png(path, image.width, image.height, image.channels, level_pixels(image));
+}
+
 PngColor read_png_color(const std::string& path, const std::string& what) {
   // A PNG of kMaxColorImagePixels compresses to far less than this; the
   // header's size is checked before anything is decoded.
-  const std::string bytes = read_file(path, what, size_t{1} << 30);
+  return decode_png_color(read_file(path, what, size_t{1} << 30), path, what);
+}
+
+PngColor decode_png_color(std::string_view bytes, const std::string& path,
+                          const std::string& what) {
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()))

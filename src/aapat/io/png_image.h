@@ -4,9 +4,11 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "aapat/analyze/color_image.h"
+#include "aapat/render/renderer.h"
 
 namespace aapat {
 
@@ -18,6 +20,8 @@ void write_png_gray(const std::string& path, int width, int height,
                     const std::vector<uint8_t>& pixels);
 void write_png_rgb(const std::string& path, int width, int height,
                    const std::vector<uint8_t>& pixels);
+// A rendering's 8-bit levels: grey, or RGB for a colour image.
+void write_png_image(const std::string& path, const Image& image);
 
 // The largest image read_png_color takes (docs/limits.md): 2^25 pixels (8K
 // UHD), checked from the header before any pixel is decoded.
@@ -33,5 +37,8 @@ struct PngColor {
 // Error naming the file (`what` says what it is): missing, not a PNG,
 // truncated, or too large.
 PngColor read_png_color(const std::string& path, const std::string& what);
+// The same from the file's bytes (a texture embedded in a model); `path`
+// names them in errors.
+PngColor decode_png_color(std::string_view bytes, const std::string& path, const std::string& what);
 
 }  // namespace aapat

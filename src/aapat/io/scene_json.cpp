@@ -4,8 +4,10 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "aapat/io/atomic_file.h"
+#include "aapat/io/mesh_scene.h"
 #include "aapat/io/texture_file.h"
 
 namespace aapat {
@@ -157,9 +159,20 @@ ShapesScene scene_from_json(std::string_view text, std::string_view source) {
 
 Scene resolve_scene(const std::string& spec_or_path, int width, int height,
                     const std::string& texture) {
-  Scene scene = spec_or_path.ends_with(".json")
-                    ? Scene(scene_from_json(read_file(spec_or_path, "scene file"), spec_or_path))
-                    : make_scene(spec_or_path, width, height);
+  std::optional<Scene> read;
+  if (spec_or_path.ends_with(".json")) {
+    const std::string text = read_file(spec_or_path, "scene file");
+    if (is_mesh_scene_text(text)) {
+      if (!texture.empty())
+        throw Error(
+            fmt::format("scene file {}: a mesh scene takes its textures from its model, "
+                        "not --texture",
+                        spec_or_path));
+      return make_mesh_scene(mesh_scene_from_json(text, spec_or_path), width, height);
+    }
+    read.emplace(scene_from_json(text, spec_or_path));
+  }
+  Scene scene = read ? std::move(*read) : make_scene(spec_or_path, width, height);
   if (!texture.empty()) scene = with_texture(std::move(scene), texture);
   if (const auto* shapes = std::get_if<ShapesScene>(&scene.shape))
     for (size_t k = 0; k < shapes->shapes.size(); ++k)

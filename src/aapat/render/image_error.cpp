@@ -9,9 +9,11 @@ namespace aapat {
 namespace {
 
 void check_sizes(const Image& a, const Image& b) {
-  if (a.width != b.width || a.height != b.height)
-    throw Error(fmt::format("compare: a {}x{} image against a {}x{} reference", a.width, a.height,
-                            b.width, b.height));
+  if (a.width != b.width || a.height != b.height || a.channels != b.channels)
+    throw Error(
+        fmt::format("compare: a {}x{} image of {} channel(s) against a {}x{} reference of "
+                    "{}",
+                    a.width, a.height, a.channels, b.width, b.height, b.channels));
 }
 
 }  // namespace
@@ -44,22 +46,27 @@ void summarize(ImageError& e, double pixels) {
 
 std::vector<uint8_t> error_pixels(const Image& image, const Image& reference) {
   check_sizes(image, reference);
-  std::vector<uint8_t> out(image.values.size());
+  std::vector<uint8_t> out(image.pixels());
+  const auto n = static_cast<size_t>(image.channels);
   for (int j = 0; j < image.height; ++j)
     for (int i = 0; i < image.width; ++i) {
-      const double d = std::abs(image.at(i, j) - reference.at(i, j));
+      const size_t k = (static_cast<size_t>(j) * image.width + i) * n;
+      double d = 0;  // the largest channel's
+      for (size_t c = 0; c < n; ++c)
+        d = std::max(d, std::abs(image.values[k + c] - reference.values[k + c]));
       out[static_cast<size_t>(image.height - 1 - j) * image.width + i] =
           static_cast<uint8_t>(std::lround(255 * (1 - std::min(1.0, d / 0.1))));
     }
   return out;
 }
 
-std::vector<uint8_t> grey_pixels(const Image& image) {
+std::vector<uint8_t> level_pixels(const Image& image) {
   std::vector<uint8_t> out(image.values.size());
+  const size_t row = image.values.size() / static_cast<size_t>(std::max(1, image.height));
   for (int j = 0; j < image.height; ++j)
-    for (int i = 0; i < image.width; ++i)
-      out[static_cast<size_t>(image.height - 1 - j) * image.width + i] =
-          static_cast<uint8_t>(grey_level(image.at(i, j)));
+    for (size_t k = 0; k < row; ++k)
+      out[static_cast<size_t>(image.height - 1 - j) * row + k] =
+          static_cast<uint8_t>(grey_level(image.values[static_cast<size_t>(j) * row + k]));
   return out;
 }
 

@@ -26,7 +26,10 @@ int grey_level(double v);
 ImageError compare(const Image& image, const Image& reference);
 // Fills contribution and rmse from count, over `pixels` deviations in all.
 void summarize(ImageError& e, double pixels);
-std::vector<uint8_t> error_pixels(const Image& image, const Image& reference);  // rows top-down
-std::vector<uint8_t> grey_pixels(const Image& image);                           // rows top-down
+// The error image, one grey byte per pixel (a colour image's largest channel
+// error), rows top-down.
+std::vector<uint8_t> error_pixels(const Image& image, const Image& reference);
+// The image's 8-bit levels, `channels` bytes per pixel, rows top-down: a PNG's pixels.
+std::vector<uint8_t> level_pixels(const Image& image);
 
 }  // namespace aapat

@@ -9,9 +9,11 @@ ColorImage color_image(const Image& image) {
                std::vector<float>(static_cast<size_t>(image.width) * image.height * 3)};
   for (int j = 0; j < image.height; ++j)  // the renderer's row 0 is the bottom
     for (int i = 0; i < image.width; ++i) {
-      const float v = static_cast<float>(grey_level(image.at(i, j))) / 255.0f;
+      const size_t k = (static_cast<size_t>(j) * image.width + i) * image.channels;
       float* out = &c.rgb[3 * (static_cast<size_t>(image.height - 1 - j) * image.width + i)];
-      out[0] = out[1] = out[2] = v;
+      for (size_t ch = 0; ch < 3; ++ch)  // grey: R = G = B
+        out[ch] = static_cast<float>(grey_level(image.values[k + (image.channels == 3 ? ch : 0)])) /
+                  255.0f;
     }
   return c;
 }

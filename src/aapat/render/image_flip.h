@@ -9,7 +9,7 @@
 
 namespace aapat {
 
-// The grey image's levels as a colour image, rows from the top.
+// The image's levels as a colour image (grey: R = G = B), rows from the top.
 ColorImage color_image(const Image& image);
 
 // The mean FLIP; images must be the same size.

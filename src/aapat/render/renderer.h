@@ -33,8 +33,10 @@ namespace aapat {
 struct Image {
   int width = 0, height = 0;
   double offset = 0;           // output pixel (i, j) is the value at (i + offset, j + offset)
-  std::vector<double> values;  // row j (from the bottom) then column i
+  std::vector<double> values;  // row j (from the bottom) then column i, then channel
+  int channels = 1;            // 1: grey; 3: R, G, B (a mesh scene, render/color_render.h)
   double at(int i, int j) const { return values[static_cast<size_t>(j) * width + i]; }
+  size_t pixels() const { return static_cast<size_t>(width) * static_cast<size_t>(height); }
 };
 
 enum class ShadingMode { supersample, multisample };

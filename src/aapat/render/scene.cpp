@@ -8,6 +8,7 @@
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/overloaded.h"
 #include "aapat/core/text.h"
+#include "aapat/render/mesh.h"
 #include "aapat/render/shape_index.h"
 #include "aapat/render/surface.h"
 #include "aapat/render/texture_filter.h"
@@ -35,7 +36,7 @@ Vec2 View::to_scene(Vec2 q) const {
 }
 
 double shade(const Scene& scene, Vec2 image_point) {
-  if (has_texture(scene)) {
+  if (has_texture(scene) || std::holds_alternative<MeshScene>(scene.shape)) {
     // The exact texel of a textured primitive, the grey of the others.
     static const TextureFilter kExact;
     return shade_primitive(scene, primitive_at(scene, image_point), image_point, kExact);
@@ -96,7 +97,8 @@ double shade(const Scene& scene, Vec2 image_point) {
           [&](const ShapesScene& s) {
             const int top = top_shape_at(s, p);
             return top < 0 ? s.background : s.shapes[static_cast<size_t>(top)].grey;
-          }},
+          },
+          [&](const MeshScene&) { return 0.0; }},  // shaded per primitive above
       scene.shape);
 }
 
@@ -219,6 +221,14 @@ Scene animation_frame(std::string_view animation, int width, int height, int fra
       fmt::format("unknown animation '{}': known animations are circle, triangle", animation));
 }
 
+std::vector<std::string> scene_warnings(const Scene& scene) {
+  std::vector<std::string> out;
+  if (const auto* mesh = std::get_if<MeshScene>(&scene.shape))
+    for (const std::string& w : mesh->view->mesh().warnings)
+      out.push_back(fmt::format("model '{}': {}", mesh->view->mesh().name, w));
+  return out;
+}
+
 std::string canonical_text(const Scene& scene) {
   std::string t;
   auto num = [&](double v) { t += fmt::format("{:.17g} ", v); };
@@ -284,7 +294,8 @@ std::string canonical_text(const Scene& scene) {
                 for (double w : sh.w) num(w);
               }
             }
-          }},
+          },
+          [&](const MeshScene& s) { t += fmt::format("{} channel {}", s.view->key(), s.channel); }},
       scene.shape);
   return t;
 }

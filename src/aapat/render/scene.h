@@ -85,8 +85,19 @@ void index_shapes(ShapesScene& scene);
 // The last shape in painting order that holds scene point p, or -1.
 int top_shape_at(const ShapesScene& scene, Vec2 p);
 
-using SceneShape = std::variant<HalfPlaneScene, CheckerboardScene, CirclesScene, SliverScene,
-                                SpiralScene, ZonePlateScene, DiscScene, TriangleScene, ShapesScene>;
+// A triangle mesh through a camera (render/mesh.h), in colour: one channel
+// (0 red, 1 green, 2 blue) is the scene's value, so that every grey
+// rendering path applies to each channel unchanged and a colour image is its
+// three channels' renderings (render/color_render.h).
+class MeshView;
+struct MeshScene {
+  std::shared_ptr<const MeshView> view;
+  int channel = 0;
+};
+
+using SceneShape =
+    std::variant<HalfPlaneScene, CheckerboardScene, CirclesScene, SliverScene, SpiralScene,
+                 ZonePlateScene, DiscScene, TriangleScene, ShapesScene, MeshScene>;
 
 // Where the scene sits in the image: rotated by rotation_deg and scaled by
 // `scale` about `pivot`, then moved by `translation` (pixels).
@@ -110,6 +121,10 @@ struct Scene {
 
 // The grey level of the scene at p (textures at their exact texel values).
 double shade(const Scene& scene, Vec2 p);
+
+// What reading the scene's files used but could not take (a model's missing
+// texture): each line names the file; the faces show them as warnings.
+std::vector<std::string> scene_warnings(const Scene& scene);
 
 // Every field of the scene, exactly (%.17g): equal texts, equal images. Keys the reference cache.
 std::string canonical_text(const Scene& scene);

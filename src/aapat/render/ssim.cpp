@@ -51,9 +51,9 @@ std::vector<double> window_means(int w, int h, F f) {
 }  // namespace
 
 double ssim(const Image& a, const Image& b) {
-  if (a.width != b.width || a.height != b.height)
-    throw Error(fmt::format("ssim: a {}x{} image against a {}x{} reference", a.width, a.height,
-                            b.width, b.height));
+  if (a.width != b.width || a.height != b.height || a.channels != b.channels)
+    throw Error(fmt::format("ssim: a {}x{} image of {} channel(s) against a {}x{} reference of {}",
+                            a.width, a.height, a.channels, b.width, b.height, b.channels));
   if (a.width < kSsimWindow || a.height < kSsimWindow)
     throw Error(fmt::format("ssim: a {}x{} image is smaller than the {}x{} window", a.width,
                             a.height, kSsimWindow, kSsimWindow));
@@ -63,21 +63,27 @@ double ssim(const Image& a, const Image& b) {
     la[k] = grey_level(a.values[k]);
     lb[k] = grey_level(b.values[k]);
   }
-  auto x = [&](int i, int j) { return la[static_cast<size_t>(j) * a.width + i]; };
-  auto y = [&](int i, int j) { return lb[static_cast<size_t>(j) * b.width + i]; };
-  const int w = a.width, h = a.height;
-  const auto mx = window_means(w, h, x), my = window_means(w, h, y);
-  const auto mxx = window_means(w, h, [&](int i, int j) { return x(i, j) * x(i, j); });
-  const auto myy = window_means(w, h, [&](int i, int j) { return y(i, j) * y(i, j); });
-  const auto mxy = window_means(w, h, [&](int i, int j) { return x(i, j) * y(i, j); });
-  double sum = 0;
-  for (size_t k = 0; k < mx.size(); ++k) {
-    const double vx = mxx[k] - mx[k] * mx[k], vy = myy[k] - my[k] * my[k],
-                 cxy = mxy[k] - mx[k] * my[k];
-    sum += (2 * mx[k] * my[k] + kC1) * (2 * cxy + kC2) /
-           ((mx[k] * mx[k] + my[k] * my[k] + kC1) * (vx + vy + kC2));
+  // A colour image's SSIM is the mean of its channels' (scikit-image's channel_axis).
+  const auto n = static_cast<size_t>(a.channels);
+  double total = 0;
+  for (size_t c = 0; c < n; ++c) {
+    auto x = [&](int i, int j) { return la[(static_cast<size_t>(j) * a.width + i) * n + c]; };
+    auto y = [&](int i, int j) { return lb[(static_cast<size_t>(j) * b.width + i) * n + c]; };
+    const int w = a.width, h = a.height;
+    const auto mx = window_means(w, h, x), my = window_means(w, h, y);
+    const auto mxx = window_means(w, h, [&](int i, int j) { return x(i, j) * x(i, j); });
+    const auto myy = window_means(w, h, [&](int i, int j) { return y(i, j) * y(i, j); });
+    const auto mxy = window_means(w, h, [&](int i, int j) { return x(i, j) * y(i, j); });
+    double sum = 0;
+    for (size_t k = 0; k < mx.size(); ++k) {
+      const double vx = mxx[k] - mx[k] * mx[k], vy = myy[k] - my[k] * my[k],
+                   cxy = mxy[k] - mx[k] * my[k];
+      sum += (2 * mx[k] * my[k] + kC1) * (2 * cxy + kC2) /
+             ((mx[k] * mx[k] + my[k] * my[k] + kC1) * (vx + vy + kC2));
+    }
+    total += sum / static_cast<double>(mx.size());
   }
-  return sum / static_cast<double>(mx.size());
+  return total / static_cast<double>(n);
 }
 
 }  // namespace aapat

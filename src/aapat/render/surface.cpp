@@ -1,7 +1,9 @@
 #include "aapat/render/surface.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "aapat/render/mesh.h"
 #include "aapat/render/shape_index.h"
 
 #include "aapat/core/overloaded.h"
@@ -96,6 +98,24 @@ Interpolated interpolate(const Shape& shape, Vec2 p) {
           derivative(nv, dnv, 1)};
 }
 
+// A mesh triangle's texture coordinates (in repeats) and their derivatives
+// by image x and y, from its vertices' perspective-correct weights.
+Interpolated mesh_uv(const MeshView& view, int triangle, Vec2 p) {
+  const MeshView::Weights w = view.weights(triangle, p);
+  const auto& tri = view.mesh().triangles[view.triangles()[static_cast<size_t>(triangle)].source];
+  Interpolated out{};
+  for (int m = 0; m < 3; ++m) {
+    const Vec2 uv = view.mesh().uv[tri[m]];
+    out.u += w.w[m] * uv.x;
+    out.v += w.w[m] * uv.y;
+    out.du_dx += w.dx[m] * uv.x;
+    out.du_dy += w.dy[m] * uv.x;
+    out.dv_dx += w.dx[m] * uv.y;
+    out.dv_dy += w.dy[m] * uv.y;
+  }
+  return out;
+}
+
 const TexturedSurface* texture_of(const Scene& scene, int primitive) {
   if (const auto* board = std::get_if<CheckerboardScene>(&scene.shape))
     return primitive == 1 ? board->texture.get() : nullptr;
@@ -103,8 +123,19 @@ const TexturedSurface* texture_of(const Scene& scene, int primitive) {
     return primitive >= 1 && static_cast<size_t>(primitive) <= shapes->shapes.size()
                ? shapes->shapes[static_cast<size_t>(primitive - 1)].texture.get()
                : nullptr;
+  if (const auto* mesh = std::get_if<MeshScene>(&scene.shape))
+    return primitive >= 1 && !mesh->view->mesh().uv.empty()
+               ? mesh->view->material(primitive - 1)
+                     .texture[static_cast<size_t>(mesh->channel)]
+                     .get()
+               : nullptr;
   return nullptr;
 }
+
+// A mesh channel's value at p on `primitive`: the material's base times the
+// vertex colour times the texture, times the triangle's light.
+double shade_mesh(const Scene& scene, const MeshScene& mesh, int primitive, Vec2 image_point,
+                  const TextureFilter& filter, double footprint, int* lookups);
 
 }  // namespace
 
@@ -121,6 +152,10 @@ int top_shape_at(const ShapesScene& s, Vec2 p) {
 }
 
 int primitive_at(const Scene& scene, Vec2 image_point) {
+  if (const auto* mesh = std::get_if<MeshScene>(&scene.shape)) {
+    const Vec2 p = scene.view.identity() ? image_point : scene.view.to_scene(image_point);
+    return mesh->view->hit(p).triangle + 1;
+  }
   if (const auto* board = std::get_if<CheckerboardScene>(&scene.shape)) {
     const Vec2 p = scene.view.identity() ? image_point : scene.view.to_scene(image_point);
     if (board->texture) return ground_point(*board, p) ? 1 : 0;
@@ -148,9 +183,12 @@ std::optional<TextureCoordinates> texture_coordinates(const Scene& scene, int pr
     const double ks = w / board->period, kt = h / board->period;
     c = {g->gx * ks, g->gz * kt, {g->dgx_dx * ks, g->dgz_dx * kt, g->dgx_dy * ks, g->dgz_dy * kt}};
   } else {
-    const Shape& shape =
-        std::get<ShapesScene>(scene.shape).shapes[static_cast<size_t>(primitive - 1)];
-    const Interpolated i = interpolate(shape, p);
+    const auto* mesh = std::get_if<MeshScene>(&scene.shape);
+    const Interpolated i =
+        mesh
+            ? mesh_uv(*mesh->view, primitive - 1, p)
+            : interpolate(
+                  std::get<ShapesScene>(scene.shape).shapes[static_cast<size_t>(primitive - 1)], p);
     c = {i.u * w, i.v * h, {i.du_dx * w, i.dv_dx * h, i.du_dy * w, i.dv_dy * h}};
   }
   to_image(scene.view, c.j.dsdx, c.j.dsdy);
@@ -160,6 +198,8 @@ std::optional<TextureCoordinates> texture_coordinates(const Scene& scene, int pr
 
 double shade_primitive(const Scene& scene, int primitive, Vec2 image_point,
                        const TextureFilter& filter, double footprint, int* lookups) {
+  if (const auto* mesh = std::get_if<MeshScene>(&scene.shape))
+    return shade_mesh(scene, *mesh, primitive, image_point, filter, footprint, lookups);
   if (const TexturedSurface* surface = texture_of(scene, primitive)) {
     const double grey =
         std::holds_alternative<ShapesScene>(scene.shape)
@@ -189,7 +229,40 @@ double shade_primitive(const Scene& scene, int primitive, Vec2 image_point,
                     scene.shape);
 }
 
+namespace {
+
+double shade_mesh(const Scene& scene, const MeshScene& mesh, int primitive, Vec2 image_point,
+                  const TextureFilter& filter, double footprint, int* lookups) {
+  const MeshView& view = *mesh.view;
+  const auto c = static_cast<size_t>(mesh.channel);
+  if (primitive <= 0) return view.light().background[c];
+  const MeshMaterial& material = view.material(primitive - 1);
+  double value = material.base[c] * view.triangles()[static_cast<size_t>(primitive - 1)].light;
+  if (!view.mesh().colours.empty()) {
+    const Vec2 p = scene.view.identity() ? image_point : scene.view.to_scene(image_point);
+    const MeshView::Weights w = view.weights(primitive - 1, p);
+    const auto& tri =
+        view.mesh().triangles[view.triangles()[static_cast<size_t>(primitive - 1)].source];
+    double colour = 0;
+    for (int m = 0; m < 3; ++m) colour += w.w[m] * view.mesh().colours[tri[m]][c];
+    value *= colour;
+  }
+  if (const TexturedSurface* surface = texture_of(scene, primitive)) {
+    auto t = texture_coordinates(scene, primitive, image_point);
+    t->j = {t->j.dsdx * footprint, t->j.dtdx * footprint, t->j.dsdy * footprint,
+            t->j.dtdy * footprint};
+    value *= filtered_value(*surface, filter, t->s, t->t, t->j, lookups);
+  }
+  return std::clamp(value, 0.0, 1.0);
+}
+
+}  // namespace
+
 bool has_texture(const Scene& scene) {
+  if (const auto* mesh = std::get_if<MeshScene>(&scene.shape))
+    return !mesh->view->mesh().uv.empty() &&
+           std::any_of(mesh->view->mesh().materials.begin(), mesh->view->mesh().materials.end(),
+                       [](const MeshMaterial& m) { return m.texture[0] != nullptr; });
   if (const auto* board = std::get_if<CheckerboardScene>(&scene.shape))
     return board->texture != nullptr;
   if (const auto* shapes = std::get_if<ShapesScene>(&scene.shape)) return shapes->textured;
@@ -197,6 +270,8 @@ bool has_texture(const Scene& scene) {
 }
 
 bool has_shading(const Scene& scene) {
+  if (const auto* mesh = std::get_if<MeshScene>(&scene.shape))
+    return has_texture(scene) || !mesh->view->mesh().colours.empty();
   return has_texture(scene) || std::holds_alternative<ZonePlateScene>(scene.shape);
 }
 

@@ -7,12 +7,11 @@
 namespace aapat {
 namespace {
 
-// The grey mean of the channels, as the renderer's images hold values.
-Image grey_of(const ColorImage& c) {
-  Image g{c.width, c.height, 0, std::vector<double>(c.pixels())};
-  for (size_t p = 0; p < c.pixels(); ++p)
-    g.values[p] = (c.rgb[3 * p] + c.rgb[3 * p + 1] + c.rgb[3 * p + 2]) / 3.0;
-  return g;
+// The file's colours as a three-channel rendering holds them, so that SSIM
+// is the renderer's (the mean of the channels' SSIMs; a grey file's R = G = B
+// gives its grey SSIM).
+Image image_of(const ColorImage& c) {
+  return {c.width, c.height, 0, std::vector<double>(c.rgb.begin(), c.rgb.end()), 3};
 }
 
 }  // namespace
@@ -29,7 +28,7 @@ ImageDiff image_diff(const ColorImage& reference, const ColorImage& test, double
   d.rmse = std::sqrt(sum / static_cast<double>(reference.rgb.size()));
   if (d.rmse > 0) d.psnr = 20 * std::log10(255 / d.rmse);
   if (reference.width >= kSsimWindow && reference.height >= kSsimWindow)
-    d.ssim = ssim(grey_of(test), grey_of(reference));
+    d.ssim = ssim(image_of(test), image_of(reference));
   return d;
 }
 

@@ -7,6 +7,7 @@
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/io/pattern_json.h"
+#include "aapat/render/color_render.h"
 #include "aapat/render/image_flip.h"
 #include "aapat/render/ssim.h"
 #include "aapat/render/texture_filter.h"
@@ -146,13 +147,29 @@ void render_one(const Scene& scene, int width, int height, const Sampling& sampl
                 const std::optional<AdaptiveSettings>& adaptive, Image& image, RenderStats& stats,
                 std::optional<AdaptiveImage>& refined) {
   if (!adaptive) {
-    image = render(scene, width, height, sampling, filter, &stats);
+    bool first = true;  // the red channel's counts stand for the pixel's
+    image = render_channels(scene, [&](const Scene& channel) {
+      RenderStats channel_stats;
+      Image part = render(channel, width, height, sampling, filter, &channel_stats);
+      if (first) stats = channel_stats, first = false;
+      return part;
+    });
     return;
   }
+  if (is_colour(scene))
+    throw Error("render: adaptive refinement of a colour (mesh) scene is not available yet");
   refined = render_adaptive(scene, width, height, *adaptive, filter);
   image = refined->image;
   stats.samples_per_pixel = refined->average_samples;
   stats.shadings_per_pixel = double(refined->evaluations) / (double(width) * height);
+}
+
+// The reference of every channel (each cached on its own).
+Image reference_of(const ReferenceSource& references, const Scene& scene, int width, int height,
+                   const ReferenceSettings& settings, double offset) {
+  return render_channels(scene, [&](const Scene& channel) {
+    return references(channel, width, height, settings, offset);
+  });
 }
 
 }  // namespace
@@ -163,7 +180,7 @@ RenderResult render_study(const Scene& scene, const RenderSettings& s,
   render_one(scene, s.width, s.height, s.sampling, s.filter, s.adaptive, r.image, r.stats,
              r.adaptive);
   if (s.measure) {
-    r.reference = references(scene, s.width, s.height, s.reference, r.image.offset);
+    r.reference = reference_of(references, scene, s.width, s.height, s.reference, r.image.offset);
     r.figures = measure(r.image, *r.reference);
   }
   return r;
@@ -196,8 +213,8 @@ std::vector<RenderGridCell> render_grid(const Scene& scene, const RenderGridSett
       auto it = reference_at.find(cell.image.offset);
       if (it == reference_at.end())
         it = reference_at
-                 .emplace(cell.image.offset,
-                          references(scene, s.width, s.height, s.reference, cell.image.offset))
+                 .emplace(cell.image.offset, reference_of(references, scene, s.width, s.height,
+                                                          s.reference, cell.image.offset))
                  .first;
       cell.figures = measure(cell.image, it->second);
       cells.push_back(std::move(cell));

@@ -206,7 +206,7 @@ std::string budget_section(const StudyResult& r, const BudgetStudy& b, const Stu
       const Image image = render(sc, s.size, s.size, sampling, std::nullopt);
       h += fmt::format(
           R"(<div style="display:inline-block;margin-right:10px"><div class="note">{}</div><img class="crop" alt="rendering" src="{}"> <img class="crop" alt="error" src="{}"></div>)",
-          xml_escape(p->name), png_uri(s.size, s.size, grey_pixels(image), 3),
+          xml_escape(p->name), png_uri(s.size, s.size, level_pixels(image), 3),
           png_uri(s.size, s.size, error_pixels(image, reference), 3));
     }
     h += "</div></figure>";

@@ -1,0 +1,292 @@
+#include "aapat/io/mesh_file.h"
+
+#include <assimp/MemoryIOWrapper.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <fmt/format.h>
+#include <assimp/IOSystem.hpp>
+#include <assimp/Importer.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+
+#include "aapat/analyze/color_image.h"
+#include "aapat/core/read_file.h"
+#include "aapat/io/jpeg_image.h"
+#include "aapat/io/png_image.h"
+
+namespace aapat {
+namespace {
+
+// Nodes deeper than this are refused: a hierarchy that deep is a loop or an attack.
+constexpr int kMaxNodeDepth = 256;
+
+std::array<std::shared_ptr<const TexturedSurface>, 3> channel_surfaces(const ColorImage& image,
+                                                                       const std::string& name) {
+  std::array<std::shared_ptr<const TexturedSurface>, 3> out;
+  for (int c = 0; c < 3; ++c) {
+    Texture t;
+    t.name = name;
+    t.width = image.width;
+    t.height = image.height;
+    t.texels.resize(image.pixels());
+    // ColorImage rows run from the top; a texture's row 0 is at the bottom (t up).
+    for (int j = 0; j < image.height; ++j)
+      for (int i = 0; i < image.width; ++i)
+        t.texels[static_cast<size_t>(image.height - 1 - j) * image.width + i] =
+            image.rgb[3 * (static_cast<size_t>(j) * image.width + i) + c];
+    validate(t, name);
+    out[static_cast<size_t>(c)] = std::make_shared<const TexturedSurface>(std::move(t));
+  }
+  return out;
+}
+
+// Every file assimp opens (the model, its .bin buffers, .mtl libraries)
+// passes through read_file: a regular file within the size limit, so that a
+// FIFO or a device named by a model blocks nothing. The first refusal is
+// kept for the error message.
+class CheckedFiles : public Assimp::IOSystem {
+ public:
+  // Anything that exists (a FIFO too) is opened, so that Open refuses it by name.
+  bool Exists(const char* file) const override {
+    std::error_code e;
+    return std::filesystem::exists(file, e);
+  }
+  char getOsSeparator() const override { return '/'; }
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    if (std::string_view(mode).find_first_of("wa+") != std::string_view::npos) return nullptr;
+    try {
+      const std::string bytes = read_file(file, "model file", kMaxModelFileBytes);
+      auto* copy = new uint8_t[bytes.size() + 1];
+      std::copy(bytes.begin(), bytes.end(), copy);
+      return new Assimp::MemoryIOStream(copy, bytes.size(), true);
+    } catch (const Error& e) {
+      if (refusal.empty()) refusal = e.what();
+      return nullptr;
+    }
+  }
+  void Close(Assimp::IOStream* stream) override { delete stream; }
+  std::string refusal;
+};
+
+// A texture file's bytes: JPEG or PNG, told apart by their first bytes.
+ColorImage decode_image(std::string_view bytes, const std::string& path, const std::string& what) {
+  return is_jpeg(bytes) ? decode_jpeg(bytes, path, what)
+                        : decode_png_color(bytes, path, what).image;
+}
+
+class Reader {
+ public:
+  Reader(const aiScene& scene, const std::string& path, bool linear_colours)
+      : scene_(scene), path_(path), linear_(linear_colours) {}
+
+  std::shared_ptr<const Mesh> read() {
+    auto mesh = std::make_shared<Mesh>();
+    mesh_ = mesh.get();
+    mesh_->name = path_;
+    for (unsigned k = 0; k < scene_.mNumMaterials; ++k) mesh_->materials.push_back(material(k));
+    if (mesh_->materials.empty()) mesh_->materials.push_back({"default", {1, 1, 1}, {}, ""});
+    if (!scene_.mRootNode) throw Error(fmt::format("model '{}': it has no root node", path_));
+    node(*scene_.mRootNode, aiMatrix4x4(), 0);
+    if (mesh_->triangles.empty())
+      throw Error(
+          fmt::format("model '{}': it has no triangles (only points, lines or nothing)", path_));
+    if (!any_uv_) mesh_->uv.clear();
+    if (!any_colour_) mesh_->colours.clear();
+    if (scene_.mNumCameras > 0) camera(*scene_.mCameras[0]);
+    return mesh;
+  }
+
+ private:
+  double colour(double v) const {
+    v = std::clamp(std::isfinite(v) ? v : 0.0, 0.0, 1.0);
+    return linear_ ? static_cast<double>(linear_to_srgb(static_cast<float>(v))) : v;
+  }
+
+  MeshMaterial material(unsigned k) {
+    const aiMaterial& m = *scene_.mMaterials[k];
+    MeshMaterial out;
+    aiString name;
+    if (m.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) out.name = name.C_Str();
+    aiColor4D c;
+    if (m.Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS ||
+        m.Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS)
+      out.base = {colour(c.r), colour(c.g), colour(c.b)};
+    aiString file;
+    if (m.GetTexture(aiTextureType_BASE_COLOR, 0, &file) == AI_SUCCESS ||
+        m.GetTexture(aiTextureType_DIFFUSE, 0, &file) == AI_SUCCESS) {
+      std::string ref = file.C_Str();
+      std::replace(ref.begin(), ref.end(), '\\', '/');  // OBJ files written on Windows
+      out.texture_name = ref;
+      try {
+        out.texture =
+            channel_surfaces(texture(ref), fmt::format("model '{}': texture '{}'", path_, ref));
+      } catch (const Error& e) {
+        mesh_->warnings.push_back(
+            fmt::format("material '{}': its texture is not used, its base colour stands in ({})",
+                        out.name, e.what()));
+      }
+    }
+    return out;
+  }
+
+  ColorImage texture(const std::string& ref) {
+    const std::string what = fmt::format("model '{}': texture", path_);
+    if (auto it = cache_.find(ref); it != cache_.end()) return it->second;
+    const aiTexture* embedded = scene_.GetEmbeddedTexture(ref.c_str());
+    ColorImage image;
+    if (embedded) {
+      if (embedded->mHeight == 0) {  // compressed bytes: a PNG or a JPEG
+        image = decode_image(
+            std::string_view(reinterpret_cast<const char*>(embedded->pcData), embedded->mWidth),
+            ref, what);
+      } else {
+        const size_t pixels = size_t{embedded->mWidth} * embedded->mHeight;
+        if (pixels > kMaxColorImagePixels)
+          throw Error(fmt::format("{} '{}': {}x{} texels, over the limit", what, ref,
+                                  embedded->mWidth, embedded->mHeight));
+        image = {static_cast<int>(embedded->mWidth), static_cast<int>(embedded->mHeight),
+                 std::vector<float>(3 * pixels)};
+        for (size_t p = 0; p < pixels; ++p) {
+          const aiTexel& t = embedded->pcData[p];
+          image.rgb[3 * p] = t.r / 255.0f;
+          image.rgb[3 * p + 1] = t.g / 255.0f;
+          image.rgb[3 * p + 2] = t.b / 255.0f;
+        }
+      }
+    } else {
+      const std::filesystem::path file =
+          std::filesystem::path(path_).parent_path() / std::filesystem::path(ref);
+      image = decode_image(read_file(file.string(), what, kMaxModelFileBytes), file.string(), what);
+    }
+    cache_[ref] = image;
+    return image;
+  }
+
+  void node(const aiNode& n, const aiMatrix4x4& parent, int depth) {
+    if (depth > kMaxNodeDepth)
+      throw Error(
+          fmt::format("model '{}': nodes nest deeper than {} (a loop?)", path_, kMaxNodeDepth));
+    const aiMatrix4x4 world = parent * n.mTransformation;
+    if (n.mName.length > 0) transforms_[n.mName.C_Str()] = world;
+    for (unsigned k = 0; k < n.mNumMeshes; ++k) {
+      if (n.mMeshes[k] >= scene_.mNumMeshes)
+        throw Error(fmt::format("model '{}': node '{}' names mesh {} of {}", path_, n.mName.C_Str(),
+                                n.mMeshes[k], scene_.mNumMeshes));
+      add(*scene_.mMeshes[n.mMeshes[k]], world);
+    }
+    for (unsigned k = 0; k < n.mNumChildren; ++k) node(*n.mChildren[k], world, depth + 1);
+  }
+
+  void add(const aiMesh& m, const aiMatrix4x4& world) {
+    const size_t base = mesh_->positions.size();
+    if (base + m.mNumVertices > kMaxMeshVertices)
+      throw Error(fmt::format("model '{}': more than {} vertices, the limit (docs/limits.md)",
+                              path_, kMaxMeshVertices));
+    for (unsigned v = 0; v < m.mNumVertices; ++v) {
+      const aiVector3D p = world * m.mVertices[v];
+      mesh_->positions.push_back({p.x, p.y, p.z});
+      if (m.HasTextureCoords(0)) {
+        mesh_->uv.push_back({m.mTextureCoords[0][v].x, m.mTextureCoords[0][v].y});
+        any_uv_ = true;
+      } else {
+        mesh_->uv.push_back({0, 0});
+      }
+      if (m.HasVertexColors(0)) {
+        const aiColor4D c = m.mColors[0][v];
+        mesh_->colours.push_back({colour(c.r), colour(c.g), colour(c.b)});
+        any_colour_ = true;
+      } else {
+        mesh_->colours.push_back({1, 1, 1});
+      }
+    }
+    if (m.mMaterialIndex >= std::max(1u, scene_.mNumMaterials))
+      throw Error(fmt::format("model '{}': mesh '{}' names material {} of {}", path_,
+                              m.mName.C_Str(), m.mMaterialIndex, scene_.mNumMaterials));
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+      const aiFace& face = m.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines
+      std::array<uint32_t, 3> t;
+      for (int k = 0; k < 3; ++k) {
+        if (face.mIndices[k] >= m.mNumVertices)
+          throw Error(fmt::format("model '{}': mesh '{}' face {} names vertex {} of {}", path_,
+                                  m.mName.C_Str(), f, face.mIndices[k], m.mNumVertices));
+        t[static_cast<size_t>(k)] = static_cast<uint32_t>(base + face.mIndices[k]);
+      }
+      if (mesh_->triangles.size() >= kMaxMeshTriangles)
+        throw Error(fmt::format("model '{}': more than {} triangles, the limit (docs/limits.md)",
+                                path_, kMaxMeshTriangles));
+      mesh_->triangles.push_back(t);
+      mesh_->material.push_back(m.mMaterialIndex);
+    }
+  }
+
+  void camera(const aiCamera& c) {
+    aiMatrix4x4 world;
+    if (auto it = transforms_.find(c.mName.C_Str()); it != transforms_.end()) world = it->second;
+    const aiVector3D eye = world * c.mPosition;
+    const aiVector3D target = world * (c.mPosition + c.mLookAt);
+    aiMatrix3x3 rotation(world);
+    const aiVector3D up = rotation * c.mUp;
+    // mHorizontalFOV is half the horizontal angle; the vertical angle follows
+    // from the aspect ratio (1 when the file gives none).
+    const double aspect = c.mAspect > 0 ? c.mAspect : 1.0;
+    const double fov = 2 * std::atan(std::tan(double(c.mHorizontalFOV)) / aspect) * 180 / kPi;
+    MeshCamera cam{{eye.x, eye.y, eye.z}, {target.x, target.y, target.z}, {up.x, up.y, up.z}, fov};
+    try {
+      validate(cam, "camera");
+      mesh_->camera = cam;
+    } catch (const Error& e) {
+      mesh_->warnings.push_back(fmt::format("its camera is not used ({})", e.what()));
+    }
+  }
+
+  const aiScene& scene_;
+  std::string path_;
+  bool linear_;
+  Mesh* mesh_ = nullptr;
+  bool any_uv_ = false, any_colour_ = false;
+  std::map<std::string, ColorImage> cache_;
+  std::map<std::string, aiMatrix4x4> transforms_;
+};
+
+}  // namespace
+
+std::shared_ptr<const Mesh> read_mesh(const std::string& path) {
+  std::error_code missing;
+  if (!std::filesystem::exists(path, missing))
+    throw Error(fmt::format("model '{}': no such file", path));
+  Assimp::Importer importer;
+  auto* files = new CheckedFiles;  // the importer owns it
+  importer.SetIOHandler(files);
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene = importer.ReadFile(
+      path, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  if (!scene) {
+    const std::string why = importer.GetErrorString();
+    if (!files->refusal.empty()) throw Error(fmt::format("model '{}': {}", path, files->refusal));
+    if (why.find("No meshes remaining") != std::string::npos)  // points and lines were dropped
+      throw Error(
+          fmt::format("model '{}': it has no triangles (only points, lines or nothing)", path));
+    throw Error(fmt::format("model '{}': assimp cannot read it ({})", path, why));
+  }
+  if (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)
+    throw Error(fmt::format("model '{}': incomplete (assimp read no complete scene)", path));
+  const std::string ext = std::filesystem::path(path).extension().string();
+  const bool gltf = ext == ".gltf" || ext == ".glb" || ext == ".GLTF" || ext == ".GLB";
+  std::shared_ptr<const Mesh> mesh;
+  try {
+    mesh = Reader(*scene, path, gltf).read();
+  } catch (const std::bad_alloc&) {
+    throw Error(fmt::format("model '{}': too large to hold in memory", path));
+  }
+  validate(*mesh, fmt::format("model '{}'", path));
+  return mesh;
+}
+
+}  // namespace aapat

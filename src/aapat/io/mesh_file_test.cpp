@@ -1,0 +1,161 @@
+// Model files from Debian's assimp-testmodels (scripts/install-deps.sh
+// installs it; nothing of it is in this repository).
+#include "aapat/io/mesh_file.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "aapat/io/mesh_scene.h"
+#include "testing/error_message.h"
+
+namespace aapat {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kModels = "/usr/share/assimp/models";
+
+std::string model(const std::string& relative) {
+  const fs::path p = kModels / relative;
+  if (!fs::exists(p))
+    ADD_FAILURE() << p
+                  << " is missing: install Debian's assimp-testmodels (scripts/install-deps.sh)";
+  return p.string();
+}
+
+// BoxTextured (glTF sample models): 24 vertices, 12 triangles, one material
+// (assimp adds a default one unused) whose base-colour texture is the
+// 211 x 211 Cesium logo.
+TEST(MeshFile, ReadsAglTFModelWithItsTexture) {
+  const auto m = read_mesh(model("glTF2/BoxTextured-glTF/BoxTextured.gltf"));
+  EXPECT_EQ(m->positions.size(), 24u);
+  EXPECT_EQ(m->triangles.size(), 12u);
+  ASSERT_EQ(m->uv.size(), 24u);
+  const MeshMaterial& mat = m->materials[m->material[0]];
+  for (uint32_t k : m->material) EXPECT_EQ(k, m->material[0]);
+  ASSERT_TRUE(mat.texture[0]);
+  EXPECT_EQ(mat.texture[0]->texture.width, 211);
+  EXPECT_EQ(mat.texture[0]->texture.height, 211);
+  EXPECT_TRUE(m->warnings.empty());
+}
+
+// The same model as .gltf with a .bin, as .glb and with its buffers embedded
+// in the JSON is the same mesh, bit for bit.
+TEST(MeshFile, OneModelInThreeContainers) {
+  const uint64_t gltf = content_hash(*read_mesh(model("glTF2/BoxTextured-glTF/BoxTextured.gltf")));
+  EXPECT_EQ(content_hash(*read_mesh(model("glTF2/BoxTextured-glTF-Binary/BoxTextured.glb"))), gltf);
+  EXPECT_EQ(content_hash(*read_mesh(model("glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf"))),
+            gltf);
+}
+
+// OBJ with an .mtl whose textures are JPEG files, some of them missing: the
+// present one is read, the missing ones leave a warning each.
+TEST(MeshFile, ReadsObjWithJpegTexturesAndWarnsOfMissingOnes) {
+  const auto m = read_mesh(model("OBJ/spider.obj"));
+  EXPECT_EQ(m->triangles.size(), 1368u);  // its 1368 faces are triangles
+  bool jpeg = false;
+  for (const MeshMaterial& mat : m->materials)
+    if (mat.texture[0] && mat.texture_name.ends_with("SpiderTex.jpg")) jpeg = true;
+  EXPECT_TRUE(jpeg);
+  for (const std::string& w : m->warnings) EXPECT_NE(w.find("not used"), std::string::npos) << w;
+}
+
+// Every malformed model of the package ends in an Error that names the file,
+// or loads as a valid mesh; none crashes, hangs or half-loads.
+TEST(MeshFile, MalformedModelsEndInACleanError) {
+  const char* files[] = {"glTF2/wrongTypes/badArray.gltf",
+                         "glTF2/wrongTypes/badExtension.gltf",
+                         "glTF2/wrongTypes/badNumber.gltf",
+                         "glTF2/wrongTypes/badObject.gltf",
+                         "glTF2/wrongTypes/badString.gltf",
+                         "glTF2/wrongTypes/badUint.gltf",
+                         "glTF2/IndexOutOfRange/IndexOutOfRange.gltf",
+                         "glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf",
+                         "glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb",
+                         "glTF2/MissingBin/BoxTextured.gltf",
+                         "glTF2/SchemaFailures/sceneWrongType.gltf",
+                         "glTF2/TestNoRootNode/NoScene.gltf",
+                         "glTF2/TestNoRootNode/SceneWithoutNodes.gltf",
+                         "glTF2/RecursiveNodes/RecursiveNodes.gltf",
+                         "glTF2/IncorrectVertexArrays/Cube.gltf",
+                         "glTF2/BoxBadNormals-glTF-Binary/BoxBadNormals.glb"};
+  int refused = 0;
+  for (const char* f : files) {
+    const std::string path = model(f);
+    const std::string message = testing::error_message([&] { read_mesh(path); });
+    if (message == "no error") continue;  // a correct mesh (validate passed)
+    ++refused;
+    EXPECT_EQ(message.rfind("model '" + path + "': ", 0), 0u) << message;
+  }
+  EXPECT_GE(refused, 10);  // most of them are refused, not silently read
+}
+
+// Every OBJ file of the package, edge cases included (UTF-16, no line
+// ending, points and lines only, concave polygons): a mesh or a clean Error.
+TEST(MeshFile, EveryObjEdgeCase) {
+  int read = 0;
+  for (const auto& entry : fs::directory_iterator(kModels / "OBJ")) {
+    if (entry.path().extension() != ".obj") continue;
+    const std::string path = entry.path().string();
+    const std::string message = testing::error_message([&] { read_mesh(path); });
+    if (message == "no error") {
+      ++read;
+    } else {
+      EXPECT_EQ(message.rfind("model '" + path + "': ", 0), 0u) << message;
+    }
+  }
+  EXPECT_GE(read, 15);
+}
+
+TEST(MeshFile, RefusesWhatIsNotAModelFile) {
+  EXPECT_EQ(testing::error_message([] { read_mesh("/nonexistent/m.obj"); }),
+            "model '/nonexistent/m.obj': no such file");
+  const fs::path dir = fs::temp_directory_path() / fmt::format("aapat-mesh-{}", getpid());
+  fs::create_directories(dir);
+  const std::string fifo = (dir / "fifo.obj").string();
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_NE(testing::error_message([&] { read_mesh(fifo); }).find("not a regular file"),
+            std::string::npos);
+  std::ofstream(dir / "points.obj") << "v 0 0 0\nv 1 0 0\np 1\np 2\n";
+  EXPECT_EQ(testing::error_message([&] { read_mesh((dir / "points.obj").string()); }),
+            fmt::format("model '{}': it has no triangles (only points, lines or nothing)",
+                        (dir / "points.obj").string()));
+  std::ofstream(dir / "nan.obj") << "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n";
+  EXPECT_NE(
+      testing::error_message([&] { read_mesh((dir / "nan.obj").string()); }).find("not finite"),
+      std::string::npos);
+  fs::remove_all(dir);
+}
+
+// A mesh scene file: the model beside it, the camera's fields checked.
+TEST(MeshFile, SceneFileNamesItsModelAndCamera) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("aapat-mesh-scene-{}", getpid());
+  fs::create_directories(dir);
+  fs::copy_file(model("OBJ/box.obj"), dir / "box.obj", fs::copy_options::overwrite_existing);
+  const std::string source = (dir / "s.json").string();
+  const MeshSceneSpec spec = mesh_scene_from_json(
+      R"({"mesh": "box.obj", "camera": {"yaw_deg": 10, "pitch_deg": 5, "fov_deg": 30}})", source);
+  EXPECT_EQ(spec.mesh->triangles.size(), 12u);
+  EXPECT_DOUBLE_EQ(spec.camera.fov_deg, 30);
+  EXPECT_EQ(testing::error_message([&] {
+              mesh_scene_from_json(R"({"mesh": "box.obj", "camera": {"pitch_deg": 95}})", source);
+            }),
+            fmt::format("scene file {}: camera.pitch_deg: 95 is outside [-89.9, 89.9]", source));
+  EXPECT_EQ(testing::error_message(
+                [&] { mesh_scene_from_json(R"({"mesh": "box.obj", "camera": "file"})", source); }),
+            fmt::format("scene file {}: camera: \"file\", but {} has no camera", source,
+                        (dir / "box.obj").string()));
+  EXPECT_EQ(testing::error_message(
+                [&] { mesh_scene_from_json(R"({"mesh": "box.obj", "lights": 1})", source); }),
+            fmt::format("scene file {}: unknown field 'lights' (expected format, mesh, camera, "
+                        "light, background)",
+                        source));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace aapat
