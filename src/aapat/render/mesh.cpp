@@ -218,9 +218,12 @@ std::shared_ptr<const MeshView> make_mesh_view(std::shared_ptr<const Mesh> mesh,
       view->triangles_.push_back(s);
     }
   }
-  // Bins over the image and a margin for the filters' reach.
+  // Bins over the image and a margin for the filters' reach, about two
+  // triangles' widths on a side where the model is dense, 2 to 32 pixels.
   constexpr double kMargin = 16;
-  view->bin_ = 8;
+  const double area = (width + 2 * kMargin) * (height + 2 * kMargin);
+  view->bin_ = std::clamp(
+      std::round(2 * std::sqrt(area / std::max<size_t>(1, view->triangles_.size()))), 2.0, 32.0);
   view->x0_ = -0.5 - kMargin;
   view->y0_ = -0.5 - kMargin;
   view->columns_ = static_cast<int>(std::ceil((width + 2 * kMargin) / view->bin_));
@@ -247,8 +250,18 @@ std::shared_ptr<const MeshView> make_mesh_view(std::shared_ptr<const Mesh> mesh,
   for (size_t b = 0; b < bins; ++b) count[b + 1] += count[b];
   view->bin_start_ = count;
   view->bin_items_.resize(count[bins]);
-  for (uint32_t k = 0; k < view->triangles_.size(); ++k)
-    for_bins(view->triangles_[k], [&](size_t b) { view->bin_items_[count[b]++] = k; });
+  for (uint32_t k = 0; k < view->triangles_.size(); ++k) {
+    const ScreenTriangle& s = view->triangles_[k];
+    const double nearest = std::max({s.inv_z[0], s.inv_z[1], s.inv_z[2]});
+    for_bins(s, [&](size_t b) { view->bin_items_[count[b]++] = {nearest, k}; });
+  }
+  for (size_t b = 0; b < bins; ++b)
+    std::sort(view->bin_items_.begin() + view->bin_start_[b],
+              view->bin_items_.begin() + view->bin_start_[b + 1],
+              [](const MeshView::BinItem& x, const MeshView::BinItem& y) {
+                return x.nearest_inv_z > y.nearest_inv_z ||
+                       (x.nearest_inv_z == y.nearest_inv_z && x.triangle < y.triangle);
+              });
   view->key_ = fmt::format(
       "mesh {:016x} eye {:.17g} {:.17g} {:.17g} target {:.17g} {:.17g} {:.17g} up {:.17g} "
       "{:.17g} {:.17g} fov {:.17g} light {:.17g} {:.17g} {:.17g} {:.17g} background {:.17g} "
@@ -273,7 +286,7 @@ MeshHit MeshView::hit(Vec2 p) const {
     if (!inside || area == 0) return;
     const double l0 = w0 / area, l1 = w1 / area, l2 = w2 / area;
     const double inv_z = l0 * s.inv_z[0] + l1 * s.inv_z[1] + l2 * s.inv_z[2];
-    if (inv_z > nearest) {  // k grows: an equal depth keeps the lower index
+    if (inv_z > nearest || (inv_z == nearest && static_cast<int>(k) < best.triangle)) {
       nearest = inv_z;
       best.triangle = static_cast<int>(k);
       best.l[0] = l0, best.l[1] = l1, best.l[2] = l2;
@@ -282,7 +295,10 @@ MeshHit MeshView::hit(Vec2 p) const {
   const double fx = std::floor((p.x - x0_) / bin_), fy = std::floor((p.y - y0_) / bin_);
   if (fx >= 0 && fy >= 0 && fx < columns_ && fy < rows_) {
     const size_t b = static_cast<size_t>(fy) * columns_ + static_cast<size_t>(fx);
-    for (uint32_t q = bin_start_[b]; q < bin_start_[b + 1]; ++q) test(bin_items_[q]);
+    for (uint32_t q = bin_start_[b]; q < bin_start_[b + 1]; ++q) {
+      if (bin_items_[q].nearest_inv_z < nearest) break;  // it and the rest lie behind the hit
+      test(bin_items_[q].triangle);
+    }
   } else {
     for (uint32_t k = 0; k < triangles_.size(); ++k) test(k);
   }

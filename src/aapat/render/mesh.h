@@ -145,11 +145,18 @@ class MeshView {
   std::shared_ptr<const Mesh> mesh_;
   MeshLight light_;
   std::vector<ScreenTriangle> triangles_;
-  // Bins of kBin x kBin pixels over the image and a margin; a point outside
-  // them scans every triangle.
+  // Square bins over the image and a margin, sized to the triangles' density;
+  // a point outside them scans every triangle. Each bin lists its triangles
+  // nearest first (by the largest 1/z of their vertices), so that a search
+  // stops at the first one that cannot be nearer than the hit it holds.
   double x0_ = 0, y0_ = 0, bin_ = 8;
   int columns_ = 0, rows_ = 0;
-  std::vector<uint32_t> bin_start_, bin_items_;
+  struct BinItem {
+    double nearest_inv_z;
+    uint32_t triangle;
+  };
+  std::vector<uint32_t> bin_start_;
+  std::vector<BinItem> bin_items_;
   std::string key_;
 };
 
