@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <mutex>
 
 #include "aapat/analyze/color_image.h"
 #include "aapat/core/read_file.h"
@@ -84,7 +85,7 @@ class Reader {
   Reader(const aiScene& scene, const std::string& path, bool linear_colours)
       : scene_(scene), path_(path), linear_(linear_colours) {}
 
-  std::shared_ptr<const Mesh> read() {
+  std::shared_ptr<Mesh> read() {
     auto mesh = std::make_shared<Mesh>();
     mesh_ = mesh.get();
     mesh_->name = path_;
@@ -134,7 +135,7 @@ class Reader {
     return out;
   }
 
-  ColorImage texture(const std::string& ref) {
+  const ColorImage& texture(const std::string& ref) {
     const std::string what = fmt::format("model '{}': texture", path_);
     if (auto it = cache_.find(ref); it != cache_.end()) return it->second;
     const aiTexture* embedded = scene_.GetEmbeddedTexture(ref.c_str());
@@ -163,8 +164,7 @@ class Reader {
           std::filesystem::path(path_).parent_path() / std::filesystem::path(ref);
       image = decode_image(read_file(file.string(), what, kMaxModelFileBytes), file.string(), what);
     }
-    cache_[ref] = image;
-    return image;
+    return cache_.emplace(ref, std::move(image)).first->second;
   }
 
   void node(const aiNode& n, const aiMatrix4x4& parent, int depth) {
@@ -256,10 +256,41 @@ class Reader {
 
 }  // namespace
 
+namespace {
+
+std::shared_ptr<const Mesh> load_mesh(const std::string& path);
+
+}  // namespace
+
 std::shared_ptr<const Mesh> read_mesh(const std::string& path) {
   std::error_code missing;
   if (!std::filesystem::exists(path, missing))
     throw Error(fmt::format("model '{}': no such file", path));
+  // The meshes read last, by path, size and modification time (a few are
+  // kept, so that a study's check of its scenes and its run share them).
+  constexpr size_t kKept = 4;
+  static std::mutex lock;
+  static std::vector<std::pair<std::string, std::shared_ptr<const Mesh>>> kept;
+  std::error_code e;
+  const auto size =
+      std::filesystem::is_regular_file(path, e) ? std::filesystem::file_size(path, e) : 0;
+  const auto time = std::filesystem::last_write_time(path, e).time_since_epoch().count();
+  const std::string key = fmt::format("{}\n{}\n{}", path, size, time);
+  {
+    std::lock_guard<std::mutex> hold(lock);
+    for (const auto& [k, mesh] : kept)
+      if (k == key) return mesh;
+  }
+  std::shared_ptr<const Mesh> mesh = load_mesh(path);
+  std::lock_guard<std::mutex> hold(lock);
+  kept.emplace_back(key, mesh);
+  if (kept.size() > kKept) kept.erase(kept.begin());
+  return mesh;
+}
+
+namespace {
+
+std::shared_ptr<const Mesh> load_mesh(const std::string& path) {
   Assimp::Importer importer;
   auto* files = new CheckedFiles;  // the importer owns it
   importer.SetIOHandler(files);
@@ -279,14 +310,17 @@ std::shared_ptr<const Mesh> read_mesh(const std::string& path) {
     throw Error(fmt::format("model '{}': incomplete (assimp read no complete scene)", path));
   const std::string ext = std::filesystem::path(path).extension().string();
   const bool gltf = ext == ".gltf" || ext == ".glb" || ext == ".GLTF" || ext == ".GLB";
-  std::shared_ptr<const Mesh> mesh;
+  std::shared_ptr<Mesh> mesh;
   try {
     mesh = Reader(*scene, path, gltf).read();
   } catch (const std::bad_alloc&) {
     throw Error(fmt::format("model '{}': too large to hold in memory", path));
   }
   validate(*mesh, fmt::format("model '{}'", path));
+  mesh->hash = content_hash(*mesh);
   return mesh;
 }
+
+}  // namespace
 
 }  // namespace aapat

@@ -1,5 +1,7 @@
 #include "aapat/io/reference_cache.h"
 
+#include "aapat/render/color_render.h"
+
 #include <fmt/format.h>
 
 #include <cstdlib>
@@ -42,7 +44,8 @@ ReferenceSource cached_references(std::string dir, Warn warn) {
                                                   const ReferenceSettings& r, double offset) {
     const std::string key = key_text(scene, width, height, r, offset);
     const std::string path = fmt::format("{}/reference-{:016x}.bin", dir, fnv1a(key));
-    const size_t bytes = sizeof(double) * static_cast<size_t>(width) * height;
+    const int channels = scene_channels(scene);
+    const size_t bytes = sizeof(double) * static_cast<size_t>(width) * height * channels;
     // The lookup is one work item (work/work_items.h), so that every process
     // of a cluster run agrees on whether the reference is rendered.
     const std::string head = std::string(kMagic) + key;
@@ -62,7 +65,7 @@ ReferenceSource cached_references(std::string dir, Warn warn) {
       return miss;
     });
     if (bytes > 0 && found.size() == bytes + 1 && found[0] == '\1') {
-      Image image{width, height, offset, std::vector<double>(static_cast<size_t>(width) * height)};
+      Image image{width, height, offset, std::vector<double>(bytes / sizeof(double)), channels};
       std::memcpy(image.values.data(), found.data() + 1, bytes);
       return image;
     }

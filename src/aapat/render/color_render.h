@@ -1,10 +1,6 @@
-// Colour renderings of a mesh scene: each channel is a grey scene
-// (MeshScene::channel), rendered by the same path as every grey scene with
-// the same samples, and the three images interleave into one of three
-// channels. A grey scene renders as itself.
+// Colour renderings: a mesh scene renders in colour (Image::channels 3, its
+// values R, G, B per pixel), every other scene in grey.
 #pragma once
-
-#include <functional>
 
 #include "aapat/render/renderer.h"
 
@@ -12,13 +8,8 @@ namespace aapat {
 
 // Whether the scene has colour (a mesh scene).
 bool is_colour(const Scene& scene);
-
-// The scene's channel c (0 red, 1 green, 2 blue); a grey scene is returned as is.
-Scene channel_scene(const Scene& scene, int c);
-
-// `render_channel` applied to each channel of a colour scene, the images
-// interleaved (channels = 3); applied once to a grey scene.
-Image render_channels(const Scene& scene, const std::function<Image(const Scene&)>& render_channel);
+// The channels its renderings have: 3 for a colour scene, else 1.
+int scene_channels(const Scene& scene);
 
 // Channel c of an image, as a grey image.
 Image channel_image(const Image& image, int c);

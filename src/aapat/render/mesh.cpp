@@ -266,10 +266,10 @@ std::shared_ptr<const MeshView> make_mesh_view(std::shared_ptr<const Mesh> mesh,
       "mesh {:016x} eye {:.17g} {:.17g} {:.17g} target {:.17g} {:.17g} {:.17g} up {:.17g} "
       "{:.17g} {:.17g} fov {:.17g} light {:.17g} {:.17g} {:.17g} {:.17g} background {:.17g} "
       "{:.17g} {:.17g} size {} {}",
-      content_hash(m), camera.eye.x, camera.eye.y, camera.eye.z, camera.target.x, camera.target.y,
-      camera.target.z, camera.up.x, camera.up.y, camera.up.z, camera.fov_deg, light.direction.x,
-      light.direction.y, light.direction.z, light.ambient, light.background[0], light.background[1],
-      light.background[2], width, height);
+      m.hash != 0 ? m.hash : content_hash(m), camera.eye.x, camera.eye.y, camera.eye.z,
+      camera.target.x, camera.target.y, camera.target.z, camera.up.x, camera.up.y, camera.up.z,
+      camera.fov_deg, light.direction.x, light.direction.y, light.direction.z, light.ambient,
+      light.background[0], light.background[1], light.background[2], width, height);
   return view;
 }
 

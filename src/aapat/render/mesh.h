@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "aapat/core/geometry.h"
+#include "aapat/render/scene.h"
 #include "aapat/render/texture_filter.h"
 
 namespace aapat {
@@ -38,8 +39,6 @@ inline Vec3 cross(Vec3 a, Vec3 b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 Vec3 normalized(Vec3 v);  // v / |v|; refuses a zero or non-finite vector
-
-using Rgb = std::array<double, 3>;
 
 // Limits of a model (docs/limits.md), checked before any work.
 inline constexpr size_t kMaxMeshTriangles = 4'000'000;
@@ -71,6 +70,9 @@ struct Mesh {
   std::vector<MeshMaterial> materials;
   std::optional<MeshCamera> camera;   // a camera stored in the file
   std::vector<std::string> warnings;  // what was read but not used (reported, not fatal)
+  // content_hash(*this) once the mesh is final (io/mesh_file.h sets it); 0:
+  // computed when a view needs it.
+  uint64_t hash = 0;
 };
 
 // Checks the limits, that every index is in range and every value finite;

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "aapat/core/filter_catalog.h"
+#include "aapat/render/color_render.h"
 #include "aapat/work/byte_codec.h"
 #include "aapat/work/work_items.h"
 
@@ -29,8 +30,8 @@ Image render_reference(const Scene& scene, int width, int height, const Referenc
     w.put_all(part.values);
     return w.take();
   });
-  Image img{width, height, offset, {}};
-  img.values.reserve(static_cast<size_t>(width) * height);
+  Image img{width, height, offset, {}, scene_channels(scene)};
+  img.values.reserve(static_cast<size_t>(width) * height * static_cast<size_t>(img.channels));
   for (const std::string& band : rows) {
     ByteReader reader(band);
     const std::vector<double> values = reader.get_all<double>();

@@ -8,13 +8,16 @@
 #include <cmath>
 
 #include "aapat/generate/point_generators.h"
+#include "aapat/render/color_render.h"
 #include "aapat/render/surface.h"
 
 namespace aapat {
 namespace {
 
+// A sample's value: a grey scene's in value[0], a colour scene's in all three.
 struct Sample {
-  double x, y, value;
+  double x, y;
+  Rgb value;
 };
 
 // What rendering counted: texture lookups and shading evaluations.
@@ -31,7 +34,8 @@ class PixelSampler {
         s_(s),
         generator_(s.pattern ? PointGenerator{} : make_point_generator(s.generator)),
         footprint_(1 / std::sqrt(s.pattern ? samples_per_pixel(*s.pattern) : double(s.samples))),
-        plain_(s.shading.exact() && !has_texture(scene)) {}
+        plain_(s.shading.exact() && !has_texture(scene)),
+        colour_(is_colour(scene)) {}
 
   // `counts`, when given, gains the lookups and shadings (callers count each
   // image pixel once, though blocks draw their neighbours' samples too).
@@ -42,15 +46,15 @@ class PixelSampler {
       for (const Vec2& v : p.sets[set_index(p, a, b)]) {
         if (p.footprint.plus && (v.x > 0.5 - kSameSampleEps || v.y > 0.5 - kSameSampleEps))
           continue;
-        out.push_back({a + v.x, b + v.y, 0});
+        out.push_back({a + v.x, b + v.y, {}});
       }
     } else {
       for (const Vec2& v : pixel_points(generator_, s_.samples, s_.seed, a, b))
-        out.push_back({a + v.x, b + v.y, 0});
+        out.push_back({a + v.x, b + v.y, {}});
     }
     const Shading& sh = s_.shading;
     if (plain_) {  // no texture to look up: the scene's value at every sample
-      for (Sample& smp : out) smp.value = shade(scene_, {smp.x, smp.y});
+      for (Sample& smp : out) smp.value = value({smp.x, smp.y});
       if (counts) counts->shadings += out.size();
       return;
     }
@@ -58,7 +62,7 @@ class PixelSampler {
     int lookups = 0;
     if (sh.mode == ShadingMode::supersample) {
       for (Sample& smp : out)
-        smp.value = shade_primitive(scene_, primitive_at(scene_, {smp.x, smp.y}), {smp.x, smp.y},
+        smp.value = primitive_value(primitive_at(scene_, {smp.x, smp.y}), {smp.x, smp.y},
                                     sh.texture, footprint_, &lookups);
       shadings = out.size();
     } else {
@@ -79,7 +83,7 @@ class PixelSampler {
             if (primitives_[q] == primitives_[k]) sum.x += out[q].x, sum.y += out[q].y, ++covered;
           at = {sum.x / covered, sum.y / covered};
         }
-        const double value = shade_primitive(scene_, primitives_[k], at, sh.texture, 1, &lookups);
+        const Rgb value = primitive_value(primitives_[k], at, sh.texture, 1, &lookups);
         ++shadings;
         for (size_t q = k; q < out.size(); ++q)
           if (primitives_[q] == primitives_[k]) out[q].value = value;
@@ -92,11 +96,21 @@ class PixelSampler {
   }
 
  private:
+  Rgb value(Vec2 p) const {
+    if (colour_) return shade_colour(scene_, p);
+    return {shade(scene_, p), 0, 0};
+  }
+  Rgb primitive_value(int primitive, Vec2 p, const TextureFilter& filter, double footprint,
+                      int* lookups) const {
+    if (colour_) return shade_primitive_colour(scene_, primitive, p, filter, footprint, lookups);
+    return {shade_primitive(scene_, primitive, p, filter, footprint, lookups), 0, 0};
+  }
+
   const Scene& scene_;
   const Sampling& s_;
   PointGenerator generator_;
   double footprint_;
-  bool plain_;
+  bool plain_, colour_;
 };
 
 // The pattern's kernels read samples of several pixels; with a shading other
@@ -115,7 +129,7 @@ class OwnedSampleCache {
         filled_(slots_.size(), false),
         counts_(counts) {}
 
-  double value(Vec2 q) {
+  const Rgb& value(Vec2 q) {
     // The pixel that holds q inside [-1/2, 1/2); a pattern that is not of a
     // sharing family may own a sample on its +1/2 border instead.
     const int a0 = static_cast<int>(std::floor(q.x + 0.5 + kSameSampleEps));
@@ -191,7 +205,9 @@ Image render_band(const Scene& scene, int width, int height, const Sampling& s,
     throw Error(fmt::format("render: rows {} to {} of {} are not a band of whole blocks", row_begin,
                             row_end, height));
   const int rows = row_end - row_begin;
-  Image img{width, rows, 0.0, std::vector<double>(static_cast<size_t>(width) * rows)};
+  const int n = scene_channels(scene);  // 1 grey, 3 colour
+  const auto nc = static_cast<size_t>(n);
+  Image img{width, rows, 0.0, std::vector<double>(static_cast<size_t>(width) * rows * nc), n};
   const PixelSampler sampler(scene, s);
   Counts counts;
   const bool plain = s.shading.exact() && !has_texture(scene);  // nothing to count but samples
@@ -213,12 +229,18 @@ Image render_band(const Scene& scene, int width, int height, const Sampling& s,
       OwnedSampleCache owned(sampler, j, width, reach, counts);
       for (int i = 0; i < width; ++i) {
         const Kernel& k = kernels[set_index(p, i, j)];
-        double v = 0;
+        Rgb v{0, 0, 0};
         for (int r = 0; r < k.size(); ++r) {
           const Vec2 q{i + img.offset + k.x[r], j + img.offset + k.y[r]};
-          v += k.w[r] * (plain ? shade(scene, q) : owned.value(q));
+          if (n == 1) {
+            v[0] += k.w[r] * (plain ? shade(scene, q) : owned.value(q)[0]);
+          } else {
+            const Rgb c = plain ? shade_colour(scene, q) : owned.value(q);
+            for (size_t ch = 0; ch < 3; ++ch) v[ch] += k.w[r] * c[ch];
+          }
         }
-        img.values[static_cast<size_t>(j) * width + i] = v;
+        for (size_t ch = 0; ch < nc; ++ch)
+          img.values[(static_cast<size_t>(j) * width + i) * nc + ch] = v[ch];
       }
     });
   } else {
@@ -230,7 +252,8 @@ Image render_band(const Scene& scene, int width, int height, const Sampling& s,
     constexpr int kBlock = kRenderBlockRows;
     tbb::parallel_for(0, (rows + kBlock - 1) / kBlock, [&](int block) {
       const int j0 = row_begin + block * kBlock, j1 = std::min(row_end, j0 + kBlock);
-      std::vector<double> sum(static_cast<size_t>(j1 - j0) * width, 0.0), weight(sum.size(), 0.0);
+      std::vector<double> sum(static_cast<size_t>(j1 - j0) * width * nc, 0.0),
+          weight(static_cast<size_t>(j1 - j0) * width, 0.0);
       std::vector<Sample> samples;
       std::vector<double> hx(2 * reach + 1), hy(2 * reach + 1);
       for (int b = j0 - reach; b < j1 + reach; ++b)
@@ -245,11 +268,12 @@ Image render_band(const Scene& scene, int width, int height, const Sampling& s,
             for (int j = j_lo; j <= j_hi; ++j) hy[j - j_lo] = filter->value(smp.y - j - offset);
             for (int j = j_lo; j <= j_hi; ++j) {
               if (hy[j - j_lo] == 0) continue;
-              double* srow = &sum[static_cast<size_t>(j - j0) * width];
+              double* srow = &sum[static_cast<size_t>(j - j0) * width * nc];
               double* wrow = &weight[static_cast<size_t>(j - j0) * width];
               for (int i = i_lo; i <= i_hi; ++i) {
                 const double w = hx[i - i_lo] * hy[j - j_lo];
-                srow[i] += w * smp.value;
+                for (size_t ch = 0; ch < nc; ++ch)
+                  srow[static_cast<size_t>(i) * nc + ch] += w * smp.value[ch];
                 wrow[i] += w;
               }
             }
@@ -258,8 +282,9 @@ Image render_band(const Scene& scene, int width, int height, const Sampling& s,
       for (int j = j0; j < j1; ++j)
         for (int i = 0; i < width; ++i) {
           const size_t k = static_cast<size_t>(j - j0) * width + i;
-          img.values[static_cast<size_t>(j - row_begin) * width + i] =
-              weight[k] != 0 ? sum[k] / weight[k] : 0.0;
+          for (size_t ch = 0; ch < nc; ++ch)
+            img.values[(static_cast<size_t>(j - row_begin) * width + i) * nc + ch] =
+                weight[k] != 0 ? sum[k * nc + ch] / weight[k] : 0.0;
         }
     });
   }

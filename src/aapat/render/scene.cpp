@@ -295,7 +295,8 @@ std::string canonical_text(const Scene& scene) {
               }
             }
           },
-          [&](const MeshScene& s) { t += fmt::format("{} channel {}", s.view->key(), s.channel); }},
+          // The channel is not part of it: a mesh scene renders all three.
+          [&](const MeshScene& s) { t += s.view->key(); }},
       scene.shape);
   return t;
 }

@@ -5,6 +5,7 @@
 // its centre (i, j); x grows right and y up, row 0 at the bottom.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -85,11 +86,12 @@ void index_shapes(ShapesScene& scene);
 // The last shape in painting order that holds scene point p, or -1.
 int top_shape_at(const ShapesScene& scene, Vec2 p);
 
-// A triangle mesh through a camera (render/mesh.h), in colour: one channel
-// (0 red, 1 green, 2 blue) is the scene's value, so that every grey
-// rendering path applies to each channel unchanged and a colour image is its
-// three channels' renderings (render/color_render.h).
+// A triangle mesh through a camera (render/mesh.h), in colour: render()
+// gives its three channels at once (one coverage test and one interpolation
+// per sample for all three); the grey functions (shade, shade_primitive)
+// give `channel` (0 red, 1 green, 2 blue).
 class MeshView;
+using Rgb = std::array<double, 3>;  // display values in [0, 1]
 struct MeshScene {
   std::shared_ptr<const MeshView> view;
   int channel = 0;

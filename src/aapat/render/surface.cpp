@@ -132,10 +132,10 @@ const TexturedSurface* texture_of(const Scene& scene, int primitive) {
   return nullptr;
 }
 
-// A mesh channel's value at p on `primitive`: the material's base times the
-// vertex colour times the texture, times the triangle's light.
-double shade_mesh(const Scene& scene, const MeshScene& mesh, int primitive, Vec2 image_point,
-                  const TextureFilter& filter, double footprint, int* lookups);
+// A mesh's colour at p on `primitive`: the material's base times the vertex
+// colour times the texture, times the triangle's light.
+Rgb shade_mesh(const Scene& scene, const MeshScene& mesh, int primitive, Vec2 image_point,
+               const TextureFilter& filter, double footprint, int* lookups);
 
 }  // namespace
 
@@ -199,7 +199,8 @@ std::optional<TextureCoordinates> texture_coordinates(const Scene& scene, int pr
 double shade_primitive(const Scene& scene, int primitive, Vec2 image_point,
                        const TextureFilter& filter, double footprint, int* lookups) {
   if (const auto* mesh = std::get_if<MeshScene>(&scene.shape))
-    return shade_mesh(scene, *mesh, primitive, image_point, filter, footprint, lookups);
+    return shade_mesh(scene, *mesh, primitive, image_point, filter, footprint,
+                      lookups)[static_cast<size_t>(mesh->channel)];
   if (const TexturedSurface* surface = texture_of(scene, primitive)) {
     const double grey =
         std::holds_alternative<ShapesScene>(scene.shape)
@@ -231,32 +232,53 @@ double shade_primitive(const Scene& scene, int primitive, Vec2 image_point,
 
 namespace {
 
-double shade_mesh(const Scene& scene, const MeshScene& mesh, int primitive, Vec2 image_point,
-                  const TextureFilter& filter, double footprint, int* lookups) {
+Rgb shade_mesh(const Scene& scene, const MeshScene& mesh, int primitive, Vec2 image_point,
+               const TextureFilter& filter, double footprint, int* lookups) {
   const MeshView& view = *mesh.view;
-  const auto c = static_cast<size_t>(mesh.channel);
-  if (primitive <= 0) return view.light().background[c];
+  if (primitive <= 0) return view.light().background;
   const MeshMaterial& material = view.material(primitive - 1);
-  double value = material.base[c] * view.triangles()[static_cast<size_t>(primitive - 1)].light;
+  const double light = view.triangles()[static_cast<size_t>(primitive - 1)].light;
+  Rgb value{material.base[0] * light, material.base[1] * light, material.base[2] * light};
   if (!view.mesh().colours.empty()) {
     const Vec2 p = scene.view.identity() ? image_point : scene.view.to_scene(image_point);
     const MeshView::Weights w = view.weights(primitive - 1, p);
     const auto& tri =
         view.mesh().triangles[view.triangles()[static_cast<size_t>(primitive - 1)].source];
-    double colour = 0;
-    for (int m = 0; m < 3; ++m) colour += w.w[m] * view.mesh().colours[tri[m]][c];
-    value *= colour;
+    for (size_t c = 0; c < 3; ++c) {
+      double colour = 0;
+      for (int m = 0; m < 3; ++m) colour += w.w[m] * view.mesh().colours[tri[m]][c];
+      value[c] *= colour;
+    }
   }
-  if (const TexturedSurface* surface = texture_of(scene, primitive)) {
+  if (!view.mesh().uv.empty() && material.texture[0]) {
     auto t = texture_coordinates(scene, primitive, image_point);
     t->j = {t->j.dsdx * footprint, t->j.dtdx * footprint, t->j.dsdy * footprint,
             t->j.dtdy * footprint};
-    value *= filtered_value(*surface, filter, t->s, t->t, t->j, lookups);
+    for (size_t c = 0; c < 3; ++c)
+      value[c] *= filtered_value(*material.texture[c], filter, t->s, t->t, t->j,
+                                 c == 0 ? lookups : nullptr);
   }
-  return std::clamp(value, 0.0, 1.0);
+  for (double& v : value) v = std::clamp(v, 0.0, 1.0);
+  return value;
 }
 
 }  // namespace
+
+Rgb shade_primitive_colour(const Scene& scene, int primitive, Vec2 p, const TextureFilter& filter,
+                           double footprint, int* lookups) {
+  if (const auto* mesh = std::get_if<MeshScene>(&scene.shape))
+    return shade_mesh(scene, *mesh, primitive, p, filter, footprint, lookups);
+  const double v = shade_primitive(scene, primitive, p, filter, footprint, lookups);
+  return {v, v, v};
+}
+
+Rgb shade_colour(const Scene& scene, Vec2 p) {
+  static const TextureFilter kExact;
+  if (std::holds_alternative<MeshScene>(scene.shape))
+    return shade_primitive_colour(scene, primitive_at(scene, p), p, kExact);
+  const double v = shade(scene, p);
+  return {v, v, v};
+}
 
 bool has_texture(const Scene& scene) {
   if (const auto* mesh = std::get_if<MeshScene>(&scene.shape))

@@ -26,6 +26,14 @@ int primitive_at(const Scene& scene, Vec2 p);
 double shade_primitive(const Scene& scene, int primitive, Vec2 p, const TextureFilter& filter,
                        double footprint = 1, int* lookups = nullptr);
 
+// The colour of `primitive` at p, as shade_primitive: a mesh scene's three
+// channels at once (lookups counted once, for the red channel's texture);
+// a grey scene's value in all three.
+Rgb shade_primitive_colour(const Scene& scene, int primitive, Vec2 p, const TextureFilter& filter,
+                           double footprint = 1, int* lookups = nullptr);
+// The colour at p with exact texels, as shade.
+Rgb shade_colour(const Scene& scene, Vec2 p);
+
 // Whether any primitive's value varies over it (a texture, the zone plate):
 // only then do multisampling and supersampling differ.
 bool has_shading(const Scene& scene);

@@ -60,12 +60,12 @@ double Texture::exact(double s, double t) const {
 }
 
 uint64_t Texture::content_hash() const {
+  // A word at a time (a multiply and a shift each), not FNV's byte at a
+  // time: a model's 2048 x 2048 texture is 4M texels a channel.
   uint64_t h = 1469598103934665603ull;
   auto mix = [&](uint64_t v) {
-    for (int b = 0; b < 8; ++b) {
-      h ^= (v >> (8 * b)) & 0xff;
-      h *= 1099511628211ull;
-    }
+    h = (h ^ v) * 0x9E3779B97F4A7C15ull;
+    h ^= h >> 29;
   };
   mix(static_cast<uint64_t>(width));
   mix(static_cast<uint64_t>(height));

@@ -27,7 +27,7 @@ struct Texture {
   double at(int i, int j) const;
   // The exact value at (s, t) in texel units: the texel that holds the point.
   double exact(double s, double t) const;
-  // FNV-1a of the size and the texels' bits: the reference cache's key.
+  // A 64-bit hash of the size and the texels' bits: the reference cache's key.
   uint64_t content_hash() const;
 };
 

@@ -108,9 +108,13 @@ double trilinear(const Mipmap& m, double level, double s, double t) {
 }
 
 TexturedSurface::TexturedSurface(Texture t)
-    : texture(std::move(t)),
-      box(build_mipmap(texture, MipmapKind::box)),
-      gaussian(build_mipmap(texture, MipmapKind::gaussian)) {}
+    : texture(std::move(t)), box(build_mipmap(texture, MipmapKind::box)) {}
+
+const Mipmap& TexturedSurface::pyramid(MipmapKind kind) const {
+  if (kind == MipmapKind::box) return box;
+  std::call_once(gaussian_built_, [&] { gaussian_ = build_mipmap(texture, MipmapKind::gaussian); });
+  return gaussian_;
+}
 
 double filtered_value(const TexturedSurface& surface, const TextureFilter& filter, double s,
                       double t, const TextureJacobian& j, int* probes) {

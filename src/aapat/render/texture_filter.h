@@ -10,6 +10,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -65,12 +66,18 @@ TextureFilter make_texture_filter(std::string_view spec, LodFormula lod = LodFor
 LodFormula parse_lod_formula(std::string_view text);  // "max" or "root-sum-squares"
 MipmapKind parse_mipmap_kind(std::string_view text);  // "box" or "gaussian"
 
-// A texture with both pyramids, built once and shared by every sample.
+// A texture with its pyramids, shared by every sample: the box pyramid built
+// with it, the Gaussian one on first use (most renderings never ask for it,
+// and a model's large textures would pay for it three times, once a channel).
 struct TexturedSurface {
   Texture texture;
-  Mipmap box, gaussian;
+  Mipmap box;
   explicit TexturedSurface(Texture t);
-  const Mipmap& pyramid(MipmapKind kind) const { return kind == MipmapKind::box ? box : gaussian; }
+  const Mipmap& pyramid(MipmapKind kind) const;
+
+ private:
+  mutable std::once_flag gaussian_built_;
+  mutable Mipmap gaussian_;
 };
 
 // The filtered value at (s, t) with the footprint `j`; `probes`, when given,

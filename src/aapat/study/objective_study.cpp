@@ -17,7 +17,6 @@
 #include "aapat/io/scene_json.h"
 #include "aapat/optimize/family.h"
 #include "aapat/optimize/multistart.h"
-#include "aapat/render/color_render.h"
 #include "aapat/render/image_error.h"
 #include "aapat/render/image_flip.h"
 #include "aapat/render/renderer.h"
@@ -123,9 +122,7 @@ StudyMeasures render_measures(const Pattern& p, const std::vector<Scene>& frames
   ImageError total;
   double pixels = 0, ssim_sum = 0, flip_sum = 0;
   for (size_t f = 0; f < frames.size(); ++f) {
-    const Image image = render_channels(frames[f], [&](const Scene& channel) {
-      return render(channel, size, size, sampling, std::nullopt);
-    });
+    const Image image = render(frames[f], size, size, sampling, std::nullopt);
     const ImageError e = compare(image, references[f]);
     for (int i = 0; i < 256; ++i) total.count[i] += e.count[i];
     total.max_deviation = std::max(total.max_deviation, e.max_deviation);
@@ -195,14 +192,9 @@ SceneFrames scene_frames(const StudySettings& s, const ReferenceSource& referenc
     for (size_t f = 0; f < out.frames.back().size(); ++f) {
       ReferenceSettings ref = s.reference;
       ref.seed = frame_reference_seed(ref.seed, static_cast<int>(f));
-      // A mesh view's reference is its three channels' (render/color_render.h).
-      auto reference_at = [&](double offset) {
-        return render_channels(out.frames.back()[f], [&](const Scene& channel) {
-          return references(channel, s.size, s.size, ref, offset);
-        });
-      };
-      out.references.back().push_back(reference_at(0));
-      if (shifted) out.shifted.back().push_back(reference_at(0.5));
+      out.references.back().push_back(references(out.frames.back()[f], s.size, s.size, ref, 0));
+      if (shifted)
+        out.shifted.back().push_back(references(out.frames.back()[f], s.size, s.size, ref, 0.5));
     }
     if (progress)
       progress(static_cast<int>(sc + 1), static_cast<int>(s.scenes.size()), "references");

@@ -147,13 +147,7 @@ void render_one(const Scene& scene, int width, int height, const Sampling& sampl
                 const std::optional<AdaptiveSettings>& adaptive, Image& image, RenderStats& stats,
                 std::optional<AdaptiveImage>& refined) {
   if (!adaptive) {
-    bool first = true;  // the red channel's counts stand for the pixel's
-    image = render_channels(scene, [&](const Scene& channel) {
-      RenderStats channel_stats;
-      Image part = render(channel, width, height, sampling, filter, &channel_stats);
-      if (first) stats = channel_stats, first = false;
-      return part;
-    });
+    image = render(scene, width, height, sampling, filter, &stats);
     return;
   }
   if (is_colour(scene))
@@ -164,14 +158,6 @@ void render_one(const Scene& scene, int width, int height, const Sampling& sampl
   stats.shadings_per_pixel = double(refined->evaluations) / (double(width) * height);
 }
 
-// The reference of every channel (each cached on its own).
-Image reference_of(const ReferenceSource& references, const Scene& scene, int width, int height,
-                   const ReferenceSettings& settings, double offset) {
-  return render_channels(scene, [&](const Scene& channel) {
-    return references(channel, width, height, settings, offset);
-  });
-}
-
 }  // namespace
 
 RenderResult render_study(const Scene& scene, const RenderSettings& s,
@@ -180,7 +166,7 @@ RenderResult render_study(const Scene& scene, const RenderSettings& s,
   render_one(scene, s.width, s.height, s.sampling, s.filter, s.adaptive, r.image, r.stats,
              r.adaptive);
   if (s.measure) {
-    r.reference = reference_of(references, scene, s.width, s.height, s.reference, r.image.offset);
+    r.reference = references(scene, s.width, s.height, s.reference, r.image.offset);
     r.figures = measure(r.image, *r.reference);
   }
   return r;
@@ -213,8 +199,8 @@ std::vector<RenderGridCell> render_grid(const Scene& scene, const RenderGridSett
       auto it = reference_at.find(cell.image.offset);
       if (it == reference_at.end())
         it = reference_at
-                 .emplace(cell.image.offset, reference_of(references, scene, s.width, s.height,
-                                                          s.reference, cell.image.offset))
+                 .emplace(cell.image.offset,
+                          references(scene, s.width, s.height, s.reference, cell.image.offset))
                  .first;
       cell.figures = measure(cell.image, it->second);
       cells.push_back(std::move(cell));
