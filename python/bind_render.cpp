@@ -14,11 +14,23 @@ namespace aapat::python {
 namespace {
 
 // Rows top-down, as images are shown (the renderer's row 0 is the bottom).
+// Rows from the top; a colour rendering (a mesh scene) is (h, w, 3).
 Array image_array(const Image& img) {
-  Array a({static_cast<py::ssize_t>(img.height), static_cast<py::ssize_t>(img.width)});
-  auto w = a.mutable_unchecked<2>();
+  if (img.channels == 1) {
+    Array a({static_cast<py::ssize_t>(img.height), static_cast<py::ssize_t>(img.width)});
+    auto w = a.mutable_unchecked<2>();
+    for (int j = 0; j < img.height; ++j)
+      for (int i = 0; i < img.width; ++i) w(img.height - 1 - j, i) = img.at(i, j);
+    return a;
+  }
+  Array a({static_cast<py::ssize_t>(img.height), static_cast<py::ssize_t>(img.width),
+           static_cast<py::ssize_t>(img.channels)});
+  auto w = a.mutable_unchecked<3>();
   for (int j = 0; j < img.height; ++j)
-    for (int i = 0; i < img.width; ++i) w(img.height - 1 - j, i) = img.at(i, j);
+    for (int i = 0; i < img.width; ++i)
+      for (int c = 0; c < img.channels; ++c)
+        w(img.height - 1 - j, i, c) =
+            img.values[(static_cast<size_t>(j) * img.width + i) * img.channels + c];
   return a;
 }
 

@@ -266,3 +266,24 @@ def test_render_flip_is_aapat_diff_of_its_files(aapat_cli, tmp_path):
     diffed = cli_json(aapat_cli, "diff", reference, image)
     assert rendered["flip"] == diffed["flip"]
     assert abs(rendered["ssim"] - diffed["ssim"]) < 1e-12
+
+
+def test_a_mesh_view_renders_in_colour_on_both_faces(aapat_cli, tmp_path):
+    """A mesh scene (data/mesh-views, a model of Debian's assimp-testmodels):
+    the same document from both faces, an (h, w, 3) image, and figures that
+    are `aapat diff`'s of the colour files it writes."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    view = os.path.join(here, "..", "..", "data", "mesh-views", "box-textured.json")
+    image, reference = str(tmp_path / "image.png"), str(tmp_path / "reference.png")
+    cli = cli_json(aapat_cli, "render", view, "--pattern", "aapat-4", "--size", "40x32",
+                   "--reference-samples", "16", "--no-cache", "-o", image, "--reference",
+                   reference)
+    py = aapat.render(view, pattern="aapat-4", size=(40, 32), reference=True,
+                      reference_samples=16)
+    assert py["image"].shape == (32, 40, 3)
+    assert {k: v for k, v in py.items() if k not in ("image", "reference_image")} == cli
+    assert np.array_equal(np.round(py["image"] * 255), np.round(aapat.read_image(image) * 255))
+    diffed = cli_json(aapat_cli, "diff", reference, image)
+    assert cli["flip"] == diffed["flip"]
+    assert cli["rmse"] == diffed["rmse"]  # both on the 8-bit levels
+    assert abs(cli["ssim"] - diffed["ssim"]) < 1e-12

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "aapat/render/image_error.h"
 #include "aapat/render/ssim.h"
 
 namespace aapat {
@@ -22,7 +23,8 @@ ImageDiff image_diff(const ColorImage& reference, const ColorImage& test, double
   d.flip = flip(reference, test, ppd);  // checks the sizes and ppd first
   double sum = 0;
   for (size_t k = 0; k < reference.rgb.size(); ++k) {
-    const double e = 255.0 * (static_cast<double>(test.rgb[k]) - reference.rgb[k]);
+    // On the files' 8-bit levels, as the renderer's RMSE (render/image_error.h).
+    const double e = grey_level(test.rgb[k]) - grey_level(reference.rgb[k]);
     sum += e * e;
   }
   d.rmse = std::sqrt(sum / static_cast<double>(reference.rgb.size()));
