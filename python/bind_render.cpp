@@ -4,8 +4,8 @@
 #include <fmt/ranges.h>
 
 #include "aapat/analyze/flip.h"
-#include "aapat/io/png_image.h"
 #include "aapat/core/filter_catalog.h"
+#include "aapat/io/png_image.h"
 #include "aapat/io/scene_json.h"
 #include "aapat/study/study_json.h"
 #include "bindings.h"

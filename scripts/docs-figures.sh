@@ -57,6 +57,13 @@ done
 # Which objective predicts rendered error: 30+ patterns at 2, 4 and 8 samples per pixel.
 "$aapat" study --budgets 2,4,8 --patterns 30 --table docs/study-correlations.md \
   --csv docs/study-correlations.csv --html docs/study-report.html >/dev/null
+# The same study on real models in colour: the six mesh views at 128x128
+# (data/mesh-views, Debian's assimp-testmodels; docs/perceptual.md).
+# Run from the root, so that the tables name the views by their relative paths.
+docs_out=$(pwd)
+(cd "$root" && "$aapat" study --budgets 2,4,8 --patterns 30 --size 128 \
+  --scenes data/mesh-views/*.json --table "$docs_out/docs/study-meshes.md" \
+  --csv "$docs_out/docs/study-meshes.csv" >/dev/null)
 # The aapat catalog against the published and standard patterns of each cost.
 AAPAT="$aapat" "$root/scripts/catalog-table.sh" docs/catalog-table.md >/dev/null
 # Jitter and alternating-MSAA sequences under box, EMA and EMA + resolve, and rendered TAA.
@@ -74,6 +81,20 @@ flip_tmp=$(mktemp -d)
       python3 -c "import json,sys; d=json.load(sys.stdin); print('$p,%.3f,%.6f,%.4f' % (d['rmse'], d['flip'], d['flip_weighted_median']))"
   done
 } > docs/flip-zoneplate.csv
+# The same pair on a mesh view (docs/perceptual.md): FLIP maps side by side.
+view="$root/data/mesh-views/truck-three-quarter.json"
+"$aapat" render "$view" --pattern msaa-8 --size 128x128 --reference-samples 256 \
+  -o "$flip_tmp/mesh-msaa-8.png" --reference "$flip_tmp/mesh-reference.png" >/dev/null
+"$aapat" render "$view" --pattern aapat-8 --size 128x128 -o "$flip_tmp/mesh-aapat-8.png" >/dev/null
+cp "$flip_tmp/mesh-reference.png" "$img/flip-mesh-reference.png"
+{
+  echo "pattern,rmse,flip,flip_weighted_median"
+  for p in msaa-8 aapat-8; do
+    cp "$flip_tmp/mesh-$p.png" "$img/flip-mesh-$p-image.png"
+    "$aapat" diff "$flip_tmp/mesh-reference.png" "$flip_tmp/mesh-$p.png" --map "$img/flip-mesh-$p.png" --json |
+      python3 -c "import json,sys; d=json.load(sys.stdin); print('$p,%.3f,%.6f,%.4f' % (d['rmse'], d['flip'], d['flip_weighted_median']))"
+  done
+} > docs/flip-mesh.csv
 rm -rf "$flip_tmp"
 # Every registry of specs, as aapat list prints it (the same entries the parsers use).
 "$aapat" list > docs/registry.txt
