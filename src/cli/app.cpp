@@ -14,7 +14,9 @@
 #include <ostream>
 
 #include "aapat/core/geometry.h"
+#include "aapat/core/hash.h"
 #include "aapat/core/nearest_name.h"
+#include "aapat/core/read_file.h"
 #include "aapat/io/atomic_file.h"
 #include "aapat/version.h"
 #include "aapat/work/checkpoint.h"
@@ -97,8 +99,26 @@ std::string shell_quoted(std::string_view arg) {
   return quoted + "'";
 }
 
+// What a file argument holds, so that a checkpoint of a command that reads it
+// does not resume after the file changed: its size and FNV-1a hash, or ""
+// for an argument that is not a readable regular file.
+std::string file_digest(std::string_view arg) {
+  if (const size_t eq = arg.find('='); arg.starts_with("--") && eq != std::string_view::npos)
+    arg = arg.substr(eq + 1);  // --acuity=table.csv
+  std::error_code e;
+  const std::string path(arg);
+  if (arg.empty() || !std::filesystem::is_regular_file(path, e)) return "";
+  try {
+    const std::string bytes = read_file(path, "input file");
+    return fmt::format(" [{} bytes, fnv1a {:016x}]", bytes.size(), fnv1a(bytes));
+  } catch (const Error&) {  // unreadable or too large: the command itself will say so
+    return "";
+  }
+}
+
 // The command a checkpoint belongs to: the arguments less those that do not
-// change a result (--threads, --checkpoint), and the version.
+// change a result (--threads, --checkpoint), each file argument's content
+// digest, and the version.
 std::string fingerprint(int argc, const char* const* argv) {
   std::string text = "aapat " AAPAT_VERSION;
   for (int i = 1; i < argc; ++i) {
@@ -110,6 +130,7 @@ std::string fingerprint(int argc, const char* const* argv) {
     if (arg.starts_with("--threads=") || arg.starts_with("--checkpoint=")) continue;
     text += " ";
     text += shell_quoted(arg);
+    text += file_digest(arg);
   }
   return text;
 }

@@ -359,6 +359,24 @@ TEST(Hardening, ACheckpointKnowsWhereEachArgumentEnds) {
   fs::remove(checkpoint);
 }
 
+// A checkpoint belongs to what its command reads too: after an input file
+// named on the command line changes, the same command line does not resume
+// the old run's results (the acuity table edited between two optimizations).
+TEST(Hardening, ACheckpointKnowsItsInputFiles) {
+  const std::string checkpoint = temp_path("inputs.ckpt");
+  fs::remove(checkpoint);
+  const std::string csv = write("edited.csv", "0,1\n45,1\n90,1\n");
+  const std::vector<std::string> command = {
+      "--checkpoint", checkpoint, "optimize", "--family", "P(1,1,2)",
+      "--acuity",     csv,        "--starts", "2",        "--json"};
+  const CliRun first = run(command);
+  ASSERT_EQ(first.code, kExitOk) << first.err;
+  EXPECT_EQ(run(command).out, first.out);  // unchanged: resumed, the same answer
+  write("edited.csv", "0,1\n45,5\n90,1\n");
+  expect_error(run(command), kExitError, "belongs to another command");
+  fs::remove(checkpoint);
+}
+
 TEST(Hardening, AFailedCommandLeavesNoOutputFile) {
   const std::string json = temp_path("best.json"), svg = temp_path("best.svg");
   // The CSV's folder does not exist: the pattern and the drawing must not appear either.

@@ -21,7 +21,6 @@
 #include "aapat/io/png_image.h"
 #include "aapat/io/refinement_map.h"
 #include "aapat/io/scene_json.h"
-#include "aapat/render/color_render.h"
 #include "aapat/study/study_json.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/taa_render.h"
@@ -110,11 +109,6 @@ void run_grid(const Options& o, std::ostream& out) {
   if (o.output.empty() || !o.output.ends_with(".png"))
     throw Error("render --grid: give the sheet's file with -o SHEET.png");
   const Scene scene = make_view_scene(o, w, h);
-  if (is_colour(scene))
-    throw Error(
-        fmt::format("--grid: {} is a colour (mesh) scene; the contact sheet is grey for "
-                    "now: render its cells one by one",
-                    o.scene));
   const RenderGridSettings s{w, h, o.rows, o.columns, o.seed, reference_settings(o)};
   std::vector<RenderGridCell> cells;
   {
@@ -170,7 +164,8 @@ void run_grid(const Options& o, std::ostream& out) {
                              fmt::format("MAP 1-{} AVG {:.2f}", most, c.stats.samples_per_pixel)});
     } else {
       sheet.cells.push_back({w, h, level_pixels(c.image),
-                             fmt::format("RMSE {:.2f} MAX {}", e.rmse, e.max_deviation)});
+                             fmt::format("RMSE {:.2f} MAX {}", e.rmse, e.max_deviation),
+                             c.image.channels});
     }
     const std::string spp = c.adaptive ? fmt::format("{:.2f}", c.stats.samples_per_pixel)
                                        : format_cost(c.stats.samples_per_pixel);
@@ -195,8 +190,11 @@ void run_grid(const Options& o, std::ostream& out) {
     cell.update(figures_json(c.figures));
     rows.push_back(std::move(cell));
   }
-  const GreyRaster r = compose_sheet(sheet);
-  write_png_gray(o.output, r.width, r.height, r.pixels);
+  const SheetRaster r = compose_sheet(sheet);
+  if (r.channels == 3)
+    write_png_rgb(o.output, r.width, r.height, r.pixels);
+  else
+    write_png_gray(o.output, r.width, r.height, r.pixels);
   const std::string heading =
       fmt::format("{}{} {}x{}: against {} jittered samples per pixel with {}\n\n", o.scene,
                   o.texture.empty() ? "" : " with texture " + o.texture, w, h, s.reference.samples,
@@ -327,11 +325,6 @@ void run_temporal(const Options& o, std::ostream& out) {
   if (!o.output.empty() && !o.output.ends_with(".png"))
     throw Error(fmt::format("'{}' must end in .png", o.output));
   const Scene scene = make_view_scene(o, w, h);
-  if (is_colour(scene))
-    throw Error(
-        fmt::format("--sequence: {} is a colour (mesh) scene; the temporal renderer "
-                    "takes grey scenes for now",
-                    o.scene));
   const Sequence s = resolve_sequence(o.sequence);
   const Accumulation model = o.model.make();
   TaaScenes scenes;
@@ -344,7 +337,7 @@ void run_temporal(const Options& o, std::ostream& out) {
   Image last;
   const TaaResult r = render_taa(
       scenes, s, model, !o.cut, [&](int, const Image& img) { last = img; }, o.reference.source());
-  if (!o.output.empty()) write_png_gray(o.output, w, h, level_pixels(last));
+  if (!o.output.empty()) write_png_image(o.output, last);
   if (o.json) {
     JsonObject js = json_report("render");
     js.update(JsonObject{{"scene", o.scene},

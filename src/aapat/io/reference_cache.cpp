@@ -1,9 +1,8 @@
 #include "aapat/io/reference_cache.h"
 
-#include "aapat/render/color_render.h"
-
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -13,12 +12,21 @@
 
 #include "aapat/core/hash.h"
 #include "aapat/io/atomic_file.h"
+#include "aapat/render/color_render.h"
 #include "aapat/work/work_items.h"
 
 namespace aapat {
 namespace {
 
-constexpr std::string_view kMagic = "aapat-reference 1\n";
+// Version 2 adds the values' checksum: a file whose values were changed after
+// it was written is rendered afresh, not trusted.
+constexpr std::string_view kMagic = "aapat-reference 2\n";
+
+// The line between the key and the values: their FNV-1a hash.
+std::string checksum_line(std::string_view values) {
+  return fmt::format("values {:016x}\n", fnv1a(values));
+}
+constexpr size_t kChecksumLineBytes = 24;  // "values " + 16 hex digits + "\n"
 
 std::string key_text(const Scene& scene, int width, int height, const ReferenceSettings& r,
                      double offset) {
@@ -50,20 +58,36 @@ ReferenceSource cached_references(std::string dir, Warn warn) {
     // of a cluster run agrees on whether the reference is rendered.
     const std::string head = std::string(kMagic) + key;
     const std::string found = run_as_one_item([&] {
-      // Not empty even for a miss: a checkpoint keeps the answer.
-      const std::string miss(1, '\0');
+      // Not empty even for a miss: a checkpoint keeps the answer. '\2': this
+      // reference, damaged.
+      const std::string miss(1, '\0'), damaged(1, '\2');
       std::error_code ec;
       if (!std::filesystem::is_regular_file(path, ec)) return miss;
       std::string data;
       try {
-        data = read_file(path, "cached reference", kMagic.size() + key.size() + bytes);
+        data = read_file(path, "cached reference", head.size() + kChecksumLineBytes + bytes);
       } catch (const Error&) {  // unreadable: recomputed below
       }
-      // A file that is not exactly this reference (collision, older format) is recomputed.
-      if (data.size() == head.size() + bytes && data.compare(0, head.size(), head) == 0)
-        return '\1' + data.substr(head.size());
-      return miss;
+      // A file that is not this reference (collision, older format) is recomputed.
+      if (data.compare(0, head.size(), head) != 0) return miss;
+      // This reference, whose values must be what was written: their length,
+      // checksum and finiteness.
+      if (data.size() != head.size() + kChecksumLineBytes + bytes) return damaged;
+      const std::string_view values =
+          std::string_view(data).substr(head.size() + kChecksumLineBytes);
+      if (data.compare(head.size(), kChecksumLineBytes, checksum_line(values)) != 0) return damaged;
+      for (size_t k = 0; k < bytes; k += sizeof(double)) {
+        double v;
+        std::memcpy(&v, values.data() + k, sizeof v);
+        if (!std::isfinite(v)) return damaged;
+      }
+      return '\1' + std::string(values);
     });
+    if (found.size() == 1 && found[0] == '\2' && warn)
+      warn(
+          fmt::format("cached reference {} does not hold the values written to it (its "
+                      "checksum or length differs); rendering it afresh",
+                      path));
     if (bytes > 0 && found.size() == bytes + 1 && found[0] == '\1') {
       Image image{width, height, offset, std::vector<double>(bytes / sizeof(double)), channels};
       std::memcpy(image.values.data(), found.data() + 1, bytes);
@@ -73,8 +97,9 @@ ReferenceSource cached_references(std::string dir, Warn warn) {
     if (*unwritable) return image;
     try {
       ensure_directory(dir, "reference cache");
-      std::string data = std::string(kMagic) + key;
-      data.append(reinterpret_cast<const char*>(image.values.data()), bytes);
+      const std::string_view values(reinterpret_cast<const char*>(image.values.data()), bytes);
+      std::string data = std::string(kMagic) + key + checksum_line(values);
+      data.append(values);
       write_file_now(path, data, /*keep_on_rollback=*/true);  // valid whatever the run does next
     } catch (const Error& e) {
       *unwritable = true;

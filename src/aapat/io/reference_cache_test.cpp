@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 namespace aapat {
 namespace {
@@ -13,7 +15,9 @@ namespace fs = std::filesystem;
 TEST(ReferenceCache, StoresReadsBackAndRecomputesADamagedFile) {
   const fs::path dir = fs::path(::testing::TempDir()) / "aapat_reference_cache_test";
   fs::remove_all(dir);
-  const ReferenceSource cached = cached_references(dir.string());
+  std::vector<std::string> warnings;
+  const ReferenceSource cached =
+      cached_references(dir.string(), [&](const std::string& w) { warnings.push_back(w); });
   const Scene scene = make_scene("spiral", 24, 20);
   const ReferenceSettings r{16, "mitchell", 7};
   const Image direct = render_reference(scene, 24, 20, r, 0.5);
@@ -21,19 +25,33 @@ TEST(ReferenceCache, StoresReadsBackAndRecomputesADamagedFile) {
   EXPECT_EQ(first.values, direct.values);
   std::vector<fs::path> files(fs::directory_iterator(dir), fs::directory_iterator{});
   ASSERT_EQ(files.size(), 1u);
-  // Read back: overwrite the stored values' last byte and see it come back.
-  {
-    std::fstream f(files[0], std::ios::in | std::ios::out | std::ios::binary);
-    f.seekp(-1, std::ios::end);
-    f.put(static_cast<char>(0x3f));  // still a finite double, a different value
+  EXPECT_EQ(cached(scene, 24, 20, r, 0.5).values, direct.values);  // read back
+  EXPECT_TRUE(warnings.empty());
+  // Values changed after they were written (a finite double, then a NaN):
+  // the checksum says so, the reference is rendered afresh, a warning names the file.
+  for (const char byte : {char{0x3f}, char{0x7f}}) {
+    {
+      std::fstream f(files[0], std::ios::in | std::ios::out | std::ios::binary);
+      f.seekp(-1, std::ios::end);
+      f.put(byte);
+      if (byte == 0x7f) {  // the last value all ones: a NaN
+        f.seekp(-8, std::ios::end);
+        for (int k = 0; k < 7; ++k) f.put(static_cast<char>(0xff));
+      }
+    }
+    const size_t before = warnings.size();
+    const Image again = cached(scene, 24, 20, r, 0.5);
+    EXPECT_EQ(again.values, direct.values);
+    EXPECT_EQ(again.offset, 0.5);
+    ASSERT_EQ(warnings.size(), before + 1);
+    EXPECT_NE(warnings.back().find(files[0].string()), std::string::npos) << warnings.back();
+    EXPECT_EQ(cached(scene, 24, 20, r, 0.5).values, direct.values);  // rewritten whole
+    EXPECT_EQ(warnings.size(), before + 1);
   }
-  const Image second = cached(scene, 24, 20, r, 0.5);
-  EXPECT_NE(second.values, direct.values);
-  EXPECT_EQ(second.offset, 0.5);
   // Other parameters: another file.
   cached(scene, 24, 20, ReferenceSettings{16, "mitchell", 8}, 0.5);
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 2);
-  // A truncated file is a miss: recomputed and rewritten.
+  // A truncated file is recomputed and rewritten.
   fs::resize_file(files[0], 100);
   EXPECT_EQ(cached(scene, 24, 20, r, 0.5).values, direct.values);
   EXPECT_EQ(cached(scene, 24, 20, r, 0.5).values, direct.values);

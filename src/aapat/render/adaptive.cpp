@@ -7,20 +7,30 @@
 #include <cmath>
 
 #include "aapat/generate/point_generators.h"
+#include "aapat/render/color_render.h"
 #include "aapat/render/surface.h"
 
 namespace aapat {
 namespace {
 
+// A sample's value: a grey scene's in value[0], a colour scene's in all
+// three (the criteria then judge each channel, refining where any one asks).
 struct Taken {
-  double x, y, value;
+  double x, y;
+  Rgb value;
   int primitive;
 };
 
 // A sample in the pixel's estimate: its square's area over the square's samples.
 struct Weighted {
-  double x, y, value, weight;
+  double x, y;
+  Rgb value;
+  double weight;
 };
+
+Rgb value_at(const Scene& scene, Vec2 p, bool colour) {
+  return colour ? shade_colour(scene, p) : Rgb{shade(scene, p), 0, 0};
+}
 
 // splitmix64: the refinement's positions from (seed, pixel, square, index)
 // alone, so any order of pixels and any thread count draws the same.
@@ -43,7 +53,11 @@ struct Square {
 class Refiner {
  public:
   Refiner(const Scene& scene, const AdaptiveSettings& s)
-      : scene_(scene), s_(s), textured_(has_texture(scene)) {}
+      : scene_(scene),
+        s_(s),
+        textured_(has_texture(scene)),
+        colour_(is_colour(scene)),
+        channels_(colour_ ? 3 : 1) {}
 
   // Refines pixel (a, b) from its first samples; `neighbours` holds the
   // first samples of its 3 x 3 neighbourhood (itself included).
@@ -65,22 +79,29 @@ class Refiner {
  private:
   bool disagree(const std::vector<Taken>& samples) const {
     if (samples.size() < 2) return false;
-    double lo = samples[0].value, hi = lo, sum = 0, sum_sq = 0;
+    if (s_.criterion == RefinementCriterion::primitive)
+      for (const Taken& t : samples)
+        if (t.primitive != samples[0].primitive) return true;
+    for (size_t c = 0; c < channels_; ++c)
+      if (channel_disagrees(samples, c)) return true;
+    return false;
+  }
+
+  bool channel_disagrees(const std::vector<Taken>& samples, size_t c) const {
+    double lo = samples[0].value[c], hi = lo, sum = 0, sum_sq = 0;
     for (const Taken& t : samples) {
-      lo = std::min(lo, t.value);
-      hi = std::max(hi, t.value);
-      sum += t.value;
-      sum_sq += t.value * t.value;
+      lo = std::min(lo, t.value[c]);
+      hi = std::max(hi, t.value[c]);
+      sum += t.value[c];
+      sum_sq += t.value[c] * t.value[c];
     }
     const double n = static_cast<double>(samples.size());
     switch (s_.criterion) {
       case RefinementCriterion::variance:
         return std::max(0.0, (sum_sq - sum * sum / n) / (n - 1)) > s_.threshold;
       case RefinementCriterion::primitive:
-        // Different primitives; on a textured one, texture regions that
-        // differ by more than the threshold.
-        for (const Taken& t : samples)
-          if (t.primitive != samples[0].primitive) return true;
+        // One primitive (checked above); on a textured one, texture regions
+        // that differ by more than the threshold.
         return textured_ && hi - lo > s_.threshold;
       case RefinementCriterion::contrast:
       case RefinementCriterion::neighbours:  // inside the pixel: contrast
@@ -92,7 +113,7 @@ class Refiner {
   Taken take(double x, double y) const {
     ++evaluations_;
     const Vec2 p{x, y};
-    return {x, y, shade(scene_, p),
+    return {x, y, value_at(scene_, p, colour_),
             s_.criterion == RefinementCriterion::primitive ? primitive_at(scene_, p) : 0};
   }
 
@@ -133,7 +154,8 @@ class Refiner {
 
   const Scene& scene_;
   const AdaptiveSettings& s_;
-  bool textured_;
+  bool textured_, colour_;
+  size_t channels_;
   // Per pixel (a Refiner is used by one thread at a time).
   mutable int total_ = 0, a_ = 0, b_ = 0, evaluations_ = 0;
 };
@@ -200,6 +222,8 @@ AdaptiveImage render_adaptive(const Scene& scene, int width, int height, const A
   auto index = [&](int a, int b) { return static_cast<size_t>(b + m) * rw + (a + m); };
   const PointGenerator generator =
       s.initial.pattern ? PointGenerator{} : make_point_generator(s.initial.generator);
+  const bool colour = is_colour(scene);
+  const auto nc = static_cast<size_t>(scene_channels(scene));
 
   // Phase 1: every pixel's first samples.
   std::vector<std::vector<Taken>> first(static_cast<size_t>(rw) * rh);
@@ -215,7 +239,7 @@ AdaptiveImage render_adaptive(const Scene& scene, int width, int height, const A
       auto& out = first[index(a, b)];
       for (const Vec2& v : at) {
         const Vec2 q{a + v.x, b + v.y};
-        out.push_back({q.x, q.y, shade(scene, q),
+        out.push_back({q.x, q.y, value_at(scene, q, colour),
                        s.criterion == RefinementCriterion::primitive ? primitive_at(scene, q) : 0});
       }
     }
@@ -227,38 +251,49 @@ AdaptiveImage render_adaptive(const Scene& scene, int width, int height, const A
   tbb::parallel_for(-m, height + m, [&](int b) {
     const Refiner refiner(scene, s);
     for (int a = -m; a < width + m; ++a) {
-      double lo = INFINITY, hi = -INFINITY;
-      for (int db = -1; db <= 1; ++db)
-        for (int da = -1; da <= 1; ++da) {
-          if (a + da < -m || a + da >= width + m || b + db < -m || b + db >= height + m) continue;
-          for (const Taken& t : first[index(a + da, b + db)])
-            lo = std::min(lo, t.value), hi = std::max(hi, t.value);
-        }
+      double contrast = 0;  // the largest channel's
+      for (size_t c = 0; c < nc; ++c) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (int db = -1; db <= 1; ++db)
+          for (int da = -1; da <= 1; ++da) {
+            if (a + da < -m || a + da >= width + m || b + db < -m || b + db >= height + m) continue;
+            for (const Taken& t : first[index(a + da, b + db)])
+              lo = std::min(lo, t.value[c]), hi = std::max(hi, t.value[c]);
+          }
+        contrast = c == 0 ? hi - lo : std::max(contrast, hi - lo);
+      }
       int made = 0;
-      refiner.pixel(a, b, first[index(a, b)], hi - lo, kept[index(a, b)], made);
+      refiner.pixel(a, b, first[index(a, b)], contrast, kept[index(a, b)], made);
       evaluations[index(a, b)] = made + static_cast<int>(first[index(a, b)].size());
     }
   });
 
   // Phase 3: reconstruction.
   AdaptiveImage r;
-  r.image = Image{width, height, 0.0, std::vector<double>(static_cast<size_t>(width) * height)};
+  r.image = Image{width, height, 0.0, std::vector<double>(static_cast<size_t>(width) * height * nc),
+                  static_cast<int>(nc)};
   r.samples.resize(static_cast<size_t>(width) * height);
   tbb::parallel_for(0, height, [&](int j) {
     for (int i = 0; i < width; ++i) {
-      double sum = 0, weight = 0;
+      Rgb sum{0, 0, 0};
+      double weight = 0;
       if (!filter) {
-        for (const Weighted& w : kept[index(i, j)]) sum += w.weight * w.value, weight += w.weight;
+        for (const Weighted& w : kept[index(i, j)]) {
+          for (size_t c = 0; c < nc; ++c) sum[c] += w.weight * w.value[c];
+          weight += w.weight;
+        }
       } else {
         for (int b = j - m; b <= j + m; ++b)
           for (int a = i - m; a <= i + m; ++a)
             for (const Weighted& w : kept[index(a, b)]) {
               const double h = filter->value(w.x - i) * filter->value(w.y - j) * w.weight;
-              sum += h * w.value;
+              for (size_t c = 0; c < nc; ++c) sum[c] += h * w.value[c];
               weight += h;
             }
       }
-      r.image.values[static_cast<size_t>(j) * width + i] = weight != 0 ? sum / weight : 0.0;
+      for (size_t c = 0; c < nc; ++c)
+        r.image.values[(static_cast<size_t>(j) * width + i) * nc + c] =
+            weight != 0 ? sum[c] / weight : 0.0;
       r.samples[static_cast<size_t>(j) * width + i] = static_cast<int>(kept[index(i, j)].size());
     }
   });

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "aapat/core/filter_catalog.h"
+#include "aapat/render/adaptive.h"
 #include "aapat/render/color_render.h"
 #include "aapat/render/renderer.h"
 #include "aapat/render/surface.h"
@@ -210,6 +211,27 @@ TEST(Mesh, ColourRendersThreeChannelsOfTheSameSamples) {
       EXPECT_EQ(shade(Scene(MeshScene{view, ch}), p), c[static_cast<size_t>(ch)]);
   }
   EXPECT_EQ(channel_image(img, 1).values[0], img.values[1]);
+}
+
+// Adaptive refinement judges each channel: a red triangle on a black
+// background refines along its edges (where red changes) and nowhere else,
+// and the image is in colour, green and blue zero.
+TEST(Mesh, AdaptiveRefinementInColour) {
+  auto m = mesh_of({{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}, {{0, 1, 2}});
+  m->materials[0].base = {1, 0, 0};
+  const auto view = make_mesh_view(m, {{0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 60}, flat_light(), 32, 32);
+  AdaptiveSettings a;
+  a.initial.generator = "jittered";
+  a.initial.samples = 4;
+  a.criterion = RefinementCriterion::contrast;
+  const AdaptiveImage r = render_adaptive(Scene(MeshScene{view, 0}), 32, 32, a, make_filter("box"));
+  ASSERT_EQ(r.image.channels, 3);
+  EXPECT_GT(r.refined_fraction, 0.02);
+  EXPECT_LT(r.refined_fraction, 0.5);
+  for (size_t p = 0; p < r.image.pixels(); ++p) {
+    EXPECT_EQ(r.image.values[3 * p + 1], 0);
+    EXPECT_EQ(r.image.values[3 * p + 2], 0);
+  }
 }
 
 }  // namespace

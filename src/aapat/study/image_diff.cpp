@@ -21,16 +21,12 @@ ImageDiff image_diff(const ColorImage& reference, const ColorImage& test, double
   ImageDiff d;
   d.ppd = ppd;
   d.flip = flip(reference, test, ppd);  // checks the sizes and ppd first
-  double sum = 0;
-  for (size_t k = 0; k < reference.rgb.size(); ++k) {
-    // On the files' 8-bit levels, as the renderer's RMSE (render/image_error.h).
-    const double e = grey_level(test.rgb[k]) - grey_level(reference.rgb[k]);
-    sum += e * e;
-  }
-  d.rmse = std::sqrt(sum / static_cast<double>(reference.rgb.size()));
+  // The renderer's RMSE (render/image_error.h), the same arithmetic: on the
+  // files' 8-bit levels, over every channel.
+  const Image a = image_of(test), b = image_of(reference);
+  d.rmse = compare(a, b).rmse;
   if (d.rmse > 0) d.psnr = 20 * std::log10(255 / d.rmse);
-  if (reference.width >= kSsimWindow && reference.height >= kSsimWindow)
-    d.ssim = ssim(image_of(test), image_of(reference));
+  if (reference.width >= kSsimWindow && reference.height >= kSsimWindow) d.ssim = ssim(a, b);
   return d;
 }
 

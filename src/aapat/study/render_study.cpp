@@ -7,7 +7,6 @@
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/io/pattern_json.h"
-#include "aapat/render/color_render.h"
 #include "aapat/render/image_flip.h"
 #include "aapat/render/ssim.h"
 #include "aapat/render/texture_filter.h"
@@ -150,8 +149,6 @@ void render_one(const Scene& scene, int width, int height, const Sampling& sampl
     image = render(scene, width, height, sampling, filter, &stats);
     return;
   }
-  if (is_colour(scene))
-    throw Error("render: adaptive refinement of a colour (mesh) scene is not available yet");
   refined = render_adaptive(scene, width, height, *adaptive, filter);
   image = refined->image;
   stats.samples_per_pixel = refined->average_samples;
