@@ -377,6 +377,26 @@ TEST(Hardening, ACheckpointKnowsItsInputFiles) {
   fs::remove(checkpoint);
 }
 
+// Two outputs of one command that name the same file, or an output that is a
+// folder, are refused before anything is reported as written, and nothing is.
+TEST(Hardening, OutputsThatCannotAllBeWrittenAreRefusedFirst) {
+  const std::string same = temp_path("same-output.json"), folder = temp_path("a-folder.json"),
+                    csv = temp_path("beside-a-folder.csv");
+  fs::remove(same);
+  fs::remove(csv);
+  fs::create_directories(folder);
+  const CliRun twice =
+      run({"optimize", "--family", "P(1,1,2)", "--starts", "2", "-o", same, "--svg", same});
+  expect_error(twice, kExitError, "two outputs of this command name the same file");
+  EXPECT_FALSE(fs::exists(same));
+  const CliRun into_folder =
+      run({"optimize", "--family", "P(1,1,2)", "--starts", "2", "-o", folder, "--csv", csv});
+  expect_error(into_folder, kExitError, "it is a folder");
+  EXPECT_EQ(into_folder.out.find("wrote"), std::string::npos) << into_folder.out;
+  EXPECT_FALSE(fs::exists(csv));
+  fs::remove_all(folder);
+}
+
 TEST(Hardening, AFailedCommandLeavesNoOutputFile) {
   const std::string json = temp_path("best.json"), svg = temp_path("best.svg");
   // The CSV's folder does not exist: the pattern and the drawing must not appear either.

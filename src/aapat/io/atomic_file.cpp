@@ -119,6 +119,23 @@ void mute_outputs() {
 
 void write_file_atomically(const std::string& path, std::string_view content) {
   if (g_muted) return;
+  // What the rename at commit would refuse, refused now: before the command
+  // reports the file as written, and before it stages the others.
+  std::error_code e;
+  if (std::filesystem::is_directory(path, e))
+    throw Error(fmt::format("cannot write '{}': it is a folder", path));
+  {
+    const std::lock_guard lock(g_mutex);
+    if (g_open) {
+      const auto same = [&](const Staged& s) {
+        std::error_code a, b;
+        return s.path == path || std::filesystem::weakly_canonical(s.path, a) ==
+                                     std::filesystem::weakly_canonical(path, b);
+      };
+      if (std::any_of(g_staged.begin(), g_staged.end(), same))
+        throw Error(fmt::format("two outputs of this command name the same file '{}'", path));
+    }
+  }
   const std::string tmp = write_temporary(path, content);
   {
     const std::lock_guard lock(g_mutex);

@@ -15,7 +15,8 @@
 namespace aapat {
 
 // Writes `content` to `path` whole or not at all. Inside an open transaction
-// the file appears at commit.
+// the file appears at commit, and a path already staged (by any spelling) or
+// a folder is refused at once: two outputs of one command name one file.
 void write_file_atomically(const std::string& path, std::string_view content);
 // The same, but the file appears now (an input another program reads, a cache
 // entry); inside a transaction, a file that did not exist before is deleted
