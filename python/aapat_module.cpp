@@ -26,6 +26,14 @@ arrays. Specs name filters, acuity tables, generators and scenes
       std::string keyword = e.parameter();
       std::replace(keyword.begin(), keyword.end(), '-', '_');
       PyErr_SetString(error.ptr(), (keyword + e.detail()).c_str());
+    } catch (const py::cast_error& e) {
+      // A value converted inside a function (a list where a sequence or a
+      // pattern was expected): aapat.Error like every bad input, not
+      // pybind11's RuntimeError.
+      PyErr_SetString(error.ptr(),
+                      (std::string("an argument is not of a type this function takes (") +
+                       e.what() + ")")
+                          .c_str());
     }
   });
   m.attr("Error").attr("__doc__") =

@@ -287,3 +287,13 @@ def test_a_mesh_view_renders_in_colour_on_both_faces(aapat_cli, tmp_path):
     assert cli["flip"] == diffed["flip"]
     assert cli["rmse"] == diffed["rmse"]  # both on the 8-bit levels
     assert abs(cli["ssim"] - diffed["ssim"]) < 1e-12
+
+
+def test_wrong_types_are_aapat_errors_or_type_errors():
+    """A value of the wrong type converted inside a function is aapat.Error,
+    not pybind11's RuntimeError; a call whose signature does not match is
+    Python's TypeError, naming the signatures it takes."""
+    with pytest.raises(aapat.Error, match="not of a type this function takes"):
+        aapat.sequence_eval([1, 2])
+    with pytest.raises(TypeError, match="incompatible function arguments"):
+        aapat.generate("halton", "ten")
