@@ -9,7 +9,14 @@
 namespace aapat::python {
 
 std::function<void(int, int, const std::string&)> progress_of(const py::object& callback) {
-  if (callback.is_none()) return {};
+  if (callback.is_none()) {
+    // No callable, but Ctrl-C is still heard at each step: the interrupt
+    // propagates through the library as an exception and ends the call.
+    return [](int, int, const std::string&) {
+      py::gil_scoped_acquire gil;  // called from the library's worker threads
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    };
+  }
   if (!PyCallable_Check(callback.ptr()))
     throw Error("progress: give a callable f(done, total, note), or None");
   return [callback](int done, int total, const std::string& note) {

@@ -70,7 +70,8 @@ inline py::object values_of(JsonObject doc) {
 // inside the pixel, else aapat.Error naming the sample.
 void check_samples(const Array& xy, const char* what);
 
-// A progress callable (done, total, note), called with the GIL held; None: silent.
+// A progress callable (done, total, note), called with the GIL held; None:
+// silent, but Ctrl-C (a pending KeyboardInterrupt) still ends the call at a step.
 std::function<void(int, int, const std::string&)> progress_of(const py::object& callback);
 
 // The docstring of the metric keywords, shared by the functions that take them.
