@@ -48,6 +48,21 @@ void write_mp4(const std::string& dir, const std::string& path, int fps, int fra
   }
 }
 
+// An earlier run's frames in `dir` that this run of `frames` frames does not
+// write (a longer run's, or another digit count's): removed when it commits.
+void stale_frames_removed_at_commit(const std::string& dir, int frames) {
+  std::error_code e;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, e)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with("frame-") || !name.ends_with(".png")) continue;
+    const std::string digits = name.substr(6, name.size() - 10);
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    const bool ours = static_cast<int>(digits.size()) == frame_digits(frames) &&
+                      digits.size() < 10 && std::stoi(digits) < frames;
+    if (!ours) remove_file_at_commit(entry.path().string());
+  }
+}
+
 struct AnimateOptions : AnimationOptions {
   std::string pattern, filter, frames_dir, histogram, gif, mp4;
   int fps = 12;
@@ -75,20 +90,23 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
       throw Error(fmt::format("'{}' must end in {}", path, ext));
   if (!o.mp4.empty()) check_ffmpeg(o.mp4);
   if (!o.frames_dir.empty()) check_directory_target(o.frames_dir, "--frames-dir");
-  // ffmpeg reads PNG frames from a folder: --frames-dir, or a temporary one.
-  std::string frames_dir = o.frames_dir;
-  const bool temporary_frames = !o.mp4.empty() && frames_dir.empty();
-  if (temporary_frames)
-    frames_dir = (std::filesystem::temp_directory_path() /
-                  fmt::format("aapat-frames-{}", static_cast<long>(::getpid())))
-                     .string();
+  // ffmpeg reads PNG frames from a temporary folder of their own. The
+  // --frames-dir folder gets its frames all at once when the command
+  // succeeds (staged like every output), and loses an earlier run's frames
+  // that this run does not have; a failed run leaves it as it was.
+  const bool temporary_frames = !o.mp4.empty();
+  const std::string frames_dir =
+      temporary_frames ? (std::filesystem::temp_directory_path() /
+                          fmt::format("aapat-frames-{}", static_cast<long>(::getpid())))
+                             .string()
+                       : "";
   struct Cleanup {  // the temporary frames, whatever happens
     std::string dir;
     ~Cleanup() {
       std::error_code ec;
       if (!dir.empty()) std::filesystem::remove_all(dir, ec);
     }
-  } cleanup{temporary_frames ? frames_dir : ""};
+  } cleanup{frames_dir};
   if (o.pattern.empty() == o.sequence.empty())
     throw Error("animate: give either --pattern or --sequence (temporal accumulation)");
   if (o.sequence.empty() && (o.cut || o.still || !o.csv.empty()))
@@ -106,14 +124,18 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
   }
   std::optional<Filter> filter;
   if (!o.filter.empty()) filter = make_filter(o.filter);
-  if (!frames_dir.empty()) ensure_directory(frames_dir, "--frames-dir");
+  if (!frames_dir.empty()) ensure_directory(frames_dir, "ffmpeg's frames");
+  if (!o.frames_dir.empty()) {
+    ensure_directory(o.frames_dir, "--frames-dir");
+    stale_frames_removed_at_commit(o.frames_dir, a.frames);
+  }
   Progress bar("animate");
   GreyFrames gif{a.width, a.height, std::max(2, 100 / o.fps), {}};
   const auto on_frame = [&](int f, const Image& img) {
-    // Written now: ffmpeg reads them; on an error the run's new frames are deleted.
-    if (!frames_dir.empty())
-      write_file_now(fmt::format("{}/frame-{:0{}d}.png", frames_dir, f, frame_digits(a.frames)),
-                     png_gray_bytes(img.width, img.height, level_pixels(img)));
+    const std::string name = fmt::format("frame-{:0{}d}.png", f, frame_digits(a.frames));
+    const std::string png = png_gray_bytes(img.width, img.height, level_pixels(img));
+    if (!frames_dir.empty()) write_file_now(frames_dir + "/" + name, png);  // ffmpeg's, now
+    if (!o.frames_dir.empty()) write_file_atomically(o.frames_dir + "/" + name, png);
     if (!o.gif.empty()) gif.frames.push_back(level_pixels(img));
     bar.update(f + 1, a.frames, "");
   };

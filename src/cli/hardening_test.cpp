@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -395,6 +396,40 @@ TEST(Hardening, OutputsThatCannotAllBeWrittenAreRefusedFirst) {
   EXPECT_EQ(into_folder.out.find("wrote"), std::string::npos) << into_folder.out;
   EXPECT_FALSE(fs::exists(csv));
   fs::remove_all(folder);
+}
+
+// A frame folder is one output: a run that fails partway leaves the earlier
+// run's frames as they were, and a shorter run that succeeds leaves only its
+// own frames.
+TEST(Hardening, AFrameFolderIsAllOrNothing) {
+  const std::string dir = temp_path("frames-all-or-nothing");
+  fs::remove_all(dir);
+  auto frames = [&] {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  ASSERT_EQ(run({"animate", "circle", "--pattern", "msaa-4", "--frames", "6", "--size", "16x16",
+                 "--frames-dir", dir})
+                .code,
+            kExitOk);
+  ASSERT_EQ(frames().size(), 6u);
+  const std::string first = slurp(dir + "/frame-0000.png");
+  // Fails after rendering its frames (the histogram's folder is missing).
+  expect_error(run({"animate", "circle", "--pattern", "msaa-4", "--frames", "4", "--size", "17x16",
+                    "--frames-dir", dir, "--histogram", temp_path("no-such/h.csv")}),
+               kExitError, "cannot write");
+  EXPECT_EQ(frames().size(), 6u);
+  EXPECT_EQ(slurp(dir + "/frame-0000.png"), first);
+  ASSERT_EQ(run({"animate", "circle", "--pattern", "msaa-4", "--frames", "4", "--size", "17x16",
+                 "--frames-dir", dir})
+                .code,
+            kExitOk);
+  EXPECT_EQ(frames(), (std::vector<std::string>{"frame-0000.png", "frame-0001.png",
+                                                "frame-0002.png", "frame-0003.png"}));
+  EXPECT_NE(slurp(dir + "/frame-0000.png"), first);
+  fs::remove_all(dir);
 }
 
 TEST(Hardening, AFailedCommandLeavesNoOutputFile) {

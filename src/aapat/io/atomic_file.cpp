@@ -64,6 +64,7 @@ bool g_open = false;
 std::vector<Staged> g_staged;
 std::vector<std::string> g_created_now;   // deleted on rollback
 std::vector<std::string> g_created_dirs;  // removed on rollback when empty, deepest first
+std::vector<std::string> g_removals;      // files removed at commit
 std::atomic<unsigned long> g_counter{0};
 
 std::string temporary_name(const std::string& path) {
@@ -197,6 +198,7 @@ OutputTransaction::OutputTransaction() {
   g_staged.clear();
   g_created_now.clear();
   g_created_dirs.clear();
+  g_removals.clear();
 }
 
 OutputTransaction::~OutputTransaction() {
@@ -211,14 +213,29 @@ OutputTransaction::~OutputTransaction() {
   g_staged.clear();
   g_created_now.clear();
   g_created_dirs.clear();
+  g_removals.clear();
   g_open = false;
+}
+
+void remove_file_at_commit(const std::string& path) {
+  if (g_muted) return;
+  {
+    const std::lock_guard lock(g_mutex);
+    if (g_open) {
+      g_removals.push_back(path);
+      return;
+    }
+  }
+  std::remove(path.c_str());
 }
 
 void OutputTransaction::commit() {
   std::vector<Staged> staged;
+  std::vector<std::string> removals;
   {
     const std::lock_guard lock(g_mutex);
     staged.swap(g_staged);
+    removals.swap(g_removals);
     g_created_now.clear();
     g_created_dirs.clear();
     g_open = false;
@@ -238,6 +255,7 @@ void OutputTransaction::commit() {
       throw;
     }
   }
+  for (const std::string& path : removals) std::remove(path.c_str());
 }
 
 void remove_temporaries_on_signals() {

@@ -24,6 +24,10 @@ void write_file_atomically(const std::string& path, std::string_view content);
 void write_file_now(const std::string& path, std::string_view content,
                     bool keep_on_rollback = false);
 
+// Removes `path` when the open transaction commits (now when none is open):
+// an earlier run's output that this run's set of outputs no longer holds.
+void remove_file_at_commit(const std::string& path);
+
 // Creates `path` (and its parents) as a folder, or checks that it is one;
 // throws Error naming `what` when it is a file or cannot be made. Inside a
 // transaction that rolls back, the folders it made are removed again if empty.
