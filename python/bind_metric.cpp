@@ -155,6 +155,7 @@ void bind_metric(py::module_& m) {
       [](const py::object& patterns, const py::object& weights, int threads,
          const py::object& objective, const py::object& filter, const py::object& acuity,
          const py::object& norm) -> py::object {
+        check_threads(threads, "eval: threads");  // on every path, used or not
         const Metric metric = make_metric(objective, filter, acuity, norm);
         if (py::isinstance<py::array>(patterns)) {
           const Array xy = patterns.cast<Array>();

@@ -297,3 +297,10 @@ def test_wrong_types_are_aapat_errors_or_type_errors():
         aapat.sequence_eval([1, 2])
     with pytest.raises(TypeError, match="incompatible function arguments"):
         aapat.generate("halton", "ten")
+
+
+def test_threads_are_checked_on_every_path():
+    """eval checks threads for a named pattern too, where it does not use
+    them: the same limit as the command line's --threads."""
+    with pytest.raises(aapat.Error, match=r"threads: 65537 is not in \[0, 1024\]"):
+        aapat.eval("rgss", threads=65537)
