@@ -82,8 +82,9 @@ ColorImage decode_image(std::string_view bytes, const std::string& path, const s
 
 class Reader {
  public:
-  Reader(const aiScene& scene, const std::string& path, bool linear_colours)
-      : scene_(scene), path_(path), linear_(linear_colours) {}
+  // gltf: a glTF file (linear colours, and its importer's camera conventions).
+  Reader(const aiScene& scene, const std::string& path, bool gltf)
+      : scene_(scene), path_(path), linear_(gltf), gltf_(gltf) {}
 
   std::shared_ptr<Mesh> read() {
     auto mesh = std::make_shared<Mesh>();
@@ -228,14 +229,22 @@ class Reader {
   void camera(const aiCamera& c) {
     aiMatrix4x4 world;
     if (auto it = transforms_.find(c.mName.C_Str()); it != transforms_.end()) world = it->second;
-    const aiVector3D eye = world * c.mPosition;
-    const aiVector3D target = world * (c.mPosition + c.mLookAt);
+    // assimp 5.2's glTF importers copy the camera node's translation into
+    // mPosition as well as leaving it in the node: taken once.
+    aiVector3D local = c.mPosition;
+    if (gltf_ && std::abs(local.x - world.a4) < 1e-6 && std::abs(local.y - world.b4) < 1e-6 &&
+        std::abs(local.z - world.c4) < 1e-6)
+      local = aiVector3D(0, 0, 0);
+    const aiVector3D eye = world * local;
+    const aiVector3D target = world * (local + c.mLookAt);
     aiMatrix3x3 rotation(world);
     const aiVector3D up = rotation * c.mUp;
-    // mHorizontalFOV is half the horizontal angle; the vertical angle follows
-    // from the aspect ratio (1 when the file gives none).
+    // mHorizontalFOV is half the horizontal angle (assimp's documentation),
+    // but its glTF importers store the whole angle (yfov x aspect); the
+    // vertical angle follows from the aspect ratio (1 when the file gives none).
     const double aspect = c.mAspect > 0 ? c.mAspect : 1.0;
-    const double fov = 2 * std::atan(std::tan(double(c.mHorizontalFOV)) / aspect) * 180 / kPi;
+    const double half = gltf_ ? double(c.mHorizontalFOV) / 2 : double(c.mHorizontalFOV);
+    const double fov = 2 * std::atan(std::tan(half) / aspect) * 180 / kPi;
     MeshCamera cam{{eye.x, eye.y, eye.z}, {target.x, target.y, target.z}, {up.x, up.y, up.z}, fov};
     try {
       validate(cam, "camera");
@@ -247,7 +256,7 @@ class Reader {
 
   const aiScene& scene_;
   std::string path_;
-  bool linear_;
+  bool linear_, gltf_;
   Mesh* mesh_ = nullptr;
   bool any_uv_ = false, any_colour_ = false;
   std::map<std::string, ColorImage> cache_;

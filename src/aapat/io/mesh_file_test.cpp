@@ -131,6 +131,18 @@ TEST(MeshFile, RefusesWhatIsNotAModelFile) {
   fs::remove_all(dir);
 }
 
+// A camera stored in the file (glTF's Cameras sample: a perspective camera,
+// yfov 0.7 rad, at (0.5, 0.5, 3) looking down -z) is read as the file says.
+TEST(MeshFile, ReadsTheCameraStoredInTheFile) {
+  const auto m = read_mesh(model("glTF2/cameras/Cameras.gltf"));
+  ASSERT_TRUE(m->camera.has_value());
+  EXPECT_NEAR(m->camera->eye.x, 0.5, 1e-6);
+  EXPECT_NEAR(m->camera->eye.y, 0.5, 1e-6);
+  EXPECT_NEAR(m->camera->eye.z, 3, 1e-6);
+  EXPECT_NEAR(m->camera->target.z, 2, 1e-6);
+  EXPECT_NEAR(m->camera->fov_deg, 0.7 * 180 / kPi, 1e-4);
+}
+
 // A mesh scene file: the model beside it, the camera's fields checked.
 TEST(MeshFile, SceneFileNamesItsModelAndCamera) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("aapat-mesh-scene-{}", getpid());
