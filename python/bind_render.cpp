@@ -143,7 +143,7 @@ FLIP as an (h, w) array.
           r = render_study(sc, s);
         }
         // The values of `aapat render --json`, with the images as arrays.
-        py::dict d = values_of(render_json(scene, texture, pattern_name, s, r));
+        py::dict d = values_of(render_json(scene, sc, texture, pattern_name, s, r));
         d["image"] = image_array(r.image);
         if (r.adaptive) {
           Array map({static_cast<py::ssize_t>(h), static_cast<py::ssize_t>(w)});

@@ -294,7 +294,7 @@ void run_single(const Options& o, std::ostream& out) {
                         o.adaptive, s.adaptive->threshold, 100 * r.adaptive->refined_fraction,
                         r.adaptive->evaluations);
   const JsonObject js =
-      render_json(o.scene, o.texture, o.pattern.empty() ? o.generator : o.pattern, s, r);
+      render_json(o.scene, scene, o.texture, o.pattern.empty() ? o.generator : o.pattern, s, r);
   if (r.figures) {
     const ImageError& e = r.figures->error;
     text += fmt::format(

@@ -1,6 +1,7 @@
 #include "aapat/study/study_json.h"
 
 #include "aapat/core/filter_catalog.h"
+#include "aapat/render/mesh.h"
 #include "aapat/study/optimize_run.h"
 
 namespace aapat {
@@ -152,13 +153,28 @@ JsonObject figures_json(const RenderFigures& f) {
           {"flip", f.flip}};
 }
 
-JsonObject render_json(const std::string& scene, const std::string& texture,
-                       const std::string& pattern, const RenderSettings& s, const RenderResult& r) {
+JsonObject render_json(const std::string& scene_name, const Scene& scene,
+                       const std::string& texture, const std::string& pattern,
+                       const RenderSettings& s, const RenderResult& r) {
   JsonObject doc = json_report("render");
-  doc.update(JsonObject{{"scene", scene},
+  doc.update(JsonObject{{"scene", scene_name},
                         {"texture", texture.empty() ? JsonObject() : JsonObject(texture)},
                         {"width", s.width},
-                        {"height", s.height}});
+                        {"height", s.height},
+                        {"channels", r.image.channels}});
+  if (const auto* mesh = std::get_if<MeshScene>(&scene.shape)) {
+    const Mesh& m = mesh->view->mesh();
+    size_t textured = 0;
+    for (const MeshMaterial& mat : m.materials) textured += mat.texture[0] != nullptr;
+    JsonObject warnings = JsonObject::array();
+    for (const std::string& w : m.warnings) warnings.push_back(w);
+    doc["model"] = JsonObject{{"file", m.name},
+                              {"triangles", m.triangles.size()},
+                              {"vertices", m.positions.size()},
+                              {"materials", m.materials.size()},
+                              {"textured_materials", textured},
+                              {"warnings", warnings}};
+  }
   if (s.sampling.pattern)
     doc["pattern"] = pattern;
   else

@@ -64,11 +64,13 @@ JsonObject figures_json(const RenderFigures& figures);
 // One rendering (`aapat render --json`, aapat.render's values): scene,
 // texture, width, height, pattern (or generator and samples), filter,
 // samples_per_pixel, the shading keys, adaptive {...} when refined, and when
-// measured reference, rmse, max_deviation, ssim, flip. `scene`, `texture` and
-// `pattern` are the names the caller gave.
-JsonObject render_json(const std::string& scene, const std::string& texture,
-                       const std::string& pattern, const RenderSettings& settings,
-                       const RenderResult& result);
+// measured reference, rmse, max_deviation, ssim, flip; channels (1 grey, 3
+// colour), and for a mesh scene model {file, triangles, vertices, materials,
+// textured_materials, warnings}. `scene_name`, `texture` and `pattern` are the
+// names the caller gave.
+JsonObject render_json(const std::string& scene_name, const Scene& scene,
+                       const std::string& texture, const std::string& pattern,
+                       const RenderSettings& settings, const RenderResult& result);
 
 // `aapat diff`: reference, test, width, height, ppd, then rmse, psnr,
 // ssim, flip (the mean), flip_min, flip_max, flip_weighted_q1,
