@@ -8,8 +8,10 @@
 #include <array>
 #include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -215,6 +217,31 @@ OutputTransaction::~OutputTransaction() {
   g_created_dirs.clear();
   g_removals.clear();
   g_open = false;
+}
+
+void remove_orphaned_temporaries(const std::string& dir) {
+  using namespace std::chrono_literals;
+  std::error_code e;
+  const auto now = std::filesystem::file_time_type::clock::now();
+  for (const auto& entry : std::filesystem::directory_iterator(dir, e)) {
+    // NAME.tmp.PID.N, as temporary_name writes them.
+    const std::string name = entry.path().filename().string();
+    const size_t tmp = name.rfind(".tmp.");
+    if (tmp == std::string::npos) continue;
+    const std::string rest = name.substr(tmp + 5);
+    const size_t dot = rest.find('.');
+    if (dot == std::string::npos || dot == 0 ||
+        rest.find_first_not_of("0123456789.") != std::string::npos)
+      continue;
+    const long pid = std::strtol(rest.substr(0, dot).c_str(), nullptr, 10);
+    if (pid <= 0 || pid == static_cast<long>(::getpid())) continue;
+    // Its writer is gone (and the file is old enough that a writer on
+    // another machine sharing the folder would have finished).
+    const bool gone = ::kill(static_cast<pid_t>(pid), 0) == -1 && errno == ESRCH;
+    std::error_code age;
+    const auto written = std::filesystem::last_write_time(entry.path(), age);
+    if (gone && !age && now - written > 10min) std::filesystem::remove(entry.path(), e);
+  }
 }
 
 void remove_file_at_commit(const std::string& path) {

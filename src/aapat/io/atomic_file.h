@@ -24,6 +24,12 @@ void write_file_atomically(const std::string& path, std::string_view content);
 void write_file_now(const std::string& path, std::string_view content,
                     bool keep_on_rollback = false);
 
+// Deletes the temporaries (NAME.tmp.PID.N) in `dir` that a killed writer
+// left: those whose process is gone and that are over ten minutes old (a
+// writer on another machine sharing the folder is not seen by PID). Safe
+// while other processes write there.
+void remove_orphaned_temporaries(const std::string& dir);
+
 // Removes `path` when the open transaction commits (now when none is open):
 // an earlier run's output that this run's set of outputs no longer holds.
 void remove_file_at_commit(const std::string& path);

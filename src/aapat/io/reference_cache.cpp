@@ -46,6 +46,7 @@ std::string default_cache_dir() {
 }
 
 ReferenceSource cached_references(std::string dir, Warn warn) {
+  remove_orphaned_temporaries(dir);  // a killed run's half-written entries
   // Set by the first failure to write: warned once, not tried again.
   auto unwritable = std::make_shared<bool>(false);
   return [dir = std::move(dir), warn, unwritable](const Scene& scene, int width, int height,

@@ -1,7 +1,11 @@
 #include "aapat/io/reference_cache.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -55,6 +59,30 @@ TEST(ReferenceCache, StoresReadsBackAndRecomputesADamagedFile) {
   fs::resize_file(files[0], 100);
   EXPECT_EQ(cached(scene, 24, 20, r, 0.5).values, direct.values);
   EXPECT_EQ(cached(scene, 24, 20, r, 0.5).values, direct.values);
+  fs::remove_all(dir);
+}
+
+// A killed writer's temporary in the cache folder is removed by the next
+// run; a live process's (this one's, PID 1's) and a recent one stay.
+TEST(ReferenceCache, ALaterRunRemovesAKilledWritersTemporaries) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "aapat_reference_cache_orphans";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto old = fs::file_time_type::clock::now() - std::chrono::hours(1);
+  const long dead = 4194301;  // above any PID in use here (pid_max is 4194304 at most)
+  ASSERT_NE(::kill(static_cast<pid_t>(dead), 0), 0);
+  const fs::path orphan = dir / fmt::format("reference-1.bin.tmp.{}.0", dead);
+  const fs::path recent = dir / fmt::format("reference-2.bin.tmp.{}.0", dead);
+  const fs::path alive = dir / "reference-3.bin.tmp.1.0";
+  const fs::path mine =
+      dir / fmt::format("reference-4.bin.tmp.{}.0", static_cast<long>(::getpid()));
+  for (const fs::path& p : {orphan, recent, alive, mine}) std::ofstream(p) << "partial";
+  for (const fs::path& p : {orphan, alive, mine}) fs::last_write_time(p, old);
+  cached_references(dir.string());
+  EXPECT_FALSE(fs::exists(orphan));
+  EXPECT_TRUE(fs::exists(recent));
+  EXPECT_TRUE(fs::exists(alive));
+  EXPECT_TRUE(fs::exists(mine));
   fs::remove_all(dir);
 }
 
