@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -60,10 +61,20 @@ struct Staged {
   std::string path, tmp;
 };
 
+// The file a path names, however it is spelled (relative, with . or ..), so
+// that two outputs naming one file are seen to; the path itself when it
+// cannot be resolved.
+std::string file_identity(const std::string& path) {
+  std::error_code e;
+  const std::filesystem::path p = std::filesystem::weakly_canonical(path, e);
+  return e ? path : p.string();
+}
+
 // The open transaction's state; guarded by g_mutex.
 std::mutex g_mutex;
 bool g_open = false;
 std::vector<Staged> g_staged;
+std::set<std::string> g_staged_files;     // file_identity of every staged path
 std::vector<std::string> g_created_now;   // deleted on rollback
 std::vector<std::string> g_created_dirs;  // removed on rollback when empty, deepest first
 std::vector<std::string> g_removals;      // files removed at commit
@@ -127,22 +138,22 @@ void write_file_atomically(const std::string& path, std::string_view content) {
   std::error_code e;
   if (std::filesystem::is_directory(path, e))
     throw Error(fmt::format("cannot write '{}': it is a folder", path));
+  const std::string file = file_identity(path);
+  auto refuse_twice = [&] {
+    throw Error(fmt::format("two outputs of this command name the same file '{}'", path));
+  };
   {
     const std::lock_guard lock(g_mutex);
-    if (g_open) {
-      const auto same = [&](const Staged& s) {
-        std::error_code a, b;
-        return s.path == path || std::filesystem::weakly_canonical(s.path, a) ==
-                                     std::filesystem::weakly_canonical(path, b);
-      };
-      if (std::any_of(g_staged.begin(), g_staged.end(), same))
-        throw Error(fmt::format("two outputs of this command name the same file '{}'", path));
-    }
+    if (g_open && g_staged_files.count(file)) refuse_twice();
   }
   const std::string tmp = write_temporary(path, content);
   {
     const std::lock_guard lock(g_mutex);
     if (g_open) {
+      if (!g_staged_files.insert(file).second) {  // staged meanwhile by another thread
+        remove_temporary(tmp);
+        refuse_twice();
+      }
       g_staged.push_back({path, tmp});
       return;
     }
@@ -198,6 +209,7 @@ OutputTransaction::OutputTransaction() {
   if (g_open) throw Error("internal: an output transaction is already open");
   g_open = true;
   g_staged.clear();
+  g_staged_files.clear();
   g_created_now.clear();
   g_created_dirs.clear();
   g_removals.clear();
@@ -213,6 +225,7 @@ OutputTransaction::~OutputTransaction() {
             [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
   for (const std::string& dir : g_created_dirs) ::rmdir(dir.c_str());  // only if empty
   g_staged.clear();
+  g_staged_files.clear();
   g_created_now.clear();
   g_created_dirs.clear();
   g_removals.clear();
@@ -263,18 +276,13 @@ void OutputTransaction::commit() {
     const std::lock_guard lock(g_mutex);
     staged.swap(g_staged);
     removals.swap(g_removals);
+    g_staged_files.clear();
     g_created_now.clear();
     g_created_dirs.clear();
     g_open = false;
   }
-  // A path written twice keeps its last content.
+  // Every path is staged once (write_file_atomically refuses a second).
   for (size_t i = 0; i < staged.size(); ++i) {
-    bool superseded = false;
-    for (size_t j = i + 1; j < staged.size(); ++j) superseded |= staged[j].path == staged[i].path;
-    if (superseded) {
-      remove_temporary(staged[i].tmp);
-      continue;
-    }
     try {
       rename_into_place(staged[i].tmp, staged[i].path);
     } catch (const Error&) {
