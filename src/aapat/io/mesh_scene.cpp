@@ -7,18 +7,17 @@
 #include <nlohmann/json.hpp>
 
 #include "aapat/io/mesh_file.h"
+#include "aapat/io/scene_fields.h"
 
 namespace aapat {
 namespace {
 
-using json = nlohmann::json;
+using scene_fields::fail;
+using scene_fields::json;
+using scene_fields::number;
 
 // The orbit camera's defaults: a three-quarter view from a little above.
 constexpr double kDefaultYawDeg = 30, kDefaultPitchDeg = 20, kDefaultFovDeg = 40;
-
-[[noreturn]] void fail(std::string_view source, const std::string& message) {
-  throw Error(fmt::format("scene file {}: {}", source, message));
-}
 
 void only(const json& object, std::string_view source, const std::string& field,
           std::initializer_list<std::string_view> keys) {
@@ -29,15 +28,6 @@ void only(const json& object, std::string_view source, const std::string& field,
       fail(source, fmt::format("{}unknown field '{}' (expected {})",
                                field.empty() ? "" : field + ": ", key, list));
     }
-}
-
-double number(const json& v, std::string_view source, const std::string& field, double lo,
-              double hi) {
-  if (!v.is_number()) fail(source, field + ": expected a number");
-  const double x = v.get<double>();
-  if (!std::isfinite(x) || x < lo || x > hi)
-    fail(source, fmt::format("{}: {} is outside [{}, {}]", field, x, lo, hi));
-  return x;
 }
 
 Vec3 vec3(const json& v, std::string_view source, const std::string& field) {
@@ -83,23 +73,16 @@ MeshCamera camera(const json& c, const Mesh& mesh, std::string_view source) {
 
 }  // namespace
 
-bool is_mesh_scene_text(std::string_view text) {
-  const json doc = json::parse(text, nullptr, false);
-  return doc.is_object() && doc.contains("mesh");
+MeshSceneSpec mesh_scene_from_json(std::string_view text, const std::string& source) {
+  return mesh_scene_from_document(scene_fields::parse(text, source), source);
 }
 
-MeshSceneSpec mesh_scene_from_json(std::string_view text, const std::string& source) {
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {
-    fail(source, fmt::format("not valid JSON ({})", e.what()));
-  }
+MeshSceneSpec mesh_scene_from_document(const nlohmann::json& doc, const std::string& source) {
   if (!doc.is_object()) fail(source, "expected an object with \"mesh\"");
   only(doc, source, "", {"format", "mesh", "camera", "light", "background"});
   if (doc.contains("format") && doc["format"] != "aapat-scene")
     fail(source, "format: expected \"aapat-scene\"");
-  if (!doc["mesh"].is_string() || doc["mesh"].get<std::string>().empty())
+  if (!doc.contains("mesh") || !doc["mesh"].is_string() || doc["mesh"].get<std::string>().empty())
     fail(source, "mesh: expected the model's file name");
   const std::filesystem::path model =
       std::filesystem::path(source).parent_path() / doc["mesh"].get<std::string>();

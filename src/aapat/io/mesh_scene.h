@@ -14,6 +14,7 @@
 #pragma once
 
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 
@@ -31,9 +32,8 @@ struct MeshSceneSpec {
 // Parses and validates the file's text; `source` is its path (the model is
 // found beside it). Throws Error naming the file and the field.
 MeshSceneSpec mesh_scene_from_json(std::string_view text, const std::string& source);
-
-// Whether a scene file's text is a mesh scene (an object with "mesh").
-bool is_mesh_scene_text(std::string_view text);
+// The same from the parsed file (resolve_scene parses a scene file once).
+MeshSceneSpec mesh_scene_from_document(const nlohmann::json& doc, const std::string& source);
 
 // The scene for a width x height image: its red channel (render/color_render.h
 // renders all three).

@@ -8,25 +8,15 @@
 
 #include "aapat/io/atomic_file.h"
 #include "aapat/io/mesh_scene.h"
+#include "aapat/io/scene_fields.h"
 #include "aapat/io/texture_file.h"
 
 namespace aapat {
 namespace {
 
-using json = nlohmann::json;
-
-[[noreturn]] void fail(std::string_view source, const std::string& message) {
-  throw Error(fmt::format("scene file {}: {}", source, message));
-}
-
-double number(const json& v, std::string_view source, const std::string& field, double lo,
-              double hi) {
-  if (!v.is_number()) fail(source, field + ": expected a number");
-  const double x = v.get<double>();
-  if (!std::isfinite(x) || x < lo || x > hi)
-    fail(source, fmt::format("{}: {} is outside [{}, {}]", field, x, lo, hi));
-  return x;
-}
+using scene_fields::fail;
+using scene_fields::json;
+using scene_fields::number;
 
 constexpr double kFar = 1e7;  // coordinates beyond this many pixels are a mistake
 
@@ -94,12 +84,10 @@ void read_texture_fields(const json& s, std::string_view source, const std::stri
 }  // namespace
 
 ShapesScene scene_from_json(std::string_view text, std::string_view source) {
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {  // parse errors, invalid UTF-8 and number overflow
-    fail(source, fmt::format("not valid JSON ({})", e.what()));
-  }
+  return scene_from_document(scene_fields::parse(text, source), source);
+}
+
+ShapesScene scene_from_document(const nlohmann::json& doc, std::string_view source) {
   if (!doc.is_object()) fail(source, "expected an object with \"shapes\"");
   for (const auto& [key, value] : doc.items())
     if (key != "format" && key != "background" && key != "shapes")
@@ -161,16 +149,14 @@ Scene resolve_scene(const std::string& spec_or_path, int width, int height,
                     const std::string& texture) {
   std::optional<Scene> read;
   if (spec_or_path.ends_with(".json")) {
-    const std::string text = read_file(spec_or_path, "scene file");
-    if (is_mesh_scene_text(text)) {
+    // Parsed once; "mesh" says which kind of scene file it is.
+    const json doc = scene_fields::parse(read_file(spec_or_path, "scene file"), spec_or_path);
+    if (doc.is_object() && doc.contains("mesh")) {
       if (!texture.empty())
-        throw Error(
-            fmt::format("scene file {}: a mesh scene takes its textures from its model, "
-                        "not --texture",
-                        spec_or_path));
-      return make_mesh_scene(mesh_scene_from_json(text, spec_or_path), width, height);
+        fail(spec_or_path, "a mesh scene takes its textures from its model, not --texture");
+      return make_mesh_scene(mesh_scene_from_document(doc, spec_or_path), width, height);
     }
-    read.emplace(scene_from_json(text, spec_or_path));
+    read.emplace(scene_from_document(doc, spec_or_path));
   }
   Scene scene = read ? std::move(*read) : make_scene(spec_or_path, width, height);
   if (!texture.empty()) scene = with_texture(std::move(scene), texture);

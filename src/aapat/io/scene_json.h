@@ -2,6 +2,7 @@
 // user can build a test scene without writing code. Layout: docs/renderer.md.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 
@@ -16,6 +17,8 @@ inline constexpr size_t kMaxSceneVertices = 1'000'000;
 
 // `source` names the text in error messages (a file name). Validates.
 ShapesScene scene_from_json(std::string_view text, std::string_view source);
+// The same from the parsed file.
+ShapesScene scene_from_document(const nlohmann::json& doc, std::string_view source);
 
 // A scene file (a path ending in .json) or a built-in scene spec
 // (make_scene), with `texture` (io/texture_file.h) on what takes one; every
