@@ -5,8 +5,10 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <ostream>
 
@@ -16,6 +18,8 @@
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/png_image.h"
+#include "aapat/io/scene_json.h"
+#include "aapat/temporal/engine_taa.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/taa_render.h"
 #include "cli/animation_options.h"
@@ -71,7 +75,52 @@ struct AnimateOptions : AnimationOptions {
   std::string sequence, csv;
   ModelOptions model;
   bool cut = false, still = false;
+  // Any scene and its motion; engine TAA (--taa) at a render scale.
+  std::string motion, taa;
+  std::vector<std::string> taa_set;
+  double ratio = 1;
+  int warmup = -1;
 };
+
+bool is_builtin_animation(const std::string& name) {
+  return name == "circle" || name == "triangle";
+}
+
+// The scene of a scene spec or file and its motion (pan by default; --static: none).
+void resolve_moving_scene(AnimateOptions& o, AnimationSettings& a) {
+  if (is_builtin_animation(a.animation) && o.motion.empty()) return;
+  if (is_builtin_animation(a.animation))
+    throw Error(
+        fmt::format("--motion: the {} animation has its own motion; give a scene "
+                    "(checkerboard, a scene file, ...) to move it",
+                    a.animation));
+  a.scene = resolve_scene(a.animation, a.width, a.height);
+  for (const std::string& warning : scene_warnings(*a.scene))
+    std::cerr << "aapat: warning: " << warning << "\n";
+  a.motion =
+      make_motion(o.still ? "static" : (o.motion.empty() ? "pan" : o.motion), a.width, a.height);
+}
+
+std::vector<std::pair<std::string, std::string>> taa_overrides(
+    const std::vector<std::string>& items) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& item : items) {
+    const size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw Error(fmt::format("--taa-set '{}': give KEY=VALUE (e.g. history=catmull-rom-9)", item));
+    out.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+  }
+  return out;
+}
+
+std::string engine_csv(const EngineResult& r) {
+  std::string csv = "frame,rmse,max_deviation,flip,flicker,ghosting,sharpness\n";
+  for (size_t f = 0; f < r.frames.size(); ++f)
+    csv += fmt::format("{},{:.6f},{},{:.6f},{:.6f},{:.6f},{:.6f}\n", f, r.frames[f].rmse,
+                       r.frames[f].max_deviation, r.frames[f].flip, r.frames[f].flicker,
+                       r.frames[f].ghosting, r.frames[f].sharpness);
+  return csv;
+}
 
 std::string taa_csv(const TaaResult& r) {
   std::string csv = "frame,rmse,max_deviation,ssim,flip,flicker\n";
@@ -83,8 +132,89 @@ std::string taa_csv(const TaaResult& r) {
   return csv;
 }
 
-void run_animate(AnimateOptions& o, std::ostream& out) {
-  const AnimationSettings a = o.settings();
+// A GIF frame is grey: a colour frame's luma (Rec. 601, as the GIF viewer's eye).
+std::vector<uint8_t> grey_of(const std::vector<uint8_t>& levels, int channels) {
+  if (channels == 1) return levels;
+  std::vector<uint8_t> grey(levels.size() / 3);
+  for (size_t i = 0; i < grey.size(); ++i)
+    grey[i] = static_cast<uint8_t>(
+        std::lround(0.299 * levels[3 * i] + 0.587 * levels[3 * i + 1] + 0.114 * levels[3 * i + 2]));
+  return grey;
+}
+
+void run_engine(const AnimateOptions& o, const AnimationSettings& a, const Sequence& sequence,
+                const EngineTaa& taa, const std::function<void(int, const Image&)>& on_frame,
+                const std::string& frames_dir, const GreyFrames& gif, std::ostream& out) {
+  EngineRun run;
+  run.scene = a.scene ? *a.scene : animation_frame(a.animation, a.width, a.height, 0, a.frames);
+  run.motion = a.motion;
+  if (!a.scene)
+    throw Error(
+        fmt::format("--taa: give a scene to move (checkerboard, a scene file, ...) with "
+                    "--motion; the {} animation moves by its own rule",
+                    a.animation));
+  run.width = a.width;
+  run.height = a.height;
+  run.frames = a.frames;
+  run.warmup = o.cut ? 0 : (o.warmup >= 0 ? o.warmup : 64);
+  run.reference = a.reference;
+  const EngineResult r = render_engine_taa(run, sequence, taa, on_frame, o.reference.source());
+  if (!o.csv.empty()) write_output(o.csv, engine_csv(r), out);
+  if (!o.gif.empty()) write_gif(o.gif, gif);
+  if (!o.mp4.empty()) write_mp4(frames_dir, o.mp4, o.fps, a.frames);
+  if (!o.histogram.empty()) throw Error("--histogram: not in engine TAA (use --csv)");
+  if (o.json) {
+    JsonObject doc = json_report("animate");
+    JsonObject::array_t rows;
+    for (const EngineFrame& f : r.frames)
+      rows.push_back(JsonObject{{"rmse", f.rmse},
+                                {"max_deviation", f.max_deviation},
+                                {"flip", f.flip},
+                                {"flicker", f.flicker},
+                                {"ghosting", f.ghosting},
+                                {"sharpness", f.sharpness}});
+    doc.update(JsonObject{{"animation", a.animation},
+                          {"motion", a.motion.spec},
+                          {"pattern", sequence.name},
+                          {"phases", sequence.period()},
+                          {"taa", taa.preset},
+                          {"taa_settings", engine_taa_text(taa)},
+                          {"ratio", taa.ratio},
+                          {"render_width", r.render_width},
+                          {"render_height", r.render_height},
+                          {"frames", a.frames},
+                          {"warmup", run.warmup},
+                          {"width", a.width},
+                          {"height", a.height},
+                          {"rmse", r.total.rmse},
+                          {"max_deviation", r.total.max_deviation},
+                          {"mean_flip", r.mean_flip},
+                          {"flicker", r.flicker},
+                          {"ghosting", r.ghosting},
+                          {"sharpness", r.sharpness},
+                          {"rows", rows}});
+    out << json_text(doc);
+    return;
+  }
+  out << fmt::format(
+      "{} ({}), {} frames of {}x{} after {} warm-up, {} under {}: RMSE {:.3f}, max deviation {}, "
+      "mean FLIP {:.4f}, flicker {:.3f}, ghosting {:.3f}, sharpness {:.3f}\n",
+      a.animation, a.motion.spec, a.frames, a.width, a.height, run.warmup, sequence.name,
+      engine_taa_text(taa), r.total.rmse, r.total.max_deviation, r.mean_flip, r.flicker, r.ghosting,
+      r.sharpness);
+}
+
+void run_animate(AnimateOptions& o, std::ostream& out, bool ratio_given) {
+  AnimationSettings a = o.settings();
+  const bool engine = !o.taa.empty();
+  if (!engine && (ratio_given || !o.taa_set.empty() || o.warmup >= 0))
+    throw Error(
+        "--ratio, --taa-set and --warmup belong to engine TAA: add --taa PRESET "
+        "(ue4, fsr2, godot, bevy)");
+  if (engine && !o.pattern.empty())
+    throw Error("--taa renders a jitter sequence (--sequence, or the preset's own): not --pattern");
+  if (engine) check_ratio(o.ratio);
+  resolve_moving_scene(o, a);
   for (const auto& [path, ext] : {std::pair{o.gif, ".gif"}, std::pair{o.mp4, ".mp4"}})
     if (!path.empty() && !path.ends_with(ext))
       throw Error(fmt::format("'{}' must end in {}", path, ext));
@@ -107,16 +237,23 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
       if (!dir.empty()) std::filesystem::remove_all(dir, ec);
     }
   } cleanup{frames_dir};
-  if (o.pattern.empty() == o.sequence.empty())
+  if (!engine && o.pattern.empty() == o.sequence.empty())
     throw Error("animate: give either --pattern or --sequence (temporal accumulation)");
-  if (o.sequence.empty() && (o.cut || o.still || !o.csv.empty()))
+  if (!engine && o.sequence.empty() && (o.cut || o.still || !o.csv.empty()))
     throw Error("--cut, --static and --csv belong to the temporal mode: add --sequence");
   if (!o.sequence.empty() && !o.filter.empty())
     throw Error("--filter: a sequence's frames reconstruct with their own weights or --resolve");
   Sampling s;
   std::optional<Sequence> sequence;
   std::optional<Accumulation> model;
-  if (o.sequence.empty()) {
+  std::optional<EngineTaa> taa;
+  if (engine) {
+    taa = make_engine_taa(o.taa, o.ratio, taa_overrides(o.taa_set));
+    std::string warning;
+    sequence = resolve_sequence_for_ratio(o.sequence.empty() ? taa->jitter : o.sequence, o.ratio,
+                                          ratio_given ? &warning : nullptr);
+    if (!warning.empty()) std::cerr << "aapat: warning: " << warning << "\n";
+  } else if (o.sequence.empty()) {
     s.pattern = resolve_pattern(o.pattern);
   } else {
     sequence = resolve_sequence(o.sequence);
@@ -133,20 +270,25 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
   GreyFrames gif{a.width, a.height, std::max(2, 100 / o.fps), {}};
   const auto on_frame = [&](int f, const Image& img) {
     const std::string name = fmt::format("frame-{:0{}d}.png", f, frame_digits(a.frames));
-    const std::string png = png_gray_bytes(img.width, img.height, level_pixels(img));
+    const std::vector<uint8_t> levels = level_pixels(img);
+    const std::string png = png_bytes(img.width, img.height, img.channels, levels);
     if (!frames_dir.empty()) write_file_now(frames_dir + "/" + name, png);  // ffmpeg's, now
     if (!o.frames_dir.empty()) write_file_atomically(o.frames_dir + "/" + name, png);
-    if (!o.gif.empty()) gif.frames.push_back(level_pixels(img));
+    if (!o.gif.empty()) gif.frames.push_back(grey_of(levels, img.channels));
     bar.update(f + 1, a.frames, "");
   };
-  std::optional<TaaResult> taa;
+  if (taa) {
+    run_engine(o, a, *sequence, *taa, on_frame, frames_dir, gif, out);
+    return;
+  }
+  std::optional<TaaResult> linear;
   std::optional<AnimationResult> plain;
   if (sequence)
-    taa = render_taa(a, *sequence, *model, !o.cut, o.still, on_frame, o.reference.source());
+    linear = render_taa(a, *sequence, *model, !o.cut, o.still, on_frame, o.reference.source());
   else
     plain = animate(a, s, filter, on_frame, o.reference.source());
-  const ImageError e = taa ? taa->total : plain->total;
-  if (taa && !o.csv.empty()) write_output(o.csv, taa_csv(*taa), out);
+  const ImageError e = linear ? linear->total : plain->total;
+  if (linear && !o.csv.empty()) write_output(o.csv, taa_csv(*linear), out);
   if (!o.gif.empty()) write_gif(o.gif, gif);
   if (!o.mp4.empty()) write_mp4(frames_dir, o.mp4, o.fps, a.frames);
   if (!o.histogram.empty()) {
@@ -165,15 +307,15 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
                           {"height", a.height},
                           {"rmse", e.rmse},
                           {"max_deviation", e.max_deviation}});
-    if (taa) {
+    if (linear) {
       doc["model"] = o.model.text();
       doc["steady"] = !o.cut;
       doc["static"] = o.still;
-      doc["mean_ssim"] = taa->mean_ssim ? JsonObject(*taa->mean_ssim) : nullptr;
-      doc["mean_flip"] = taa->mean_flip;
-      doc["flicker"] = taa->flicker;
+      doc["mean_ssim"] = linear->mean_ssim ? JsonObject(*linear->mean_ssim) : nullptr;
+      doc["mean_flip"] = linear->mean_flip;
+      doc["flicker"] = linear->flicker;
       JsonObject::array_t rows;
-      for (const TaaFrame& f : taa->frames)
+      for (const TaaFrame& f : linear->frames)
         rows.push_back(JsonObject{{"rmse", f.rmse},
                                   {"max_deviation", f.max_deviation},
                                   {"ssim", f.ssim ? JsonObject(*f.ssim) : nullptr},
@@ -191,14 +333,14 @@ void run_animate(AnimateOptions& o, std::ostream& out) {
     out << json_text(doc);
     return;
   }
-  if (taa) {
+  if (linear) {
     out << fmt::format(
         "{} animation{}, {} frames of {}x{}, {} under {}{}: RMSE {:.3f}, max deviation {}, mean "
         "SSIM {}, mean FLIP {:.4f}, flicker {:.3f} levels per pixel and frame\n",
         a.animation, o.still ? " (static)" : "", a.frames, a.width, a.height, sequence->name,
         o.model.text(), o.cut ? " from a cut" : " in steady state", e.rmse, e.max_deviation,
-        taa->mean_ssim ? fmt::format("{:.4f}", *taa->mean_ssim) : "-", taa->mean_flip,
-        taa->flicker);
+        linear->mean_ssim ? fmt::format("{:.4f}", *linear->mean_ssim) : "-", linear->mean_flip,
+        linear->flicker);
     return;
   }
   out << fmt::format(
@@ -213,8 +355,25 @@ Action add_animate_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("animate", "render an animation with a pattern against a reference");
   auto o = std::make_shared<AnimateOptions>();
-  cmd->add_option("animation", o->a.animation, "circle (translating) or triangle (rotating)")
+  cmd->add_option("animation", o->a.animation,
+                  "circle (translating) or triangle (rotating), or any scene render takes (a "
+                  "built-in spec, a scene file, a mesh scene) moved by --motion")
       ->required();
+  cmd->add_option("--motion", o->motion,
+                  "a scene's motion: pan:dx=DX,dy=DY (display pixels per frame; the default, "
+                  "0.5 and 0.25), rotate:deg=D,cx=X,cy=Y, static");
+  cmd->add_option("--taa", o->taa,
+                  "engine TAA: a preset, ue4, fsr2, godot or bevy (docs/temporal.md, Engine "
+                  "presets); the sequence defaults to the preset's own jitter");
+  cmd->add_option("--taa-set", o->taa_set,
+                  "override one engine TAA setting, KEY=VALUE (reconstruct, history, rectify, "
+                  "box, gamma, alpha, alpha_min, alpha_max, count_step, count_max, "
+                  "count_max_motion); repeatable");
+  auto* ratio = cmd->add_option("--ratio", o->ratio,
+                                "engine TAA render scale: display / render resolution (>= 1); a "
+                                "generator without frames= takes int(8 R^2) phases");
+  cmd->add_option("--warmup", o->warmup,
+                  "engine TAA: frames rendered before the measured ones (default 64; --cut: 0)");
   cmd->add_option("--pattern", o->pattern, "catalog pattern or pattern file");
   cmd->add_option("--sequence", o->sequence,
                   "temporal mode: a sequence file or generator spec (halton:frames=8, ...), each "
@@ -235,7 +394,7 @@ Action add_animate_command(CLI::App& app) {
       ->check(CLI::Range(1, 100));
   cmd->add_option("--histogram", o->histogram, "squared-error histogram of all frames (.csv)");
   cmd->add_flag("--json", o->json, "print JSON");
-  return [o](std::ostream& out) { run_animate(*o, out); };
+  return [o, ratio](std::ostream& out) { run_animate(*o, out, ratio->count() > 0); };
 }
 
 }  // namespace aapat

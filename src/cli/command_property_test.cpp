@@ -193,7 +193,7 @@ std::vector<std::string> metric_args(std::vector<std::string> args) {
 
 // A random command line of one of the commands, small enough to run fast.
 std::vector<std::string> random_command() {
-  const int which = uniform(0, 16);
+  const int which = uniform(0, 17);
   std::vector<std::string> a;
   switch (which) {
     case 0:
@@ -311,6 +311,32 @@ std::vector<std::string> random_command() {
       break;
     case 15:
       a = {"table2", "--size", *one_of({"8", "0"}), "--frames", "1", "--reference-samples", "4"};
+      maybe_flag(a, "--json");
+      break;
+    case 16:  // engine TAA: presets, ratios, motions, overrides, sequences
+      a = {"animate",
+           *one_of({"checkerboard", "zoneplate", "circle", "good.json", "nosuch"}),
+           "--taa",
+           *one_of({"ue4", "fsr2", "godot", "bevy", "nosuch"}),
+           "--size",
+           *one_of({"8", "12"}),
+           "--frames",
+           *one_of({"1", "3", "0"}),
+           "--warmup",
+           *one_of({"2", "-3", "100000"}),
+           "--reference-samples",
+           "4"};
+      maybe(a, "--ratio", {"1", "1.5", "3", "0.5", "nan", "inf", "9"});
+      maybe(a, "--motion",
+            {"pan:dx=0.5,dy=0.25", "rotate:deg=2", "static", "pan:dx=100", "pan:foo=1",
+             "rotate:deg=nan", "orbit"});
+      maybe(a, "--taa-set",
+            {"history=catmull-rom-5", "gamma=1.5", "alpha=0.1", "gamma=-1", "bogus=1", "history",
+             "reconstruct=gaussian:sigma=0.5,radius=1.5", "rectify=sideways"});
+      maybe(a, "--sequence", {"halton:frames=2", "r2", "aapat-taa-8", "msaa-alternating"});
+      maybe(a, "--frames-dir", {"frames", "good.json"});
+      maybe(a, "--csv", {"rows.csv"});
+      maybe_flag(a, "--cut");
       maybe_flag(a, "--json");
       break;
   }

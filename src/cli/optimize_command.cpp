@@ -4,9 +4,11 @@
 
 #include <tbb/task_arena.h>
 
+#include <iostream>
 #include <memory>
 #include <ostream>
 
+#include "aapat/core/filter_catalog.h"
 #include "aapat/core/hardware_layout.h"
 #include "aapat/core/lattice.h"
 #include "aapat/generate/enumerate.h"
@@ -17,6 +19,7 @@
 #include "aapat/optimize/lattice_search.h"
 #include "aapat/optimize/multistart.h"
 #include "aapat/study/optimize_run.h"
+#include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/sequence_optimizer.h"
 #include "aapat/temporal/temporal_json.h"
@@ -98,6 +101,10 @@ struct OptimizeOptions {
   std::string frame_measure = "worst";
   bool equal_weights = false;
   ModelOptions model;
+  // --ratio R: the jitter of an upscale from display / R, reconstructed by --reconstruct.
+  double ratio = 1;
+  bool ratio_given = false;
+  std::string reconstruct = "lanczos:lobes=2";
 };
 
 // `optimize --sequence K`: the temporal search (temporal/sequence_optimizer.h).
@@ -122,6 +129,15 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   s.seed = o.seed;
   s.iterations = o.iterations;
   if (!o.api.empty()) s.profile = &api_profile(o.api);
+  if (o.ratio_given) {
+    s.ratio = o.ratio;
+    s.reconstruction = make_filter(o.reconstruct);
+    if (s.frames < upscaler_phase_count(o.ratio))
+      std::cerr << fmt::format(
+          "aapat: warning: --sequence {} is shorter than the upscaler's rule int(8 R^2) = {} at "
+          "ratio {:g} (FSR 2's ffxFsr2GetJitterPhaseCount)\n",
+          s.frames, upscaler_phase_count(o.ratio), o.ratio);
+  }
   SequenceSearchResult r;
   try {
     tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
@@ -134,8 +150,12 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
     out << json_text(sequence_search_json(s, o.model.text(), objective, r));
     return;
   }
-  out << fmt::format("optimized {} frames of {} sample(s) under {}, {}\n", s.frames,
-                     s.samples_per_frame, o.model.text(), objective.caption());
+  out << fmt::format("optimized {} frames of {} sample(s) under {}{}, {}\n", s.frames,
+                     s.samples_per_frame, o.model.text(),
+                     s.reconstruction ? fmt::format(", upscaled {:g}x through {}", s.ratio,
+                                                    s.reconstruction->name())
+                                      : "",
+                     objective.caption());
   out << fmt::format(
       "J = {} E2 + {} x mean flicker: {:.5f} (worst E2 {:.5f}, mean E2 {:.5f}, mean flicker "
       "{:.5f}); Halton(2,3) of the same length {:.5f}; best of {} starts: start {}\n",
@@ -281,6 +301,14 @@ Action add_optimize_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"worst", "mean"}));
   o->model.add_to(cmd);
+  cmd->add_option("--ratio", o->ratio,
+                  "with --sequence: optimize the jitter of an upscale from display / R (R >= 1), "
+                  "each display pixel reconstructed from the render pixels around it "
+                  "(docs/temporal.md, the linear model of upscaling)")
+      ->each([o](const std::string&) { o->ratio_given = true; });
+  cmd->add_option("--reconstruct", o->reconstruct,
+                  "with --ratio: the reconstruction filter over render pixels")
+      ->capture_default_str();
 
   auto* starts_option = cmd->get_option("--starts");
   return [o, starts_option](std::ostream& out) { run_optimize(*o, starts_option, out); };

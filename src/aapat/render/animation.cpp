@@ -6,6 +6,15 @@
 
 namespace aapat {
 
+Scene animation_scene(const AnimationSettings& a, int frame) {
+  if (a.scene) return moved_scene(*a.scene, a.motion, frame);
+  return animation_frame(a.animation, a.width, a.height, frame, a.frames);
+}
+
+bool animation_moves(const AnimationSettings& a) {
+  return !a.scene || a.motion.moving();
+}
+
 AnimationResult animate(const AnimationSettings& a, const Sampling& sampling,
                         const std::optional<Filter>& filter,
                         const std::function<void(int, const Image&)>& on_frame,
@@ -15,10 +24,10 @@ AnimationResult animate(const AnimationSettings& a, const Sampling& sampling,
   ImageError& total = r.total;
   double pixels = 0, flip_sum = 0;
   for (int f = 0; f < a.frames; ++f) {
-    const Scene scene = animation_frame(a.animation, a.width, a.height, f, a.frames);
+    const Scene scene = animation_scene(a, f);
     const Image image = render(scene, a.width, a.height, sampling, filter);
     ReferenceSettings ref = a.reference;
-    ref.seed = frame_reference_seed(ref.seed, f);
+    ref.seed = frame_reference_seed(ref.seed, animation_moves(a) ? f : 0);
     const Image reference = source(scene, a.width, a.height, ref, image.offset);
     const ImageError e = compare(image, reference);
     for (int i = 0; i < 256; ++i) total.count[i] += e.count[i];

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "aapat/render/image_error.h"
+#include "aapat/render/motion.h"
 #include "aapat/render/reference.h"
 #include "aapat/render/renderer.h"
 
@@ -17,6 +18,9 @@ namespace aapat {
 
 struct AnimationSettings {
   std::string animation = "circle";
+  // Any scene instead, moved by `motion` (render/motion.h); frame 0 is the scene as given.
+  std::optional<Scene> scene;
+  Motion motion;
   int width = 64, height = 64, frames = 32;
   // Hasselgren's animations: 256 jittered samples; frame f's seed is frame_reference_seed(seed, f).
   ReferenceSettings reference{256, "mitchell", 1};
@@ -33,6 +37,11 @@ struct AnimationResult {
   std::vector<AnimationFrame> frames;
   double mean_flip = 0;  // over frames
 };
+
+// Frame f's scene: the animation's, or the scene moved f steps.
+Scene animation_scene(const AnimationSettings& settings, int frame);
+// Whether frame f differs from frame 0 (each frame needs its own reference).
+bool animation_moves(const AnimationSettings& settings);
 
 // Calls on_frame(frame, image) for each frame if given (to write PNGs).
 // References come from `references` (render_reference when empty).

@@ -173,6 +173,31 @@ const SequenceRegistry& sequence_registry() {
                           radical_inverse_of(uint64_t(i), b2) - 0.5});
           return jitter_sequence(s.canonical(), "Halton jitter", at);
         }},
+       {{"ue4-halton",
+         "Unreal Engine 4's jitter: Halton(2,3) (u1, u2) warped to a Gaussian of deviation "
+         "sigma windowed to radius 1/2 (Box-Muller: r = sigma sqrt(-2 ln((1 - u1) w + u1)), "
+         "w = exp(-(1/2)^2 / (2 sigma^2)), angle 2 pi u2)",
+         "UE4 SceneVisibility.cpp, r.TemporalAASamples 8: Halton(Index + 1, 2 and 3), "
+         "Sigma = 0.47f * r.TemporalAAFilterSize (1)",
+         {{"frames", "8", "phases"},
+          {"sigma", "0.47", "deviation in pixels"},
+          {"start", "1", "first index"}}},
+        [](const Spec& s, const std::optional<Pattern>&) {
+          const int frames = s.whole("frames", 1, kMaxSequenceFrames),
+                    start = s.whole("start", 0, 1 << 30);
+          const double sigma = s.in_range("sigma", 1e-3, 16, true);
+          const double window = std::exp(-0.5 * (0.5 / sigma) * (0.5 / sigma));
+          std::vector<Vec2> at;
+          for (int i = start; i < start + frames; ++i) {
+            const double u1 = radical_inverse_of(uint64_t(i), 2),
+                         u2 = radical_inverse_of(uint64_t(i), 3);
+            const double r = sigma * std::sqrt(-2 * std::log((1 - u1) * window + u1)),
+                         a = 2 * kPi * u2;
+            at.push_back(
+                {std::clamp(r * std::cos(a), -0.5, 0.5), std::clamp(r * std::sin(a), -0.5, 0.5)});
+          }
+          return jitter_sequence(s.canonical(), "Unreal Engine 4's Gaussian-warped Halton", at);
+        }},
        {{"r2",
          "Roberts' R2 jitter: (1/2 + n/g, 1/2 + n/g^2) mod 1 - 1/2, g the plastic number",
          "Roberts 2018, 'The unreasonable effectiveness of quasirandom sequences'",

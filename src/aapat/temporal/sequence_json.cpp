@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -206,6 +207,32 @@ Sequence resolve_sequence(const std::string& spec_or_path, const std::optional<P
         name, did_you_mean(name, names), sequence_registry().names(), fmt::join(optimized, ", ")));
   }
   return make_sequence(spec_or_path, pattern);
+}
+
+Sequence resolve_sequence_for_ratio(const std::string& spec_or_path, double ratio,
+                                    std::string* warning) {
+  const int rule = upscaler_phase_count(ratio);
+  std::string spec = spec_or_path;
+  const bool generator =
+      sequence_registry().contains(spec_or_path) && !std::filesystem::is_regular_file(spec_or_path);
+  if (generator) {
+    const auto* entry = sequence_registry().find(split_spec(spec_or_path).first);
+    const bool takes_frames = std::any_of(entry->info.params.begin(), entry->info.params.end(),
+                                          [](const ParamInfo& p) { return p.key == "frames"; });
+    const std::string params(split_spec(spec_or_path).second);
+    const bool given =
+        params.starts_with("frames=") || params.find(",frames=") != std::string::npos;
+    if (takes_frames && !given)
+      spec = fmt::format("{}:{}frames={}", split_spec(spec_or_path).first,
+                         params.empty() ? "" : params + ",", rule);
+  }
+  Sequence s = resolve_sequence(spec);
+  if (warning && s.period() < rule)
+    *warning = fmt::format(
+        "sequence {} has {} phases, fewer than the upscaler's rule int(8 R^2) = {} at ratio {:g} "
+        "(FSR 2's ffxFsr2GetJitterPhaseCount): some display pixels get no sample of their own",
+        s.name, s.period(), rule, ratio);
+  return s;
 }
 
 }  // namespace aapat

@@ -37,4 +37,10 @@ std::vector<SpecInfo> sequence_catalog();
 Sequence resolve_sequence(const std::string& spec_or_path,
                           const std::optional<Pattern>& pattern = {});
 
+// The same for an upscale by `ratio`: a generator without frames= takes the
+// upscaler's phase count, int(8 ratio^2) (upscaler_phase_count). A sequence
+// shorter than that rule gets a warning line naming the rule in `warning`.
+Sequence resolve_sequence_for_ratio(const std::string& spec_or_path, double ratio,
+                                    std::string* warning);
+
 }  // namespace aapat

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <nlopt.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +14,10 @@
 #include "aapat/core/gradient.h"
 #include "aapat/core/lattice.h"
 #include "aapat/optimize/family.h"
+#include "aapat/temporal/engine_taa_settings.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/temporal_metrics.h"
+#include "aapat/temporal/upscale_model.h"
 #include "aapat/work/byte_codec.h"
 #include "aapat/work/work_items.h"
 
@@ -23,6 +26,8 @@ namespace {
 
 constexpr double kBound = 0.5 - 1e-6;  // a jitter stays inside its pixel
 constexpr double kWeightBound = 2;     // |each free weight| of an MSAA frame
+// Subplex's evaluations of the upscale's J per start (each a few tens of ms).
+constexpr int kMaxUpscaleEvaluations = 400;
 
 // Everything one evaluation of the epigraph's constraints needs, allocated once.
 struct Epigraph {
@@ -375,6 +380,19 @@ void validate(const SequenceSearch& s) {
     throw ParameterError("starts", fmt::format(" {}: expected 1 to 100000", s.starts));
   if (s.iterations < 1)
     throw ParameterError("iterations", fmt::format(" {}: at least 1", s.iterations));
+  if (s.reconstruction) {
+    check_ratio(s.ratio);
+    if (s.samples_per_frame != 1)
+      throw ParameterError(
+          "samples-per-frame",
+          fmt::format(" {}: an upscale jitters one sample per render pixel", s.samples_per_frame));
+    if (s.profile)
+      throw ParameterError("api",
+                           ": an upscale's jitter is a projection offset, not an API's "
+                           "sample lattice; give no --api with --ratio");
+  } else if (s.ratio != 1) {
+    throw ParameterError("ratio", fmt::format(" {}: give the reconstruction filter too", s.ratio));
+  }
   if (s.profile && s.samples_per_frame > s.profile->max_samples)
     throw ParameterError(
         "api", fmt::format(" {} takes at most {} samples per pixel, not {}", s.profile->name,
@@ -387,29 +405,18 @@ double frame_term(const SequenceObjective& o, const SequenceSearch& s) {
   return s.frame_measure == FrameMeasure::mean ? o.mean_e2 : o.worst_e2;
 }
 
-// Every steady phase reads the same samples (all the frames') with other
-// weights, so each angle's projections are sorted once for all the phases'
-// E1 and all the transitions' flicker: O(angles (N log N + K N)) instead of
-// O(angles K N log N). One-pixel frames without a resolve only.
-SequenceObjective one_pixel_objective(const Sequence& seq, const SequenceSearch& s,
-                                      const Metric& metric) {
-  const int period = seq.period();
-  std::vector<double> x, y, w;  // every sample, its frame's weight within the frame
-  std::vector<int> frame;
-  for (int f = 0; f < period; ++f) {
-    const Kernel k = make_kernel(seq.frames[static_cast<size_t>(f)], 0);
-    for (int i = 0; i < k.size(); ++i) {
-      x.push_back(k.x[static_cast<size_t>(i)]);
-      y.push_back(k.y[static_cast<size_t>(i)]);
-      w.push_back(k.w[static_cast<size_t>(i)]);
-      frame.push_back(f);
-    }
-  }
+// The terms of samples that every steady phase reads with other weights
+// (x, y, the weight within the frame, the frame), added into e1 and flicker
+// (angles x period, each angle's term): each angle's projections are sorted
+// once for all the phases' E1 and all the transitions' flicker, O(angles
+// (N log N + K N)) instead of O(angles K N log N).
+void add_shared_sample_terms(const std::vector<double>& x, const std::vector<double>& y,
+                             const std::vector<double>& w, const std::vector<int>& frame,
+                             const std::vector<std::vector<double>>& phase, const Metric& metric,
+                             double scale, std::vector<double>& e1, std::vector<double>& flicker) {
   const size_t n = w.size(), angles = static_cast<size_t>(metric.angle_count());
-  std::vector<std::vector<double>> phase;
-  for (int k = 0; k < period; ++k) phase.push_back(phase_weights(s.model, period, k, true));
-  std::vector<double> p(n), weight(n), e1(angles * static_cast<size_t>(period)),
-      flicker(angles * static_cast<size_t>(period));
+  const int period = static_cast<int>(phase.size());
+  std::vector<double> p(n), weight(n);
   std::vector<size_t> order(n);
   for (size_t a = 0; a < angles; ++a) {
     const double nx = -metric.sin(static_cast<int>(a)), ny = metric.cos(static_cast<int>(a));
@@ -421,8 +428,8 @@ SequenceObjective one_pixel_objective(const Sequence& seq, const SequenceSearch&
       const auto& now = phase[static_cast<size_t>(k)];
       const auto& before = phase[static_cast<size_t>((k + period - 1) % period)];
       for (size_t j = 0; j < n; ++j) weight[j] = now[static_cast<size_t>(frame[j])] * w[j];
-      e1[static_cast<size_t>(k) * angles + a] =
-          w2 * e1_squared_in_order(metric.filter(), p, weight, order);
+      e1[static_cast<size_t>(k) * angles + a] +=
+          scale * w2 * e1_squared_in_order(metric.filter(), p, weight, order);
       double running = 0, integral = 0;
       for (size_t j = 0; j + 1 < n; ++j) {
         const size_t m = order[j];
@@ -430,9 +437,16 @@ SequenceObjective one_pixel_objective(const Sequence& seq, const SequenceSearch&
             (now[static_cast<size_t>(frame[m])] - before[static_cast<size_t>(frame[m])]) * w[m];
         integral += std::abs(running) * (p[order[j + 1]] - p[m]);
       }
-      flicker[static_cast<size_t>(k) * angles + a] = w2 * integral * integral;
+      flicker[static_cast<size_t>(k) * angles + a] += scale * w2 * integral * integral;
     }
   }
+}
+
+// The objective from per-phase, per-angle terms (e1: W^2 E1^2; flicker: W^2 F^2).
+SequenceObjective objective_of_terms(const std::vector<double>& e1,
+                                     const std::vector<double>& flicker, int period,
+                                     const SequenceSearch& s, const Metric& metric) {
+  const size_t angles = static_cast<size_t>(metric.angle_count());
   SequenceObjective out;
   for (int k = 0; k < period; ++k) {
     const auto at = [&](const std::vector<double>& v) {
@@ -447,11 +461,112 @@ SequenceObjective one_pixel_objective(const Sequence& seq, const SequenceSearch&
   return out;
 }
 
+std::vector<std::vector<double>> steady_phases(const SequenceSearch& s, int period) {
+  std::vector<std::vector<double>> phase;
+  for (int k = 0; k < period; ++k) phase.push_back(phase_weights(s.model, period, k, true));
+  return phase;
+}
+
+// One-pixel frames without a resolve: every steady phase reads all the frames' samples.
+SequenceObjective one_pixel_objective(const Sequence& seq, const SequenceSearch& s,
+                                      const Metric& metric) {
+  const int period = seq.period();
+  std::vector<double> x, y, w;  // every sample, its frame's weight within the frame
+  std::vector<int> frame;
+  for (int f = 0; f < period; ++f) {
+    const Kernel k = make_kernel(seq.frames[static_cast<size_t>(f)], 0);
+    for (int i = 0; i < k.size(); ++i) {
+      x.push_back(k.x[static_cast<size_t>(i)]);
+      y.push_back(k.y[static_cast<size_t>(i)]);
+      w.push_back(k.w[static_cast<size_t>(i)]);
+      frame.push_back(f);
+    }
+  }
+  const size_t terms = static_cast<size_t>(metric.angle_count()) * static_cast<size_t>(period);
+  std::vector<double> e1(terms, 0.0), flicker(terms, 0.0);
+  add_shared_sample_terms(x, y, w, frame, steady_phases(s, period), metric, 1, e1, flicker);
+  return objective_of_terms(e1, flicker, period, s, metric);
+}
+
+// An upscale: the terms are the means over the display phases (each phase's
+// W^2 E1^2 averaged before the combination over angles; with the maximum
+// over angles this is E2 of the phases' mean squared error profile).
+SequenceObjective upscaled_objective(const Sequence& seq, const SequenceSearch& s,
+                                     const Metric& metric) {
+  const int period = seq.period();
+  const std::vector<double> phases = upscale_phases(s.ratio);
+  const double share = 1.0 / static_cast<double>(phases.size() * phases.size());
+  const size_t terms = static_cast<size_t>(metric.angle_count()) * static_cast<size_t>(period);
+  const auto phase = steady_phases(s, period);
+  // Each display phase's terms apart (in parallel), then summed in phase
+  // order: the same sums at any thread count.
+  const size_t count = phases.size() * phases.size();
+  std::vector<std::vector<double>> e1_of(count, std::vector<double>(terms, 0.0)),
+      flicker_of(count, std::vector<double>(terms, 0.0));
+  tbb::parallel_for(size_t{0}, count, [&](size_t i) {
+    const Vec2 at{phases[i / phases.size()], phases[i % phases.size()]};
+    const UpscaledSamples m = upscaled_samples(seq, s.ratio, *s.reconstruction, at);
+    add_shared_sample_terms(m.x, m.y, m.w, m.frame, phase, metric, share, e1_of[i], flicker_of[i]);
+  });
+  std::vector<double> e1(terms, 0.0), flicker(terms, 0.0);
+  for (size_t i = 0; i < count; ++i)
+    for (size_t t = 0; t < terms; ++t) {
+      e1[t] += e1_of[i][t];
+      flicker[t] += flicker_of[i][t];
+    }
+  return objective_of_terms(e1, flicker, period, s, metric);
+}
+
+struct SubplexData {
+  const SequenceSearch& search;
+  const Metric& metric;
+  const std::string& name;
+};
+
+double subplex_objective(unsigned, const double* x, double*, void* data) {
+  const auto& d = *static_cast<const SubplexData*>(data);
+  const std::vector<double> v(x, x + 2 * d.search.frames);
+  return upscaled_objective(sequence_of(v, d.search, d.name), d.search, d.metric).objective;
+}
+
+// One start of the upscale search: the native search (the one-pixel model's
+// SLSQP, fast and analytic) from the start, then Subplex on the upscale's J
+// from the better of the two under it, never ending worse than it began.
+std::vector<double> run_upscale_start(const SequenceSearch& s, const Metric& metric,
+                                      const std::string& name, std::vector<double> x) {
+  SequenceSearch native = s;
+  native.reconstruction.reset();
+  native.ratio = 1;
+  const std::vector<double> searched = run_start(native, metric, x);
+  if (upscaled_objective(sequence_of(searched, s, name), s, metric).objective <
+      upscaled_objective(sequence_of(x, s, name), s, metric).objective)
+    x = searched;
+  x.resize(static_cast<size_t>(2 * s.frames));
+  const size_t n = x.size();
+  SubplexData data{s, metric, name};
+  std::vector<double> lo(n, -kBound), hi(n, kBound), step(n, 0.05);
+  std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(
+      nlopt_create(NLOPT_LN_SBPLX, static_cast<unsigned>(n)), nlopt_destroy);
+  nlopt_set_lower_bounds(opt.get(), lo.data());
+  nlopt_set_upper_bounds(opt.get(), hi.data());
+  nlopt_set_initial_step(opt.get(), step.data());
+  nlopt_set_min_objective(opt.get(), subplex_objective, &data);
+  nlopt_set_xtol_abs1(opt.get(), 1e-5);
+  nlopt_set_maxeval(opt.get(), std::min(s.iterations, kMaxUpscaleEvaluations));
+  const std::vector<double> start = x;
+  const double before = subplex_objective(0, start.data(), nullptr, &data);
+  double value = 0;
+  nlopt_optimize(opt.get(), x.data(), &value);  // any stop: compared with the start below
+  if (!(subplex_objective(0, x.data(), nullptr, &data) < before)) return start;
+  return x;
+}
+
 }  // namespace
 
 SequenceObjective sequence_objective(const Sequence& seq, const SequenceSearch& s,
                                      const Metric& metric) {
   const int period = seq.period();
+  if (s.reconstruction) return upscaled_objective(seq, s, metric);
   if (seq.frames[0].set_count() == 1 && seq.frames[0].footprint.size == 1 && !s.model.resolve)
     return one_pixel_objective(seq, s, metric);
   std::vector<std::vector<Kernel>> steady;
@@ -496,7 +611,8 @@ void sequence_terms(const SequenceSearch& s, const Metric& metric,
 
 SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& metric) {
   validate(s);
-  const std::string name = s.samples_per_frame == 1
+  const std::string name = s.reconstruction ? fmt::format("aapat-upscale-{:g}", s.ratio)
+                           : s.samples_per_frame == 1
                                ? fmt::format("aapat-taa-{}", s.frames)
                                : fmt::format("aapat-msaa-{}x{}", s.frames, s.samples_per_frame);
   // Start 0: Halton (2, 3) from index 1, consecutive points per frame.
@@ -517,7 +633,7 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
       std::uniform_real_distribution<double> u(-kBound, kBound);
       for (size_t i = 0; i < positions; ++i) x[i] = u(rng);
     }
-    x = run_start(s, metric, x);
+    x = s.reconstruction ? run_upscale_start(s, metric, name, x) : run_start(s, metric, x);
     ByteWriter w;
     w.put(sequence_objective(sequence_of(x, s, name), s, metric).objective).put_all(x);
     return w.take();
@@ -554,7 +670,8 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
                   s.samples_per_frame, s.flicker_weight);
   auto& why = r.best.provenance;
   why = {
-      {"optimizer", "aapat optimize --sequence (SLSQP on the epigraph)"},
+      {"optimizer", s.reconstruction ? "aapat optimize --sequence --ratio (Subplex on J)"
+                                     : "aapat optimize --sequence (SLSQP on the epigraph)"},
       {"frames", std::to_string(s.frames)},
       {"samples_per_frame", std::to_string(s.samples_per_frame)},
       {"model", s.model.kind == AccumulationKind::box ? fmt::format("box:window={}", s.model.window)
@@ -569,6 +686,10 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
       {"worst_e2", fmt::format("{:.6f}", r.worst_e2)},
       {"flicker", fmt::format("{:.6f}", r.flicker)}};
   if (s.profile) why.emplace_back("api", s.profile->name);
+  if (s.reconstruction) {
+    why.emplace_back("ratio", fmt::format("{:g}", s.ratio));
+    why.emplace_back("reconstruction", s.reconstruction->name());
+  }
   validate(r.best);
   return r;
 }

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "aapat/core/filter.h"
 #include "aapat/core/hardware_layout.h"
 #include "aapat/core/metric.h"
 #include "aapat/temporal/accumulation.h"
@@ -51,6 +52,12 @@ struct SequenceSearch {
   uint64_t seed = 1;
   int iterations = 4000;                // NLopt evaluations per start
   const ApiProfile* profile = nullptr;  // snap to its lattice
+  // Upscaling (temporal/upscale_model.h): the frames are one-sample jitters
+  // reconstructed by this filter at render scale `ratio`; E2 and flicker are
+  // the means over the display phases. The search is then derivative-free
+  // (NLopt's Subplex on J; the reconstruction weights move with the samples).
+  std::optional<Filter> reconstruction;
+  double ratio = 1;
 };
 
 struct SequenceSearchResult {

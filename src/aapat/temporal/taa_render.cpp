@@ -14,11 +14,10 @@ TaaResult render_taa(const AnimationSettings& settings, const Sequence& s, const
                      const std::function<void(int, const Image&)>& on_frame,
                      const ReferenceSource& references) {
   TaaScenes scenes;
-  scenes.scene_at = [&](int f) {
-    return animation_frame(settings.animation, settings.width, settings.height,
-                           static_scene ? 0 : f, settings.frames);
+  scenes.scene_at = [&](int f) { return animation_scene(settings, static_scene ? 0 : f); };
+  scenes.reference_frame = [&](int f) {
+    return static_scene || !animation_moves(settings) ? 0 : f;
   };
-  scenes.reference_frame = [&](int f) { return static_scene ? 0 : f; };
   scenes.width = settings.width;
   scenes.height = settings.height;
   scenes.frames = settings.frames;

@@ -47,6 +47,10 @@ JsonObject sequence_search_json(const SequenceSearch& s, std::string_view model,
                         {"flicker", r.flicker},
                         {"halton_j", r.halton_objective}});
   if (r.continuous_objective) doc["continuous_j"] = *r.continuous_objective;
+  if (s.reconstruction) {
+    doc["ratio"] = s.ratio;
+    doc["reconstruction"] = s.reconstruction->name();
+  }
   doc["result"] = JsonObject::parse(sequence_to_json(r.best));
   return doc;
 }

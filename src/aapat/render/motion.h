@@ -1,0 +1,47 @@
+// Motion for any scene: a rigid motion of the image per frame, applied after
+// the scene's own view, so that every scene render takes (built-in, scene
+// file, mesh) moves the same way, and every pixel's motion vector is exact:
+//   pan:dx=DX,dy=DY            DX, DY display pixels per frame;
+//   rotate:deg=D,cx=X,cy=Y     D degrees per frame about (X, Y), the image
+//                              centre by default;
+//   static                     no motion (every frame frame 0's scene).
+// Frame f shows the scene moved f steps (f may be negative: the frames a
+// warm-up renders before frame 0).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "aapat/core/spec.h"
+#include "aapat/render/scene.h"
+
+namespace aapat {
+
+struct Motion {
+  std::string spec = "static";  // canonical, for reports
+  Vec2 pan{0, 0};               // pixels per frame
+  double degrees = 0;           // per frame, about `centre`
+  Vec2 centre{0, 0};
+  bool moving() const { return pan.x != 0 || pan.y != 0 || degrees != 0; }
+};
+
+// A step's largest displacement of any point of a width x height image
+// must stay below this many image sides: a history that shares no pixel
+// with the frame before is no history (an error, not a measurement).
+inline constexpr double kMaxMotionPerFrame = 0.5;
+
+using MotionRegistry = Registry<Motion, int, int>;
+const MotionRegistry& motion_registry();
+// Parses and checks a motion spec for a width x height image. Throws Error
+// naming the problem (unknown kind or key, out of range, a step that moves
+// points by half the image or more).
+Motion make_motion(std::string_view spec, int width, int height);
+
+// The scene at frame f: its view composed with f steps of the motion.
+Scene moved_scene(const Scene& scene, const Motion& motion, int frame);
+
+// Where the point p of a frame was one frame earlier (the inverse of one
+// step): what a motion vector points to.
+Vec2 previous_point(const Motion& motion, Vec2 p);
+
+}  // namespace aapat

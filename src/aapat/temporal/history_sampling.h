@@ -1,0 +1,41 @@
+// Reading the history at a reprojected point, as engines filter it (the
+// point is in pixel units, pixel (i, j)'s centre at (i, j); texels past the
+// border repeat the edge, as a clamp-to-edge sampler does):
+//  - bilinear: the 2x2 texels around the point;
+//  - catmull-rom-9: the 4x4 Catmull-Rom (B = 0, C = 1/2) spline, which the
+//    9-tap form (Godot 4's sample_catmull_rom_9, after MJP) evaluates
+//    exactly with bilinear fetches;
+//  - catmull-rom-5: that form without its four corner fetches and not
+//    renormalized, as Bevy's TAA does (its weights sum to 1 minus the corners');
+//  - lanczos2: the 4x4 texels weighted by sinc(x) sinc(x/2), normalized (FSR 2).
+// Catmull-Rom and Lanczos overshoot: their results are not clamped here.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "aapat/core/geometry.h"
+
+namespace aapat {
+
+enum class HistorySampler { bilinear, catmull_rom_9, catmull_rom_5, lanczos2 };
+
+// The names the parser reads and reports give: "bilinear", "catmull-rom-9", ...
+HistorySampler parse_history_sampler(std::string_view name);
+std::string_view history_sampler_name(HistorySampler s);
+std::string history_sampler_names();
+
+// An image of `channels` interleaved values per pixel, rows from the bottom.
+struct Plane {
+  int width = 0, height = 0, channels = 1;
+  std::vector<double> values;
+  const double* at(int i, int j) const {
+    return &values[(static_cast<size_t>(j) * width + i) * static_cast<size_t>(channels)];
+  }
+};
+
+// The history at p into out[0..channels).
+void sample_history(const Plane& history, Vec2 p, HistorySampler sampler, double* out);
+
+}  // namespace aapat

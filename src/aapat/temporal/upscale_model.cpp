@@ -1,0 +1,87 @@
+#include "aapat/temporal/upscale_model.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "aapat/temporal/engine_taa_settings.h"
+
+namespace aapat {
+
+std::vector<double> upscale_phases(double ratio) {
+  check_ratio(ratio);
+  std::set<long long> seen;
+  std::vector<double> phases;
+  for (int x = 0; x < 64; ++x) {
+    const double u = (x - (ratio - 1) / 2) / ratio;
+    double f = u - std::floor(u);
+    if (f > 1 - 1e-9) f = 0;
+    if (seen.insert(std::llround(f * 1e9)).second) phases.push_back(f);
+  }
+  std::sort(phases.begin(), phases.end());
+  if (static_cast<int>(phases.size()) <= kMaxUpscalePhasesPerAxis) return phases;
+  std::vector<double> spread;
+  for (int i = 0; i < kMaxUpscalePhasesPerAxis; ++i)
+    spread.push_back(phases[phases.size() * static_cast<size_t>(i) / kMaxUpscalePhasesPerAxis]);
+  return spread;
+}
+
+UpscaledSamples upscaled_samples(const Sequence& s, double ratio, const Filter& h, Vec2 phase) {
+  check_ratio(ratio);
+  validate(s);
+  if (s.frames[0].footprint.size != 1 || s.frames[0].set_count() != 1)
+    throw Error(fmt::format("sequence {}: an upscale jitters one-pixel frames", s.name));
+  const int reach = static_cast<int>(std::ceil(h.radius())) + 1;
+  UpscaledSamples out;
+  for (int f = 0; f < s.period(); ++f) {
+    const size_t first = out.w.size();
+    double total = 0;
+    for (const Vec2 j : s.frames[static_cast<size_t>(f)].sets[0])
+      for (int b = -reach; b <= reach; ++b)
+        for (int a = -reach; a <= reach; ++a) {
+          const double rx = a + j.x - phase.x, ry = b + j.y - phase.y;
+          if (std::abs(rx) > h.radius() || std::abs(ry) > h.radius()) continue;
+          const double w = h.value(rx) * h.value(ry);
+          if (w == 0) continue;
+          out.x.push_back(ratio * rx);
+          out.y.push_back(ratio * ry);
+          out.w.push_back(w);
+          out.frame.push_back(f);
+          total += w;
+        }
+    if (!(std::abs(total) > 1e-12))
+      throw Error(
+          fmt::format("the reconstruction filter {} gives frame {} of {} no weight at "
+                      "display phase ({:.4f}, {:.4f})",
+                      h.name(), f, s.name, phase.x, phase.y));
+    for (size_t i = first; i < out.w.size(); ++i) out.w[i] /= total;
+  }
+  return out;
+}
+
+std::vector<Kernel> upscaled_kernels(const Sequence& s, const Accumulation& a, double ratio,
+                                     const Filter& h, int k, bool steady) {
+  validate(a);
+  if (a.resolve)
+    throw ParameterError("resolve", ": an upscale's reconstruction is its resolve; give none");
+  const std::vector<double> u = phase_weights(a, s.period(), k, steady);
+  std::vector<Kernel> out;
+  for (const double px : upscale_phases(ratio))
+    for (const double py : upscale_phases(ratio)) {
+      const UpscaledSamples m = upscaled_samples(s, ratio, h, {px, py});
+      Kernel kernel;
+      for (size_t i = 0; i < m.w.size(); ++i) {
+        const double w = u[static_cast<size_t>(m.frame[i])] * m.w[i];
+        if (w == 0) continue;
+        kernel.x.push_back(m.x[i]);
+        kernel.y.push_back(m.y[i]);
+        kernel.w.push_back(w);
+      }
+      out.push_back(std::move(kernel));
+    }
+  return out;
+}
+
+}  // namespace aapat
