@@ -7,7 +7,11 @@
 #include "aapat/core/filter_catalog.h"
 #include "aapat/io/png_image.h"
 #include "aapat/io/scene_json.h"
+#include "aapat/render/animation.h"
 #include "aapat/study/study_json.h"
+#include "aapat/temporal/engine_taa.h"
+#include "aapat/temporal/sequence_json.h"
+#include "aapat/temporal/temporal_json.h"
 #include "bindings.h"
 
 namespace aapat::python {
@@ -184,6 +188,66 @@ adaptive refinement its "adaptive" dict; with reference: reference (what it
 is), rmse, max_deviation, ssim) and the images as arrays: image ((height,
 width), top row first, values in [0, 1]), reference_image, refinement_map
 (samples per pixel).)doc");
+
+  m.def(
+      "engine_taa",
+      [](const std::string& scene, const std::string& taa, double ratio, const std::string& motion,
+         const py::object& sequence, const py::dict& settings, std::pair<int, int> size, int frames,
+         int warmup, bool cut, int reference_samples, const std::string& reference_filter,
+         uint64_t seed, bool images) {
+        const auto [w, h] = size;
+        if (!(w >= 8 && h >= 8 && w <= 4096 && h <= 4096))
+          throw Error(fmt::format("engine_taa: size {}x{} is out of range 8..4096", w, h));
+        std::vector<std::pair<std::string, std::string>> overrides;
+        for (const auto& [key, value] : settings)
+          overrides.emplace_back(key.cast<std::string>(), py::str(value).cast<std::string>());
+        const EngineTaa t = make_engine_taa(taa, ratio, overrides);
+        const Sequence s =
+            sequence.is_none() ? resolve_sequence(t.jitter)
+            : py::isinstance<Sequence>(sequence)
+                ? sequence.cast<Sequence>()
+                : resolve_sequence_for_ratio(sequence.cast<std::string>(), ratio, nullptr);
+        EngineRun run;
+        run.scene = resolve_scene(scene, w, h);
+        run.motion = make_motion(motion, w, h);
+        run.width = w;
+        run.height = h;
+        run.frames = frames;
+        run.warmup = cut ? 0 : warmup;
+        run.reference = {reference_samples, reference_filter, seed};
+        std::vector<Image> shown;
+        EngineResult r;
+        {
+          py::gil_scoped_release release;
+          r = render_engine_taa(run, s, t, [&](int, const Image& img) {
+            if (images) shown.push_back(img);
+          });
+        }
+        py::dict d = values_of(engine_taa_json(scene, run, s, t, r));
+        if (images) {
+          py::list list;
+          for (const Image& img : shown) list.append(image_array(img));
+          d["images"] = list;
+        }
+        return d;
+      },
+      py::arg("scene"), py::kw_only(), py::arg("taa") = "fsr2", py::arg("ratio") = 1.0,
+      py::arg("motion") = "pan", py::arg("sequence") = py::none(), py::arg("settings") = py::dict(),
+      py::arg("size") = std::pair<int, int>{EngineRun{}.width, EngineRun{}.height},
+      py::arg("frames") = EngineRun{}.frames, py::arg("warmup") = EngineRun{}.warmup,
+      py::arg("cut") = false, py::arg("reference_samples") = AnimationSettings{}.reference.samples,
+      py::arg("reference_filter") = AnimationSettings{}.reference.filter,
+      py::arg("seed") = AnimationSettings{}.reference.seed, py::arg("images") = false,
+      R"doc(Engine TAA, as `aapat animate SCENE --taa PRESET` renders it (docs/temporal.md).
+
+    scene: any scene render takes. taa: ue4, fsr2, godot, bevy or custom.
+    ratio: display / render resolution (>= 1). motion: pan:dx=,dy=, rotate:deg=, static.
+    sequence: a spec, name, file or aapat.Sequence (default: the preset's jitter;
+        a generator without frames= takes int(8 ratio^2) phases).
+    settings: overrides by key, e.g. {"history": "catmull-rom-9", "gamma": 1.25}.
+    warmup: frames before the measured ones (cut=True: none).
+Returns the values of `aapat animate --taa --json` (rmse, flicker, ghosting,
+sharpness, mean_flip, rows, ...), and with images=True the frames as arrays.)doc");
 }
 
 }  // namespace aapat::python

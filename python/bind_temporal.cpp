@@ -99,9 +99,14 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
       "optimize_sequence",
       [](int frames, int samples_per_frame, double flicker_weight, const std::string& measure,
          int starts, uint64_t seed, int iterations, bool equal_weights, const std::string& api,
-         const std::string& model, double alpha, int window, const py::object& objective,
-         const py::object& filter, const py::object& acuity, const py::object& norm) {
+         const std::string& model, double alpha, int window, const py::object& ratio,
+         const std::string& reconstruct, const py::object& objective, const py::object& filter,
+         const py::object& acuity, const py::object& norm) {
         SequenceSearch s;
+        if (!ratio.is_none()) {
+          s.ratio = ratio.cast<double>();
+          s.reconstruction = make_filter(reconstruct);
+        }
         s.frames = frames;
         s.samples_per_frame = samples_per_frame;
         s.flicker_weight = flicker_weight;
@@ -131,12 +136,15 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
       py::arg("starts") = SequenceSearch{}.starts, py::arg("seed") = SequenceSearch{}.seed,
       py::arg("iterations") = SequenceSearch{}.iterations, py::arg("equal_weights") = false,
       py::arg("api") = "", py::arg("model") = "ema", py::arg("alpha") = 0.1, py::arg("window") = 0,
+      py::arg("ratio") = py::none(), py::arg("reconstruct") = "lanczos:lobes=2",
       AAPAT_OBJECTIVE_ARGS,
       R"doc(aapat optimize --sequence: the positions of every frame's samples minimizing
 worst (or mean) steady E2 + flicker_weight x flicker under the model. The same
 sequence as the command line for the same settings and seed. A dict with the
 keys of `aapat optimize --sequence --json` (j, worst_e2, mean_e2, flicker,
-halton_j, ...), its "result" the aapat.Sequence found.)doc");
+halton_j, ...), its "result" the aapat.Sequence found. ratio: optimize the
+jitter of an upscale (`--ratio`), each display pixel reconstructed by
+`reconstruct` from the render pixels around it.)doc");
 }
 
 }  // namespace aapat::python

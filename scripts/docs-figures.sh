@@ -69,6 +69,22 @@ AAPAT="$aapat" "$root/scripts/catalog-table.sh" docs/catalog-table.md >/dev/null
 # Jitter and alternating-MSAA sequences under box, EMA and EMA + resolve, and rendered TAA.
 AAPAT="$aapat" "$root/scripts/temporal-table.sh" docs/temporal-table.md >/dev/null
 "$aapat" hardware-table --objective laine-aila > docs/hardware-table.md
+# Engine TAA (docs/temporal.md): the optimized jitters under every preset and
+# ratio, and a moving spiral's last frame under two presets, the engine's
+# own jitter beside aapat's.
+AAPAT="$aapat" "$root/scripts/engine-taa-table.sh" docs/engine-taa-table.md >/dev/null
+taa_tmp=$(mktemp -d)
+for run in "fsr2 1.5 halton aapat-upscale-1.5" "ue4 1 ue4-halton:frames=8 aapat-taa-8"; do
+  read -r preset ratio own ours <<<"$run"
+  for seq in "$own" "$ours"; do
+    name=$(echo "$seq" | cut -d: -f1)
+    "$aapat" animate spiral --taa "$preset" --ratio "$ratio" --sequence "$seq" \
+      --motion pan:dx=0.37,dy=0.21 --size 96 --frames 8 --warmup 40 --reference-samples 16 \
+      --frames-dir "$taa_tmp/$preset-$name" >/dev/null
+    cp "$taa_tmp/$preset-$name/frame-0007.png" "$img/engine-taa-$preset-$name.png"
+  done
+done
+rm -rf "$taa_tmp"
 # FLIP (docs/perceptual.md): msaa-8 and aapat-8 on the zone plate against its reference.
 flip_tmp=$(mktemp -d)
 "$aapat" render zoneplate --pattern msaa-8 --size 128x128 --reference-samples 256 --no-cache \

@@ -12,3 +12,13 @@ out=$root/data/sequences
 mkdir -p "$out"
 "$aapat" optimize --sequence 8 --starts 200 --seed 1 --flicker-weight 5 -o "$out/aapat-taa-8.json"
 "$aapat" optimize --sequence 16 --starts 128 --seed 1 --flicker-weight 5.25 -o "$out/aapat-taa-16.json"
+# Upscaling jitters (docs/temporal.md, "The linear model of upscaling"): the
+# upscaler's phase count int(8 R^2) per ratio, optimized under the linear
+# model of upscaling through FSR 2's Lanczos-2 reconstruction, accumulating
+# as FSR 2 does on still content (EMA alpha 1/17: n <= 16 frames); about
+# ten minutes on 2 cores.
+for spec in 1.5:18:4 1.7:23:4 2:32:4 3:72:2; do
+  IFS=: read -r ratio frames starts <<<"$spec"
+  "$aapat" optimize --sequence "$frames" --ratio "$ratio" --alpha 0.0588235294117647 \
+    --starts "$starts" --seed 1 -o "$out/aapat-upscale-$ratio.json"
+done

@@ -66,6 +66,23 @@ def test_optimize_sequence_at_8_frames_and_8_starts_equals_the_cli(aapat_cli, tm
             assert py[key] == cli[key], key
 
 
+def test_engine_taa_is_the_cli_json(aapat_cli):
+    args = ["--taa", "fsr2", "--ratio", "1.5", "--motion", "pan:dx=0.4,dy=0.2", "--size", "24",
+            "--frames", "3", "--warmup", "5", "--reference-samples", "4",
+            "--taa-set", "history=catmull-rom-9"]
+    cli = cli_json(aapat_cli, "animate", "spiral", *args)
+    py = aapat.engine_taa("spiral", taa="fsr2", ratio=1.5, motion="pan:dx=0.4,dy=0.2",
+                          size=(24, 24), frames=3, warmup=5, reference_samples=4,
+                          settings={"history": "catmull-rom-9"})
+    assert py.keys() == cli.keys()
+    assert py == cli
+    assert py["phases"] == 18  # FSR 2's int(8 R^2) at 1.5
+    with pytest.raises(aapat.Error, match="ratio"):
+        aapat.engine_taa("spiral", ratio=0.5)
+    with pytest.raises(aapat.Error, match="unknown TAA setting"):
+        aapat.engine_taa("spiral", settings={"colour": 1})
+
+
 # Every Python function that takes an array, with the array in its place.
 ARRAY_CALLS = {
     "eval (n, 2)": lambda a: aapat.eval(a),

@@ -22,6 +22,7 @@
 #include "aapat/temporal/engine_taa.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/taa_render.h"
+#include "aapat/temporal/temporal_json.h"
 #include "cli/animation_options.h"
 #include "cli/commands.h"
 #include "cli/progress.h"
@@ -156,7 +157,7 @@ void run_engine(const AnimateOptions& o, const AnimationSettings& a, const Seque
   run.width = a.width;
   run.height = a.height;
   run.frames = a.frames;
-  run.warmup = o.cut ? 0 : (o.warmup >= 0 ? o.warmup : 64);
+  run.warmup = o.cut ? 0 : (o.warmup >= 0 ? o.warmup : EngineRun{}.warmup);
   run.reference = a.reference;
   const EngineResult r = render_engine_taa(run, sequence, taa, on_frame, o.reference.source());
   if (!o.csv.empty()) write_output(o.csv, engine_csv(r), out);
@@ -164,36 +165,7 @@ void run_engine(const AnimateOptions& o, const AnimationSettings& a, const Seque
   if (!o.mp4.empty()) write_mp4(frames_dir, o.mp4, o.fps, a.frames);
   if (!o.histogram.empty()) throw Error("--histogram: not in engine TAA (use --csv)");
   if (o.json) {
-    JsonObject doc = json_report("animate");
-    JsonObject::array_t rows;
-    for (const EngineFrame& f : r.frames)
-      rows.push_back(JsonObject{{"rmse", f.rmse},
-                                {"max_deviation", f.max_deviation},
-                                {"flip", f.flip},
-                                {"flicker", f.flicker},
-                                {"ghosting", f.ghosting},
-                                {"sharpness", f.sharpness}});
-    doc.update(JsonObject{{"animation", a.animation},
-                          {"motion", a.motion.spec},
-                          {"pattern", sequence.name},
-                          {"phases", sequence.period()},
-                          {"taa", taa.preset},
-                          {"taa_settings", engine_taa_text(taa)},
-                          {"ratio", taa.ratio},
-                          {"render_width", r.render_width},
-                          {"render_height", r.render_height},
-                          {"frames", a.frames},
-                          {"warmup", run.warmup},
-                          {"width", a.width},
-                          {"height", a.height},
-                          {"rmse", r.total.rmse},
-                          {"max_deviation", r.total.max_deviation},
-                          {"mean_flip", r.mean_flip},
-                          {"flicker", r.flicker},
-                          {"ghosting", r.ghosting},
-                          {"sharpness", r.sharpness},
-                          {"rows", rows}});
-    out << json_text(doc);
+    out << json_text(engine_taa_json(a.animation, run, sequence, taa, r));
     return;
   }
   out << fmt::format(

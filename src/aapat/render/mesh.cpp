@@ -178,6 +178,9 @@ std::shared_ptr<const MeshView> make_mesh_view(std::shared_ptr<const Mesh> mesh,
   auto view = std::make_shared<MeshView>();
   view->mesh_ = mesh;
   view->light_ = light;
+  view->camera_ = camera;
+  view->width_ = width;
+  view->height_ = height;
   const Vec3 forward = normalized(camera.target - camera.eye);
   const Vec3 right = normalized(cross(forward, camera.up));
   const Vec3 up = cross(right, forward);
@@ -186,6 +189,11 @@ std::shared_ptr<const MeshView> make_mesh_view(std::shared_ptr<const Mesh> mesh,
   const double focal = 0.5 * height / std::tan(radians(camera.fov_deg) / 2);
   const double cx = 0.5 * (width - 1), cy = 0.5 * (height - 1);
   const double near = 1e-3 * std::sqrt(dot(camera.target - camera.eye, camera.target - camera.eye));
+  view->right_ = right;
+  view->up_ = up;
+  view->forward_ = forward;
+  view->focal_ = focal;
+  view->near_ = near;
   auto to_camera = [&](Vec3 p) {
     const Vec3 d = p - camera.eye;
     return Vec3{dot(d, right), dot(d, up), dot(d, forward)};
@@ -271,6 +279,23 @@ std::shared_ptr<const MeshView> make_mesh_view(std::shared_ptr<const Mesh> mesh,
       camera.fov_deg, light.direction.x, light.direction.y, light.direction.z, light.ambient,
       light.background[0], light.background[1], light.background[2], width, height);
   return view;
+}
+
+std::optional<Vec3> MeshView::surface_point(Vec2 p) const {
+  const MeshHit h = hit(p);
+  if (h.triangle < 0) return std::nullopt;
+  const Weights w = weights(h.triangle, p);
+  const auto& tri = mesh_->triangles[triangles_[static_cast<size_t>(h.triangle)].source];
+  Vec3 x;
+  for (int k = 0; k < 3; ++k) x = x + w.w[k] * mesh_->positions[tri[static_cast<size_t>(k)]];
+  return x;
+}
+
+std::optional<Vec2> MeshView::project(Vec3 world) const {
+  const Vec3 d = world - camera_.eye;
+  const Vec3 c{dot(d, right_), dot(d, up_), dot(d, forward_)};
+  if (!(c.z > near_)) return std::nullopt;
+  return Vec2{0.5 * (width_ - 1) + focal_ * c.x / c.z, 0.5 * (height_ - 1) + focal_ * c.y / c.z};
 }
 
 MeshHit MeshView::hit(Vec2 p) const {

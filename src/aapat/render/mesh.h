@@ -139,6 +139,16 @@ class MeshView {
   const MeshMaterial& material(int t) const;
   // Every input of the view, exactly: keys the reference cache.
   const std::string& key() const { return key_; }
+  // What it was made from (a camera orbit remakes it, render/motion.h).
+  const std::shared_ptr<const Mesh>& mesh_ptr() const { return mesh_; }
+  const MeshCamera& camera() const { return camera_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // The world point under screen point p (none: the background), and a
+  // world point's screen position (none: at or behind the near plane):
+  // the exact motion vectors of a moving camera.
+  std::optional<Vec3> surface_point(Vec2 p) const;
+  std::optional<Vec2> project(Vec3 world) const;
 
  private:
   friend std::shared_ptr<const MeshView> make_mesh_view(std::shared_ptr<const Mesh>,
@@ -146,6 +156,10 @@ class MeshView {
                                                         int);
   std::shared_ptr<const Mesh> mesh_;
   MeshLight light_;
+  MeshCamera camera_;
+  int width_ = 0, height_ = 0;
+  Vec3 right_, up_, forward_;
+  double focal_ = 1, near_ = 0;
   std::vector<ScreenTriangle> triangles_;
   // Square bins over the image and a margin, sized to the triangles' density;
   // a point outside them scans every triangle. Each bin lists its triangles

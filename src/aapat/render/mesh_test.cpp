@@ -8,6 +8,7 @@
 #include "aapat/core/filter_catalog.h"
 #include "aapat/render/adaptive.h"
 #include "aapat/render/color_render.h"
+#include "aapat/render/motion.h"
 #include "aapat/render/renderer.h"
 #include "aapat/render/surface.h"
 #include "testing/error_message.h"
@@ -232,6 +233,48 @@ TEST(Mesh, AdaptiveRefinementInColour) {
     EXPECT_EQ(r.image.values[3 * p + 1], 0);
     EXPECT_EQ(r.image.values[3 * p + 2], 0);
   }
+}
+
+// An orbit's motion vectors: a pixel's surface point, projected through the
+// earlier camera, is the surface point the earlier frame shows there; the
+// front triangle hides a part of the back one, which then has no history.
+TEST(Mesh, OrbitMotionVectorsFindTheSameSurfacePoint) {
+  auto m = mesh_of({{-1, -1, 0},
+                    {1, -1, 0},
+                    {1, 1, 0},
+                    {-1, 1, 0},
+                    {-0.2, -0.2, 0.5},
+                    {0.3, -0.2, 0.5},
+                    {0.05, 0.3, 0.5}},
+                   {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
+  MeshScene mesh{make_mesh_view(m, {{0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 50}, flat_light(), 64, 48), 0};
+  const Scene first(mesh);
+  const Motion orbit = make_motion("orbit:deg=3", 64, 48);
+  const Scene now = moved_scene(first, orbit, 1), before = moved_scene(first, orbit, 0);
+  int followed = 0, disoccluded = 0;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const Vec2 p{double(x), double(y)};
+      const Vec2 q = previous_point(orbit, now, before, p);
+      const auto a = std::get<MeshScene>(now.shape).view->surface_point(p);
+      if (!a) {
+        EXPECT_EQ(q, p);  // the background stays
+        continue;
+      }
+      if (std::isnan(q.x)) {
+        ++disoccluded;
+        continue;
+      }
+      const auto b = std::get<MeshScene>(before.shape).view->surface_point(q);
+      ASSERT_TRUE(b.has_value());
+      EXPECT_NEAR(b->x, a->x, 1e-6);
+      EXPECT_NEAR(b->y, a->y, 1e-6);
+      EXPECT_NEAR(b->z, a->z, 1e-6);
+      ++followed;
+    }
+  EXPECT_GT(followed, 500);
+  EXPECT_GT(disoccluded, 0);  // the back quad's strip the front triangle hid
+  EXPECT_THROW(moved_scene(make_scene("spiral", 64, 48), orbit, 1), Error);
 }
 
 }  // namespace

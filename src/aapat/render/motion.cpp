@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include "aapat/core/geometry.h"
+#include "aapat/render/mesh.h"
 
 namespace aapat {
 namespace {
@@ -76,6 +79,16 @@ const MotionRegistry& motion_registry() {
             throw ParameterError("motion rotate", ": cx and cy must be finite, within 1e6");
           m.spec = s.canonical();
           return m;
+        }},
+       {{"orbit",
+         "a mesh scene's camera turns deg degrees per frame about its target, around its up axis",
+         "aapat",
+         {{"deg", "0.5", "degrees per frame"}}},
+        [](const Spec& s, int, int) {
+          Motion m;
+          m.orbit_deg = s.in_range("deg", -45, 45);
+          m.spec = s.canonical();
+          return m;
         }}});
   return kRegistry;
 }
@@ -102,8 +115,32 @@ Motion make_motion(std::string_view spec, int width, int height) {
   return m;
 }
 
+namespace {
+
+// The mesh scene with its camera turned `degrees` about its target (Rodrigues).
+Scene orbited(const Scene& scene, double degrees) {
+  const auto* mesh = std::get_if<MeshScene>(&scene.shape);
+  if (!mesh)
+    throw Error(
+        "motion orbit turns a mesh scene's camera: give a mesh scene file (or pan, "
+        "rotate for any scene)");
+  const MeshView& v = *mesh->view;
+  MeshCamera c = v.camera();
+  const double len = std::sqrt(dot(c.up, c.up));
+  const Vec3 k = (1 / len) * c.up, d = c.eye - c.target;
+  const double a = radians(degrees), cs = std::cos(a), sn = std::sin(a);
+  c.eye = c.target + (cs * d + sn * cross(k, d) + (1 - cs) * dot(k, d) * k);
+  Scene out = scene;
+  out.shape =
+      MeshScene{make_mesh_view(v.mesh_ptr(), c, v.light(), v.width(), v.height()), mesh->channel};
+  return out;
+}
+
+}  // namespace
+
 Scene moved_scene(const Scene& scene, const Motion& motion, int frame) {
   if (!motion.moving() || frame == 0) return scene;
+  if (motion.orbit_deg != 0) return orbited(scene, motion.orbit_deg * frame);
   const Similarity s = compose(of_motion(motion, frame), of_view(scene.view));
   Scene moved = scene;
   moved.view = View{{0, 0}, std::atan2(s.b, s.a) * 180 / kPi, std::hypot(s.a, s.b), s.t};
@@ -113,6 +150,24 @@ Scene moved_scene(const Scene& scene, const Motion& motion, int frame) {
 Vec2 previous_point(const Motion& motion, Vec2 p) {
   if (!motion.moving()) return p;
   return of_motion(motion, -1).apply(p);
+}
+
+Vec2 previous_point(const Motion& motion, const Scene& now, const Scene& before, Vec2 p) {
+  if (motion.orbit_deg == 0) return previous_point(motion, p);
+  const auto* a = std::get_if<MeshScene>(&now.shape);
+  const auto* b = std::get_if<MeshScene>(&before.shape);
+  if (!a || !b) throw Error("motion orbit: the scenes are not meshes");
+  const std::optional<Vec3> x = a->view->surface_point(p);
+  if (!x) return p;  // the background: uniform, any history of it is the same
+  const std::optional<Vec2> q = b->view->project(*x);
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  if (!q) return {kNaN, kNaN};
+  // Visible then? The earlier camera's surface point there must be this one.
+  const std::optional<Vec3> y = b->view->surface_point(*q);
+  const Vec3 eye = b->view->camera().eye, gap = y ? *y - *x : Vec3{1e300, 0, 0};
+  const Vec3 to_eye = *x - eye;
+  if (!y || dot(gap, gap) > 1e-6 * dot(to_eye, to_eye)) return {kNaN, kNaN};
+  return *q;
 }
 
 }  // namespace aapat

@@ -9,6 +9,7 @@
 #include "aapat/render/color_render.h"
 #include "aapat/render/image_flip.h"
 #include "aapat/render/surface.h"
+#include "aapat/temporal/rendered_flicker.h"
 
 namespace aapat {
 namespace {
@@ -118,7 +119,8 @@ Plane reconstruct(const RenderSamples& s, const std::vector<AxisTaps>& tx,
 // The history blended with the current frame, pixel by pixel; `count`
 // carries each pixel's accumulated frames along the motion.
 void blend(const Plane& current, const Plane& history, const std::vector<int>& count,
-           const Motion& motion, const EngineTaa& t, Plane& out, std::vector<int>& out_count) {
+           const Motion& motion, const Scene& now, const Scene& before, const EngineTaa& t,
+           Plane& out, std::vector<int>& out_count) {
   const int w = current.width, h = current.height, ch = current.channels;
   const bool moving = motion.moving();
   const int cap = moving ? t.count_max_motion : t.count_max;
@@ -128,7 +130,7 @@ void blend(const Plane& current, const Plane& history, const std::vector<int>& c
       const size_t at = static_cast<size_t>(y) * w + x;
       const double* c = &current.values[at * ch];
       double* o = &out.values[at * ch];
-      const Vec2 q = previous_point(motion, {double(x), double(y)});
+      const Vec2 q = previous_point(motion, now, before, {double(x), double(y)});
       const bool valid = q.x >= -0.5 && q.x <= w - 0.5 && q.y >= -0.5 && q.y <= h - 0.5;
       if (!valid) {
         for (int k = 0; k < ch; ++k) o[k] = std::clamp(c[k], 0.0, 1.0);
@@ -236,6 +238,7 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
   Image previous_reference;
   double pixels = 0, flip_sum = 0, flicker_sum = 0, ghost_sum = 0, sharp_sum = 0;
   int ghost_frames = 0;
+  Scene previous_scene = run.scene;
   for (int f = -run.warmup; f < run.frames; ++f) {
     const Scene scene = moved_scene(run.scene, run.motion, f);
     const int phase = ((f % period) + period) % period;
@@ -247,10 +250,12 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
         next.values[i] = std::clamp(current.values[i], 0.0, 1.0);
       std::fill(next_count.begin(), next_count.end(), 1);
     } else {
-      blend(current, history, count, run.motion, taa, next, next_count);
+      blend(current, history, count, run.motion, scene, previous_scene, taa, next, next_count);
     }
     history = next;
     count = next_count;
+    const Scene before = previous_scene;
+    previous_scene = scene;
     if (f < 0) continue;
     const Image shown = as_image(history);
     ReferenceSettings ref = run.reference;
@@ -267,18 +272,16 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
     for (size_t i = 0; i < error.size(); ++i)
       error[i] = grey_level(shown.values[i]) - grey_level(reference.values[i]);
     if (!previous_error.empty()) {
-      double change = 0, ghost = 0;
+      frame.flicker = rendered_flicker(error, previous_error, w, h, ch, run.motion, scene, before);
+      flicker_sum += frame.flicker;
+      double ghost = 0;
       size_t changed = 0;
-      for (size_t i = 0; i < error.size(); ++i) {
-        change += std::abs(error[i] - previous_error[i]);
+      for (size_t i = 0; i < error.size(); ++i)
         if (std::abs(grey_level(reference.values[i]) - grey_level(previous_reference.values[i])) >
             kGhostThreshold) {
           ghost += std::abs(error[i]);
           ++changed;
         }
-      }
-      frame.flicker = change / static_cast<double>(error.size());
-      flicker_sum += frame.flicker;
       if (changed) {
         frame.ghosting = ghost / static_cast<double>(changed);
         ghost_sum += frame.ghosting;

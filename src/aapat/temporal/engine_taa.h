@@ -19,7 +19,8 @@
 // Measures of each measured frame (the same names every face uses):
 //  - rmse, max_deviation, flip: against the reference, as `render` reports;
 //  - flicker: the mean absolute change of the per-pixel error (0-255 levels)
-//    from the previous frame, as the linear TAA mode defines it;
+//    from the previous frame along the motion (rendered_flicker.h), as the
+//    linear TAA mode defines it;
 //  - ghosting: the mean absolute error (levels) over the pixels whose
 //    reference changed by more than kGhostThreshold levels since the
 //    previous frame: where content just moved, which is where a history that

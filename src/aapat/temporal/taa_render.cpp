@@ -6,6 +6,7 @@
 
 #include "aapat/render/image_flip.h"
 #include "aapat/render/ssim.h"
+#include "aapat/temporal/rendered_flicker.h"
 
 namespace aapat {
 
@@ -22,6 +23,7 @@ TaaResult render_taa(const AnimationSettings& settings, const Sequence& s, const
   scenes.height = settings.height;
   scenes.frames = settings.frames;
   scenes.reference = settings.reference;
+  if (settings.scene && !static_scene) scenes.motion = settings.motion;
   return render_taa(scenes, s, a, steady, on_frame, references);
 }
 
@@ -72,9 +74,9 @@ TaaResult render_taa(const TaaScenes& settings, const Sequence& s, const Accumul
     for (size_t i = 0; i < error.size(); ++i)
       error[i] = grey_level(shown.values[i]) - grey_level(reference.values[i]);
     if (!previous_error.empty()) {
-      double change = 0;
-      for (size_t i = 0; i < error.size(); ++i) change += std::abs(error[i] - previous_error[i]);
-      frame.flicker = change / static_cast<double>(error.size());
+      frame.flicker =
+          rendered_flicker(error, previous_error, shown.width, shown.height, shown.channels,
+                           settings.motion, scene, settings.scene_at(f - 1));
       flicker_sum += frame.flicker;
     }
     previous_error = std::move(error);

@@ -12,7 +12,8 @@
 //
 // Per frame against the dense reference: RMSE, largest deviation, SSIM, FLIP and
 // the temporal flicker, the mean absolute change of the per-pixel error
-// (on the 0-255 scale) from the previous frame.
+// (on the 0-255 scale) from the previous frame, along the motion
+// (rendered_flicker.h).
 #pragma once
 
 #include <functional>
@@ -56,6 +57,7 @@ struct TaaScenes {
   std::function<int(int)> reference_frame;
   int width = 64, height = 64, frames = 32;
   ReferenceSettings reference;
+  Motion motion;  // the scenes' motion field, which flicker follows (rendered_flicker.h)
 };
 TaaResult render_taa(const TaaScenes& scenes, const Sequence& s, const Accumulation& a, bool steady,
                      const std::function<void(int, const Image&)>& on_frame = {},

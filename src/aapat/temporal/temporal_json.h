@@ -6,6 +6,7 @@
 #pragma once
 
 #include "aapat/io/json_report.h"
+#include "aapat/temporal/engine_taa.h"
 #include "aapat/temporal/sequence.h"
 #include "aapat/temporal/sequence_optimizer.h"
 #include "aapat/temporal/temporal_metrics.h"
@@ -19,5 +20,13 @@ JsonObject temporal_report_json(const Sequence& s, const TemporalReport& r);
 // Halton's J of the same length; "result" holds the sequence file's object.
 JsonObject sequence_search_json(const SequenceSearch& search, std::string_view model,
                                 const Objective& objective, const SequenceSearchResult& r);
+
+// `aapat animate SCENE --taa PRESET --json` and Python's engine_taa: the
+// settings (preset, its settings' text, ratio, render size, motion, phases,
+// warm-up) and the measures (rmse and max_deviation over every frame's
+// pixels, mean_flip, flicker, ghosting, sharpness: means over frames;
+// engine_taa.h), with a row per frame.
+JsonObject engine_taa_json(std::string_view scene, const EngineRun& run, const Sequence& s,
+                           const EngineTaa& taa, const EngineResult& r);
 
 }  // namespace aapat

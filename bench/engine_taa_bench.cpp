@@ -1,0 +1,61 @@
+// Engine TAA (issue 25): a 64-frame 256x256 display-resolution render at
+// R = 1.5 under the FSR 2 preset (18 Halton phases, Lanczos-2 everywhere),
+// the references already cached (here: a reference source that returns a
+// prepared image, so the pipeline alone is timed: sampling the render grid,
+// reconstruction, history, rectification, blend and every measure), static
+// and panning. And one evaluation of the upscale model's objective, the
+// unit of `optimize --sequence 18 --ratio 1.5`. Results: docs/benchmarks.md.
+#include <benchmark/benchmark.h>
+
+#include "aapat/core/filter_catalog.h"
+#include "aapat/core/objective.h"
+#include "aapat/temporal/engine_taa.h"
+#include "aapat/temporal/sequence_generators.h"
+#include "aapat/temporal/sequence_optimizer.h"
+
+namespace aapat {
+namespace {
+
+void EngineTaaRender(benchmark::State& state, const char* motion) {
+  const int size = 256;
+  EngineRun run{make_scene("checkerboard", size, size),
+                make_motion(motion, size, size),
+                size,
+                size,
+                64,
+                0,
+                {}};
+  const EngineTaa taa = make_engine_taa("fsr2", 1.5);
+  const Sequence s = make_sequence(taa.jitter);
+  Image cached;
+  cached.width = cached.height = size;
+  cached.values.assign(size * size, 0.5);
+  const ReferenceSource from_cache = [&](const Scene&, int, int, const ReferenceSettings&, double) {
+    return cached;
+  };
+  for (auto _ : state)
+    benchmark::DoNotOptimize(render_engine_taa(run, s, taa, {}, from_cache).total.rmse);
+  state.counters["frames"] = run.frames;
+}
+BENCHMARK_CAPTURE(EngineTaaRender, fsr2_1_5_static, "static")
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(EngineTaaRender, fsr2_1_5_pan, "pan:dx=0.37,dy=0.21")
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime();
+
+void UpscaleObjective(benchmark::State& state) {
+  const Metric metric = parse_objective("recommended").metric();
+  SequenceSearch search;
+  search.frames = 18;
+  search.ratio = 1.5;
+  search.reconstruction = make_filter("lanczos:lobes=2");
+  const Sequence s = make_sequence("halton:frames=18");
+  for (auto _ : state) benchmark::DoNotOptimize(sequence_objective(s, search, metric).objective);
+}
+BENCHMARK(UpscaleObjective)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace aapat
