@@ -10,6 +10,7 @@
 #include "aapat/io/pattern_json.h"
 #include "aapat/render/scene.h"
 #include "aapat/render/texture_filter.h"
+#include "aapat/temporal/spec_registries.h"
 #include "bindings.h"
 
 namespace aapat::python {
@@ -164,25 +165,17 @@ pattern file (.json, or Laine's x y weight text .xyw).)doc");
       "registry",
       [] {
         py::dict d;
-        py::list objectives;
-        for (const SpecInfo& info : objective_infos()) objectives.append(info_dict(info));
-        d["objectives"] = objectives;
-        d["patterns"] = infos(pattern_registry());
-        py::list aapat;
-        for (const SpecInfo& info : aapat_catalog()) aapat.append(info_dict(info));
-        d["aapat_patterns"] = aapat;
-        d["filters"] = infos(filter_registry());
-        d["generators"] = infos(generator_registry());
-        d["acuity_tables"] = infos(acuity_registry());
-        d["scenes"] = infos(scene_registry());
-        d["textures"] = infos(texture_registry());
-        d["texture_filters"] = infos(texture_filter_registry());
-        d["api_profiles"] = infos(profile_registry());
+        for (const RegistrySection& section : registry_sections()) {
+          py::list entries;
+          for (const SpecInfo& info : section.infos) entries.append(info_dict(info));
+          d[py::str(section.key)] = entries;
+        }
         return d;
       },
       R"doc(Every registry of specs, as `aapat list` prints them: a dict from kind
-("patterns", "aapat_patterns", "filters", "generators", "acuity_tables", "scenes", "textures",
-"texture_filters", "api_profiles")
+("objectives", "patterns", "aapat_patterns", "filters", "generators", "acuity_tables", "scenes",
+"textures", "texture_filters", "api_profiles", "motions", "sequences", "aapat_sequences",
+"taa_presets")
 to a list of {name, usage, summary, source, parameters}.)doc");
 }
 
