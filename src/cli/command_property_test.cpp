@@ -226,7 +226,9 @@ std::vector<std::string> random_command() {
       break;
     case 4:
       a = {"enumerate", "--cost", *one_of({"1.25", "1.5", "1.3", "0", "nan", "1.25,2"})};
-      if (coin()) a.insert(a.end(), {"--optimize", "--starts", "1"});
+      // Optimizing every configuration (app_test covers it) takes minutes under
+      // ASan: the property asks --optimize only of costs refused before it runs.
+      if (a.back() == "0" || a.back() == "nan") maybe_flag(a, "--optimize");
       maybe(a, "--csv", {"enum.csv"});
       maybe(a, "--best-dir", {"best", "good.json"});
       maybe_flag(a, "--json");

@@ -8,17 +8,12 @@
 #include "aapat/render/renderer.h"
 #include "aapat/temporal/rendered_flicker.h"
 #include "aapat/temporal/sequence_generators.h"
+#include "testing/centre_reference.h"
 
 namespace aapat {
 namespace {
 
-// The measures are not what these tests check: a one-sample reference is enough.
-const ReferenceSource kEngineCheapReference = [](const Scene& scene, int w, int h,
-                                                 const ReferenceSettings&, double) {
-  Sampling one;
-  one.pattern = single_pixel_pattern("centre", {{0, 0}}, {1.0});
-  return render(scene, w, h, one, std::nullopt);
-};
+const ReferenceSource kEngineCheapReference = testing::centre_reference;
 
 Plane ramp(int w, int h) {
   Plane p{w, h, 1, {}};
@@ -124,7 +119,7 @@ TEST(Motion, PreviousPointReadsTheSameScenePoint) {
   EXPECT_THROW(make_motion("pan:dx=20", 40, 30), Error);      // half the image per frame
   EXPECT_THROW(make_motion("rotate:deg=90", 40, 30), Error);  // the corners move too far
   EXPECT_THROW(make_motion("pan:speed=1", 40, 30), Error);
-  EXPECT_THROW(make_motion("orbit", 40, 30), Error);
+  EXPECT_THROW(make_motion("spin", 40, 30), Error);
   EXPECT_THROW(make_motion("rotate:deg=nan", 40, 30), Error);
 }
 

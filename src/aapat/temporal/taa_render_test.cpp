@@ -3,18 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "aapat/temporal/sequence_generators.h"
+#include "testing/centre_reference.h"
 
 namespace aapat {
 namespace {
 
-// A reference that is the scene sampled once at each pixel centre: cheap,
-// and the measures are not what is tested here.
-const ReferenceSource kCheapReference = [](const Scene& scene, int w, int h,
-                                           const ReferenceSettings&, double) {
-  Sampling one;
-  one.pattern = single_pixel_pattern("centre", {{0, 0}}, {1.0});
-  return render(scene, w, h, one, std::nullopt);
-};
+const ReferenceSource kCheapReference = testing::centre_reference;
 
 TaaScenes still(const Scene& scene, int frames) {
   TaaScenes s;

@@ -10,6 +10,7 @@
 #include "aapat/temporal/engine_taa.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_optimizer.h"
+#include "testing/centre_reference.h"
 
 namespace aapat {
 namespace {
