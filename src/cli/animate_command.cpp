@@ -146,14 +146,16 @@ std::vector<uint8_t> grey_of(const std::vector<uint8_t>& levels, int channels) {
 void run_engine(const AnimateOptions& o, const AnimationSettings& a, const Sequence& sequence,
                 const EngineTaa& taa, const std::function<void(int, const Image&)>& on_frame,
                 const std::string& frames_dir, const GreyFrames& gif, std::ostream& out) {
-  EngineRun run;
-  run.scene = a.scene ? *a.scene : animation_frame(a.animation, a.width, a.height, 0, a.frames);
-  run.motion = a.motion;
+  // Refused before anything is rendered.
   if (!a.scene)
     throw Error(
         fmt::format("--taa: give a scene to move (checkerboard, a scene file, ...) with "
                     "--motion; the {} animation moves by its own rule",
                     a.animation));
+  if (!o.histogram.empty()) throw Error("--histogram: not in engine TAA (use --csv)");
+  EngineRun run;
+  run.scene = *a.scene;
+  run.motion = a.motion;
   run.width = a.width;
   run.height = a.height;
   run.frames = a.frames;
@@ -163,7 +165,6 @@ void run_engine(const AnimateOptions& o, const AnimationSettings& a, const Seque
   if (!o.csv.empty()) write_output(o.csv, engine_csv(r), out);
   if (!o.gif.empty()) write_gif(o.gif, gif);
   if (!o.mp4.empty()) write_mp4(frames_dir, o.mp4, o.fps, a.frames);
-  if (!o.histogram.empty()) throw Error("--histogram: not in engine TAA (use --csv)");
   if (o.json) {
     out << json_text(engine_taa_json(a.animation, run, sequence, taa, r));
     return;

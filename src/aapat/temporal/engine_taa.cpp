@@ -40,7 +40,7 @@ RenderSamples sample_frame(const Scene& scene, const std::vector<Vec2>& jitter, 
     for (int i = 0; i < rw; ++i)
       for (size_t k = 0; k < jitter.size(); ++k) {
         const Vec2 p{to_display(i + jitter[k].x, ratio), to_display(j + jitter[k].y, ratio)};
-        double* out = const_cast<double*>(s.at(i, j, static_cast<int>(k)));
+        double* out = &s.values[((static_cast<size_t>(j) * rw + i) * jitter.size() + k) * channels];
         if (channels == 3) {
           const Rgb c = shade_colour(scene, p);
           out[0] = c[0];

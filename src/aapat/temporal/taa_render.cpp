@@ -40,6 +40,7 @@ TaaResult render_taa(const TaaScenes& settings, const Sequence& s, const Accumul
   const int period = s.period();
   TaaResult r;
   std::vector<int> previous_error;
+  std::optional<Scene> previous_scene;  // flicker follows the motion from it
   double pixels = 0, ssim_sum = 0, flip_sum = 0, flicker_sum = 0;
   for (int f = 0; f < settings.frames; ++f) {
     const Scene scene = settings.scene_at(f);
@@ -74,12 +75,12 @@ TaaResult render_taa(const TaaScenes& settings, const Sequence& s, const Accumul
     for (size_t i = 0; i < error.size(); ++i)
       error[i] = grey_level(shown.values[i]) - grey_level(reference.values[i]);
     if (!previous_error.empty()) {
-      frame.flicker =
-          rendered_flicker(error, previous_error, shown.width, shown.height, shown.channels,
-                           settings.motion, scene, settings.scene_at(f - 1));
+      frame.flicker = rendered_flicker(error, previous_error, shown.width, shown.height,
+                                       shown.channels, settings.motion, scene, *previous_scene);
       flicker_sum += frame.flicker;
     }
     previous_error = std::move(error);
+    previous_scene = scene;
     r.frames.push_back(frame);
     if (on_frame) on_frame(f, shown);
   }
