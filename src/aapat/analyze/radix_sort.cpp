@@ -2,19 +2,24 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cstring>
 
 namespace aapat {
 namespace {
 
+// memcpy, not std::bit_cast: the WebAssembly build's libc++ (emscripten 3.1.6)
+// has no bit_cast.
 uint64_t key_of(double v) {
-  const uint64_t b = std::bit_cast<uint64_t>(v);
+  uint64_t b;
+  std::memcpy(&b, &v, sizeof b);
   return b & (uint64_t{1} << 63) ? ~b : b | (uint64_t{1} << 63);
 }
 
 double value_of(uint64_t k) {
-  return std::bit_cast<double>(k & (uint64_t{1} << 63) ? k & ~(uint64_t{1} << 63) : ~k);
+  const uint64_t b = k & (uint64_t{1} << 63) ? k & ~(uint64_t{1} << 63) : ~k;
+  double v;
+  std::memcpy(&v, &b, sizeof v);
+  return v;
 }
 
 }  // namespace

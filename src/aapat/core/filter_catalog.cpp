@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <map>
 
@@ -91,10 +92,29 @@ const FilterRegistry& filter_registry() {
 
 namespace {
 
+// The whole text as a decimal number, as std::from_chars reads it: no leading
+// '+', no hexadecimal, nothing after it.
+bool read_decimal(std::string_view text, double& v) {
+#if defined(__EMSCRIPTEN__)
+  // The WebAssembly build's libc++ has no floating-point from_chars; strtod
+  // (always the "C" locale there) reads the same texts once the characters
+  // from_chars would refuse are refused first.
+  if (text.empty() || text.front() == '+' ||
+      text.find_first_not_of("0123456789.eE+-") != std::string_view::npos)
+    return false;
+  const std::string copy(text);
+  char* end = nullptr;
+  v = std::strtod(copy.c_str(), &end);
+  return end == copy.c_str() + copy.size();
+#else
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  return ec == std::errc() && ptr == text.data() + text.size();
+#endif
+}
+
 double parse_plain(std::string_view text, std::string_view what, std::string_view whole_text) {
   double v = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v))
+  if (!read_decimal(text, v) || !std::isfinite(v))
     throw Error(fmt::format("{}: '{}' is not a finite number", what, whole_text));
   return v;
 }

@@ -244,8 +244,19 @@ void abs_moments(const Filter::AbsMomentTable& j, const double* p, size_t n, dou
   HWY_DYNAMIC_DISPATCH(AbsMoments)(j, p, n, out);
 }
 
+// A build with one Highway target (the WebAssembly build's HWY_COMPILE_ONLY_EMU128)
+// has no run-time choice, and no libhwy to ask.
+#if defined(HWY_COMPILE_ONLY_STATIC) || defined(HWY_COMPILE_ONLY_EMU128) || \
+    defined(HWY_COMPILE_ONLY_SCALAR)
+#define AAPAT_SIMD_STATIC_ONLY 1
+#endif
+
 std::vector<int64_t> simd_targets_here() {
+#if AAPAT_SIMD_STATIC_ONLY
+  return {HWY_STATIC_TARGET};
+#else
   return hwy::SupportedAndGeneratedTargets();
+#endif
 }
 
 std::string simd_target_name(int64_t target) {
@@ -253,12 +264,16 @@ std::string simd_target_name(int64_t target) {
 }
 
 std::string simd_target() {
-  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  const std::vector<int64_t> targets = simd_targets_here();
   return targets.empty() ? "none" : simd_target_name(targets.front());
 }
 
 void pin_simd_target(int64_t target) {
+#if AAPAT_SIMD_STATIC_ONLY
+  (void)target;  // one target: nothing to pin
+#else
   hwy::SetSupportedTargetsForTest(target);
+#endif
 }
 
 }  // namespace aapat

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace aapat {
@@ -25,7 +26,12 @@ struct PlacementConfig {
   int samples() const;  // samples the base pixel's kernel reads
   // The --placement string of `aapat optimize`, e.g. "bottom-left,left,top,right".
   std::string sites() const;
-  friend auto operator<=>(const PlacementConfig&, const PlacementConfig&) = default;
+  friend bool operator==(const PlacementConfig&, const PlacementConfig&) = default;
+  // By hand, not a defaulted <=>: the WebAssembly build's libc++ has no <=> for std::array.
+  friend bool operator<(const PlacementConfig& a, const PlacementConfig& b) {
+    return std::tie(a.corners, a.edges, a.inside) < std::tie(b.corners, b.edges, b.inside);
+  }
+  friend bool operator<=(const PlacementConfig& a, const PlacementConfig& b) { return !(b < a); }
 };
 
 struct EnumerationRules {
