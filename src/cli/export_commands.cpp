@@ -41,32 +41,17 @@ Action add_export_command(CLI::App& app) {
   return [o](std::ostream& out) {
     const ApiProfile& profile = api_profile(o->api);
     const Objective objective = o->metric.resolve();
-    const Metric metric = objective.metric();
     const Pattern original = resolve_pattern(o->pattern);
-    const Pattern p = o->snap ? snap_to_lattice(original, kLatticeSteps) : original;
     int gw = 0, gh = 0;
     if (!o->grid.empty()) {
       std::tie(gw, gh) = parse_size(o->grid, "--grid", profile.max_grid);
       if (!profile.grid_choice)
         throw Error(fmt::format("--grid: {} has a fixed grid", profile.name));
     }
-    const HardwareLayout L = hardware_layout(p, profile, gw, gh);
-    std::vector<std::string> notes{
-        fmt::format(
-            "{} {}: E2 {:.4f} under the {}{}", p.name, family(p), metric.evaluate(p).e2,
-            objective.caption(),
-            o->snap ? fmt::format(", snapped from E2 {:.4f}", metric.evaluate(original).e2) : ""),
-        fmt::format("{} samples per pixel; the resolve reads {} per output pixel",
-                    format_cost(samples_per_pixel(p)), format_cost(L.reads()))};
-    // What it was designed for, from its provenance, beside the E2 under it.
-    if (const auto designed = design_objective(original); designed && *designed != objective)
-      notes.insert(notes.begin() + 1,
-                   fmt::format("designed for the {}: E2 {:.4f} under it", designed->caption(),
-                               designed->metric().evaluate(p).e2));
-    else if (designed)
-      notes.insert(notes.begin() + 1, "designed for this objective");
-    const std::string text = export_layout(
-        L, o->shader.empty() ? default_shader(profile) : parse_shader_language(o->shader), notes);
+    const std::string text = export_pattern(
+        original, profile, objective,
+        o->shader.empty() ? default_shader(profile) : parse_shader_language(o->shader), o->snap, gw,
+        gh);
     if (o->output.empty()) {
       out << text;
     } else {

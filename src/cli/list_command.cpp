@@ -16,20 +16,6 @@ namespace {
 
 using Section = RegistrySection;
 
-JsonObject info_json(const SpecInfo& info) {
-  JsonObject params = JsonObject::array();
-  for (const ParamInfo& p : info.params)
-    params.push_back(
-        {{"key", p.key},
-         {"default", p.default_text.empty() ? JsonObject() : JsonObject(p.default_text)},
-         {"meaning", p.meaning}});
-  return {{"name", info.name},
-          {"usage", info.usage()},
-          {"summary", info.summary},
-          {"source", info.source},
-          {"parameters", params}};
-}
-
 // "spiral:turns=6,arm=0.35", or the family beside a catalog pattern's name.
 std::string entry_line(const Section& s, const SpecInfo& info) {
   if (s.key == "patterns") {
@@ -56,11 +42,7 @@ Action add_list_command(CLI::App& app) {
   return [json](std::ostream& out) {
     if (*json) {
       JsonObject doc = json_report("list");
-      for (const Section& s : registry_sections()) {
-        JsonObject entries = JsonObject::array();
-        for (const SpecInfo& info : s.infos) entries.push_back(info_json(info));
-        doc[s.key] = std::move(entries);
-      }
+      doc.update(registry_json());
       out << json_text(doc);
       return;
     }

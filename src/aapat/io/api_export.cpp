@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "aapat/core/filter_catalog.h"
+#include "aapat/core/lattice.h"
+#include "aapat/core/metric.h"
 
 namespace aapat {
 namespace {
@@ -329,6 +331,28 @@ HardwareLayout parse_export(std::string_view text, std::string_view source) {
                            whole(taps[3 * t + 2], source, "aapat_taps"), weights[t]});
   }
   return L;
+}
+
+std::string export_pattern(const Pattern& pattern, const ApiProfile& profile,
+                           const Objective& objective, ShaderLanguage shader, bool snap, int grid_w,
+                           int grid_h) {
+  const Metric metric = objective.metric();
+  const Pattern p = snap ? snap_to_lattice(pattern, kLatticeSteps) : pattern;
+  const HardwareLayout L = hardware_layout(p, profile, grid_w, grid_h);
+  std::vector<std::string> notes{
+      fmt::format("{} {}: E2 {:.4f} under the {}{}", p.name, family(p), metric.evaluate(p).e2,
+                  objective.caption(),
+                  snap ? fmt::format(", snapped from E2 {:.4f}", metric.evaluate(pattern).e2) : ""),
+      fmt::format("{} samples per pixel; the resolve reads {} per output pixel",
+                  format_cost(samples_per_pixel(p)), format_cost(L.reads()))};
+  // What it was designed for, from its provenance, beside the E2 under it.
+  if (const auto designed = design_objective(pattern); designed && *designed != objective)
+    notes.insert(notes.begin() + 1,
+                 fmt::format("designed for the {}: E2 {:.4f} under it", designed->caption(),
+                             designed->metric().evaluate(p).e2));
+  else if (designed)
+    notes.insert(notes.begin() + 1, "designed for this objective");
+  return export_layout(L, shader, notes);
 }
 
 }  // namespace aapat

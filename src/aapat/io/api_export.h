@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "aapat/core/hardware_layout.h"
+#include "aapat/core/objective.h"
 
 namespace aapat {
 
@@ -22,6 +23,15 @@ ShaderLanguage parse_shader_language(std::string_view name);
 // `notes`: comment lines placed under the header (E2, cost, provenance).
 std::string export_layout(const HardwareLayout& layout, ShaderLanguage shader,
                           const std::vector<std::string>& notes = {});
+
+// What `aapat export` writes (and the explorer page's export): `pattern`
+// (snapped to the 1/16 lattice first when `snap`) as `profile`'s arrays and
+// resolve shader on a grid_w x grid_h pixel grid (0: the pattern's tile),
+// with notes giving its E2 under `objective`, what it was designed for, and
+// its cost.
+std::string export_pattern(const Pattern& pattern, const ApiProfile& profile,
+                           const Objective& objective, ShaderLanguage shader, bool snap = false,
+                           int grid_w = 0, int grid_h = 0);
 
 // The numbers of a C-like initializer: comments, identifiers (int3, the f of
 // 0.5f) and punctuation skipped.

@@ -68,4 +68,28 @@ std::vector<RegistrySection> registry_sections() {
                       preset_infos()}};
 }
 
+JsonObject spec_info_json(const SpecInfo& info) {
+  JsonObject params = JsonObject::array();
+  for (const ParamInfo& p : info.params)
+    params.push_back(
+        {{"key", p.key},
+         {"default", p.default_text.empty() ? JsonObject() : JsonObject(p.default_text)},
+         {"meaning", p.meaning}});
+  return {{"name", info.name},
+          {"usage", info.usage()},
+          {"summary", info.summary},
+          {"source", info.source},
+          {"parameters", params}};
+}
+
+JsonObject registry_json() {
+  JsonObject doc = JsonObject::object();
+  for (const RegistrySection& s : registry_sections()) {
+    JsonObject entries = JsonObject::array();
+    for (const SpecInfo& info : s.infos) entries.push_back(spec_info_json(info));
+    doc[s.key] = std::move(entries);
+  }
+  return doc;
+}
+
 }  // namespace aapat

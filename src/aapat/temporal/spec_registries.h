@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "aapat/core/spec.h"
+#include "aapat/io/json_report.h"
 
 namespace aapat {
 
@@ -19,5 +20,10 @@ struct RegistrySection {
 };
 
 std::vector<RegistrySection> registry_sections();
+// One entry as `aapat list --json` and the explorer page read it: name, usage,
+// summary, source, parameters [{key, default (null: none), meaning}].
+JsonObject spec_info_json(const SpecInfo& info);
+// Every section under its key, each a list of spec_info_json entries.
+JsonObject registry_json();
 
 }  // namespace aapat
