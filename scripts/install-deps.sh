@@ -9,6 +9,7 @@ packages=(cmake ninja-build g++ pkg-config
   python3-venv python3-pip python3-setuptools python3-wheel  # pip install . (setup.py drives CMake)
   libassimp-dev assimp-testmodels libjpeg-dev  # model files (io/mesh_file.h), their JPEG textures, and the real models the tests and study render
   chromium python3-pil  # the study report opened in a real browser (scripts/test-report.sh)
+  emscripten  # the library as WebAssembly for the explorer page (scripts/build-web.sh)
   libopenmpi-dev openmpi-bin)  # runs across processes and machines (src/cluster, docs/cluster.md)
 missing=()
 for p in "${packages[@]}"; do

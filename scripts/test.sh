@@ -3,7 +3,8 @@
 # every test in both (the Python suite in the optimized one), checks that the
 # committed docs/ tables and figures regenerate byte for byte, that the
 # installed package builds and runs the example in examples/ and that the
-# study's report page works in headless Chromium, then fuzzes each
+# study's report page and the explorer page (built to WebAssembly) work in
+# headless Chromium, then fuzzes each
 # parser for a fixed budget under ASan + UBSan (scripts/fuzz.sh;
 # AAPAT_FUZZ_SECONDS per target, default 10). This is what CI runs (.ci/run).
 set -euo pipefail
@@ -27,6 +28,8 @@ for preset in release asan; do
     scripts/test-pip.sh || status=1
     echo "== the study report in headless Chromium"
     scripts/test-report.sh || status=1
+    echo "== the explorer page: WebAssembly build, headless Chromium"
+    scripts/test-web.sh || status=1
   fi
 done
 echo "== fuzz: every parser under ASan + UBSan"

@@ -1,0 +1,207 @@
+// The explorer page in Debian's headless Chromium, driven by puppeteer-core
+// (scripts/test-web.sh runs it), and the WebAssembly module in node, both
+// checked against the native CLI:
+//   - E2 of every catalog pattern under both named objectives, module == CLI to 1e-12;
+//   - #pattern=flipquad shows the recommended objective's E2, and with
+//     &objective=laine-aila 0.3643 (Laine & Aila 2006, Table 2);
+//   - a sample dragged with the mouse: the page's E2 == the CLI's for the pattern it shows;
+//   - a sample dropped on a border becomes shared (the family gains its '+');
+//   - an optimization run to the end in the worker == `aapat optimize` with the same seed;
+//   - cancel stops it and the page keeps working;
+//   - a bad upload, a NaN weight, a hash that does not parse and a pattern over
+//     the limits each show a message naming the problem;
+//   - no console message of any kind, no uncaught error.
+// Usage: node explorer.test.mjs PAGE.html AAPAT_BINARY MODULE.js [--bench] [--screenshot PNG]
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, writeFileSync, rmSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import puppeteer from 'puppeteer-core';
+
+const [pagePath, aapat, modulePath, ...rest] = process.argv.slice(2);
+if (!pagePath || !aapat || !modulePath) {
+  console.error('usage: node explorer.test.mjs PAGE.html AAPAT_BINARY MODULE.js [--bench] [--screenshot PNG]');
+  process.exit(2);
+}
+const bench = rest.includes('--bench');
+const shotAt = rest.indexOf('--screenshot');
+const screenshot = shotAt >= 0 ? rest[shotAt + 1] : null;
+const url = 'file://' + resolve(pagePath);
+const tmp = mkdtempSync(join(tmpdir(), 'aapat-explorer-'));
+
+let failures = 0;
+function check(ok, what) {
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
+  if (!ok) failures += 1;
+}
+function cli(...args) {
+  return JSON.parse(execFileSync(aapat, args, { encoding: 'utf8', maxBuffer: 1 << 26 }));
+}
+function near(a, b, tol) {
+  return Math.abs(a - b) <= tol;
+}
+
+// ---- the module in node against the CLI: every catalog pattern ------------
+const module = await createRequire(import.meta.url)(resolve(modulePath))();
+const info = JSON.parse(module.info());
+const names = info.registry.patterns.concat(info.registry.aapat_patterns)
+  .map((e) => e.name).filter((n) => !n.includes('NxN'));
+for (const objective of ['recommended', 'laine-aila']) {
+  const native = cli('eval', ...names, '--objective', objective, '--json').rows;
+  let worst = 0;
+  for (const [i, name] of names.entries()) {
+    const web = JSON.parse(module.evaluate(JSON.stringify({ pattern: name, objective }))).eval.rows[0];
+    worst = Math.max(worst, Math.abs(web.e2 - native[i].e2));
+  }
+  check(worst <= 1e-12, `${names.length} catalog patterns, objective ${objective}: module E2 == CLI E2 (largest difference ${worst.toExponential(2)})`);
+}
+
+// ---- the page --------------------------------------------------------------
+const browser = await puppeteer.launch({
+  executablePath: '/usr/bin/chromium',
+  headless: true,
+  args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+    '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+});
+const consoleMessages = [];
+const page = await browser.newPage();
+await page.setViewport({ width: 1400, height: 1000 });
+page.on('console', (m) => consoleMessages.push(`${m.type()}: ${m.text()}`));
+page.on('pageerror', (e) => consoleMessages.push(`uncaught: ${e.message}`));
+
+async function open(hash) {
+  await page.goto('about:blank');
+  await page.goto(url + hash, { waitUntil: 'load' });
+  await page.waitForFunction(() => window.aapatStats && window.aapatStats.ready, { timeout: 60000 });
+}
+const e2Shown = () => page.$eval('#e2', (e) => Number(e.dataset.value));
+const message = () => page.$eval('#message', (e) => (e.hidden ? '' : e.textContent));
+
+try {
+  // Shared links: a catalog name, with and without an objective.
+  await open('#pattern=flipquad');
+  const flipquad = cli('eval', 'flipquad', '--json').rows[0].e2;
+  check(near(await e2Shown(), flipquad, 1e-12), `#pattern=flipquad shows the recommended objective's E2 ${flipquad.toFixed(4)}`);
+  await open('#pattern=flipquad&objective=laine-aila');
+  const text = await page.$eval('#e2', (e) => e.textContent);
+  const la = cli('eval', 'flipquad', '--objective', 'laine-aila', '--json').rows[0].e2;
+  check(text === '0.3643' && near(await e2Shown(), la, 1e-12), `#pattern=flipquad&objective=laine-aila shows ${text} (Laine & Aila Table 2: 0.3643)`);
+
+  // A drag with the mouse; the CLI evaluates the pattern the page shows.
+  await open('#pattern=msaa-8');
+  const [x0, y0] = await page.evaluate(() => window.aapatExplorer.samplePoint(0, 2));
+  const px = await page.evaluate(() => window.aapatExplorer.pixelSize());
+  await page.mouse.move(x0, y0);
+  await page.mouse.down();
+  const steps = 24;
+  for (let k = 1; k <= steps; ++k) await page.mouse.move(x0 + 0.13 * px * k / steps, y0 + 0.07 * px * k / steps);
+  await page.mouse.up();
+  const dragged = await page.evaluate(() => window.aapatExplorer.pattern());
+  const file = join(tmp, 'dragged.json');
+  writeFileSync(file, JSON.stringify(dragged));
+  const nativeDragged = cli('eval', file, '--json').rows[0].e2;
+  const shown = await e2Shown();
+  check(dragged.name === 'msaa-8-edited' && near(shown, nativeDragged, 1e-12),
+    `dragged sample: page E2 ${shown.toFixed(6)} == CLI E2 ${nativeDragged.toFixed(6)} of ${dragged.name}`);
+  const latencies = await page.evaluate(() => window.aapatStats.dragLatencyMs);
+  const frames = await page.evaluate(() => window.aapatStats.frameLatencyMs);
+  const median = (v) => [...v].sort((a, b) => a - b)[Math.floor(v.length / 2)];
+  console.log(`     drag-to-update latency over ${latencies.length} moves: median ${median(latencies).toFixed(1)} ms, ` +
+    `largest ${Math.max(...latencies).toFixed(1)} ms; to the next frame: median ${median(frames).toFixed(1)} ms`);
+
+  // Dropped on the left border: shared, so P(1,1,8) becomes P(1,1+,8) and reads 9.
+  const [x1, y1] = await page.evaluate(() => window.aapatExplorer.samplePoint(0, 3));
+  await page.mouse.move(x1, y1);
+  await page.mouse.down();
+  const left = await page.evaluate(() => {
+    const c = document.getElementById('pattern-canvas').getBoundingClientRect();
+    return c.left + c.width * (1 / (1 + 2)) - 1;  // just outside the base pixel's left edge
+  });
+  await page.mouse.move(left, y1, { steps: 8 });
+  await page.mouse.up();
+  const shared = await page.evaluate(() => window.aapatExplorer.pattern());
+  const family = await page.$eval('#family', (e) => e.textContent);
+  check(shared.footprint === '1+' && shared.sets[0].length === 9 && family === 'P(1,1+,8)',
+    `a sample dropped on a border is shared: family ${family}, ${shared.sets[0].length} samples read`);
+
+  // An optimization to the end in the worker: the same result as the module
+  // run in node with the same settings (same seed, same output), and its
+  // pattern's E2 as the CLI evaluates it. (Not the CLI's own optimize result:
+  // emscripten's libm rounds a few cos/sin values differently from glibc's in
+  // the last bit, so a long descent may end in another local minimum;
+  // docs/explorer.md.)
+  await open('#pattern=msaa-4');
+  await page.select('#opt-mode', 'search');
+  const starts = bench ? 64 : 4;
+  const searched = bench ? 'P(1,1,16)' : 'P(1,1,8)';
+  await page.$eval('#opt-family', (e, v) => { e.value = v; }, searched);
+  await page.$eval('#opt-starts', (e, v) => { e.value = String(v); }, starts);
+  await page.click('#opt-run');
+  await page.waitForFunction(() => window.aapatStats.optimizeSeconds !== null, { timeout: 600000 });
+  const optE2 = Number(await page.$eval('#opt-status', (e) => e.dataset.e2));
+  const seconds = await page.evaluate(() => window.aapatStats.optimizeSeconds);
+  const inNode = JSON.parse(module.optimize(JSON.stringify({ family: searched, starts, seed: 1, method: 'descent', objective: 'recommended' }), null));
+  const found = await page.evaluate(() => window.aapatExplorer.pattern());
+  const foundFile = join(tmp, 'found.json');
+  writeFileSync(foundFile, JSON.stringify(found));
+  const foundNative = cli('eval', foundFile, '--json').rows[0].e2;
+  const nativeOpt = cli('optimize', '--family', searched, '--starts', String(starts), '--seed', '1', '--json');
+  check(optE2 === inNode.report.e2 && near(await e2Shown(), optE2, 1e-12) && near(foundNative, optE2, 1e-12),
+    `optimize ${searched} from ${starts} starts in the worker (${seconds.toFixed(1)} s): E2 ${optE2.toFixed(6)}, ` +
+    `the module's in node, and the CLI's E2 of the pattern found (the CLI's own search: ${nativeOpt.e2.toFixed(6)})`);
+
+  // Cancel: a long search stopped, and the page still answers.
+  await page.$eval('#opt-starts', (e) => { e.value = '1024'; });
+  await page.$eval('#opt-family', (e) => { e.value = 'P(1,1,16)'; });
+  await page.click('#opt-run');
+  await page.waitForFunction(() => document.getElementById('opt-status').textContent.includes('of 1024'), { timeout: 60000 });
+  await page.click('#opt-cancel');
+  const cancelled = await page.$eval('#opt-status', (e) => e.textContent);
+  await page.select('#catalog', 'flipquad');
+  const after = await e2Shown();
+  check(cancelled === 'cancelled' && near(after, flipquad, 1e-12), `cancel stops the worker (status '${cancelled}') and the page goes on`);
+
+  // Bad input: each shows a message naming the problem.
+  const bad = join(tmp, 'not-a-pattern.json');
+  writeFileSync(bad, '{"format": "aapat-pattern", "version": 1, "name": "bad", "tile": [1, 1], "footprint": "1", "sets": [[[0.7, 0]]], "kernels": [[1]]}');
+  const input = await page.$('#upload');
+  await input.uploadFile(bad);
+  await page.waitForFunction(() => !document.getElementById('message').hidden, { timeout: 10000 });
+  const m1 = await message();
+  check(/not-a-pattern\.json/.test(m1) && /outside the pixel/.test(m1), `bad upload: "${m1}"`);
+  const garbage = join(tmp, 'garbage.json');
+  writeFileSync(garbage, 'this is not JSON');
+  await input.uploadFile(garbage);
+  await page.waitForFunction(() => /not valid JSON/.test(document.getElementById('message').textContent), { timeout: 10000 });
+  check(true, `upload of a file that is not JSON: "${await message()}"`);
+
+  await page.$eval('#weights input', (e) => { e.value = 'NaN'; e.dispatchEvent(new Event('change', { bubbles: true })); });
+  const m2 = await message();
+  check(/^weight 0 of kernel 0: 'NaN' is not a number$/.test(m2), `NaN weight: "${m2}"`);
+
+  await open('#pattern=flipqaud');
+  const m3 = await message();
+  check(/^link: /.test(m3) && /flipquad/.test(m3), `misspelt catalog name in the link: "${m3}"`);
+  await open('#design={"tile":[1,1],');
+  const m4 = await message();
+  check(/link: the design is not valid JSON/.test(m4), `a link whose design does not parse: "${m4}"`);
+  const many = Array.from({ length: 1025 }, (_, i) => [((i % 32) + 0.5) / 32 - 0.5, (Math.floor(i / 32) + 0.5) / 33 - 0.5]);
+  await open('#design=' + encodeURIComponent(JSON.stringify({ tile: [1, 1], footprint: '1', sets: [many], kernels: [many.map(() => 1 / 1025)] })));
+  const m5 = await message();
+  check(/1025 samples exceed the limit of 1024/.test(m5), `a pattern over the limits: "${m5}"`);
+  check(await e2Shown() > 0, 'after every bad input the page still shows a pattern and its E2');
+
+  if (screenshot) {
+    await open('#pattern=aapat-8');
+    await page.screenshot({ path: screenshot });
+    console.log(`     wrote ${screenshot}`);
+  }
+} finally {
+  await browser.close();
+  rmSync(tmp, { recursive: true, force: true });
+}
+
+check(consoleMessages.length === 0, `no console message${consoleMessages.length ? ':\n  ' + consoleMessages.join('\n  ') : ''}`);
+console.log(failures ? `explorer: ${failures} check(s) failed` : 'explorer: every check passed');
+process.exit(failures ? 1 : 0);
