@@ -135,6 +135,25 @@ std::string fingerprint(int argc, const char* const* argv) {
   return text;
 }
 
+// Standard output carries one format: --json and an output named `-`, or two
+// outputs named `-`, would interleave theirs. "" when they do not.
+std::string standard_output_conflict(const CLI::App& command) {
+  std::vector<std::string> users;
+  for (const CLI::Option* o : command.get_options()) {
+    if (!o->nonpositional() || o->count() == 0) continue;
+    const std::string name = o->get_name(false, true);
+    if (o->check_lname("json")) users.push_back(name);
+    for (const std::string& value : o->results())
+      if (value == "-") users.push_back(name + " -");
+  }
+  if (users.size() >= 2)
+    return fmt::format("{} would all write to standard output; give files for all but one",
+                       fmt::join(users, " and "));
+  for (const CLI::App* sub : command.get_subcommands())  // `sequence eval`, ...
+    if (std::string message = standard_output_conflict(*sub); !message.empty()) return message;
+  return "";
+}
+
 // The command word of a command line that CLI11 could not parse: the first
 // argument that is neither an option nor the value of a global one; "" if none.
 std::string command_word(int argc, const char* const* argv) {
@@ -153,6 +172,7 @@ std::string command_word(int argc, const char* const* argv) {
 
 int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
               WorkEngine* engine) {
+  forget_inputs_read();  // a checkpoint binds to this command's inputs alone
   CLI::App app{
       "aapat: design antialiasing sample patterns (Laine-Aila E2 metric, Hasselgren schemes)",
       "aapat"};
@@ -226,6 +246,13 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
     std::string message = describe_current_exception();
     err << "aapat: error: " << message << "\n";
     return items.agree(kExitUsage, message);
+  }
+  for (const auto& [sub, action] : commands) {
+    if (!sub->parsed()) continue;
+    if (std::string message = standard_output_conflict(*sub); !message.empty()) {
+      err << "aapat: error: " << message << "\n";
+      return items.agree(kExitUsage, message);
+    }
   }
   g_warnings = &err;
   struct ResetWarnings {

@@ -6,13 +6,26 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <mutex>
 #include <sstream>
 
 #include "aapat/core/geometry.h"
+#include "aapat/core/hash.h"
 
 namespace aapat {
+namespace {
 
-std::string read_file(const std::string& path, std::string_view what, size_t max_bytes) {
+std::mutex inputs_mutex;
+std::map<std::string, InputRead>& inputs() {
+  static std::map<std::string, InputRead> kInputs;
+  return kInputs;
+}
+
+}  // namespace
+
+std::string read_file(const std::string& path, std::string_view what, size_t max_bytes,
+                      bool note_input) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (ec || !std::filesystem::exists(status))
@@ -30,7 +43,24 @@ std::string read_file(const std::string& path, std::string_view what, size_t max
   std::ostringstream s;
   s << in.rdbuf();
   if (in.bad()) throw Error(fmt::format("cannot read {} '{}': read failed", what, path));
-  return s.str();
+  std::string bytes = s.str();
+  if (note_input) {
+    const std::lock_guard<std::mutex> lock(inputs_mutex);
+    inputs()[path] = {path, bytes.size(), fnv1a(bytes)};
+  }
+  return bytes;
+}
+
+void forget_inputs_read() {
+  const std::lock_guard<std::mutex> lock(inputs_mutex);
+  inputs().clear();
+}
+
+std::vector<InputRead> inputs_read() {
+  const std::lock_guard<std::mutex> lock(inputs_mutex);
+  std::vector<InputRead> out;
+  for (const auto& [path, read] : inputs()) out.push_back(read);
+  return out;
 }
 
 }  // namespace aapat

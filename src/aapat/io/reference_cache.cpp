@@ -66,7 +66,7 @@ ReferenceSource cached_references(std::string dir, Warn warn) {
       if (!std::filesystem::is_regular_file(path, ec)) return miss;
       std::string data;
       try {
-        data = read_file(path, "cached reference", head.size() + kChecksumLineBytes + bytes);
+        data = read_file(path, "cached reference", head.size() + kChecksumLineBytes + bytes, false);
       } catch (const Error&) {  // unreadable: recomputed below
       }
       // A file that is not this reference (collision, older format) is recomputed.

@@ -6,12 +6,14 @@
 #include <map>
 #include <mutex>
 
+#include "aapat/core/hash.h"
 #include "aapat/io/atomic_file.h"
 
 namespace aapat {
 
-Texture read_texture_png(const std::string& path) {
-  const std::string bytes = read_file(path, "texture file", kMaxTextureFileBytes);
+namespace {
+
+Texture decode_texture_png(const std::string& bytes, const std::string& path) {
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()))
@@ -37,19 +39,34 @@ Texture read_texture_png(const std::string& path) {
   return t;
 }
 
+}  // namespace
+
+Texture read_texture_png(const std::string& path) {
+  return decode_texture_png(read_file(path, "texture file", kMaxTextureFileBytes), path);
+}
+
 std::shared_ptr<const TexturedSurface> load_texture(const std::string& spec_or_path) {
+  // Kept by spec, and a file by its content as well: a process that renders
+  // again after the file changed (Python, a host program) sees the new
+  // texture. The file is read every time (which also binds a checkpoint to
+  // it, core/read_file.h); only the decoding and the mipmaps are saved.
   static std::mutex lock;
   static std::map<std::string, std::shared_ptr<const TexturedSurface>> loaded;
+  const bool file = spec_or_path.ends_with(".png");
+  const std::string bytes =
+      file ? read_file(spec_or_path, "texture file", kMaxTextureFileBytes) : std::string();
+  const std::string key =
+      file ? fmt::format("{}\n{} {:016x}", spec_or_path, bytes.size(), fnv1a(bytes)) : spec_or_path;
   {
     std::lock_guard<std::mutex> guard(lock);
-    if (const auto it = loaded.find(spec_or_path); it != loaded.end()) return it->second;
+    if (const auto it = loaded.find(key); it != loaded.end()) return it->second;
   }
-  Texture t =
-      spec_or_path.ends_with(".png") ? read_texture_png(spec_or_path) : make_texture(spec_or_path);
+  Texture t = file ? decode_texture_png(bytes, spec_or_path) : make_texture(spec_or_path);
   validate(t, spec_or_path);
   auto surface = std::make_shared<const TexturedSurface>(std::move(t));
   std::lock_guard<std::mutex> guard(lock);
-  return loaded.try_emplace(spec_or_path, std::move(surface)).first->second;
+  if (loaded.size() >= 64) loaded.clear();  // a long session's edits do not pile up
+  return loaded.try_emplace(key, std::move(surface)).first->second;
 }
 
 Scene with_texture(Scene scene, const std::string& texture) {

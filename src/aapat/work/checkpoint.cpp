@@ -1,6 +1,7 @@
 #include "aapat/work/checkpoint.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -8,16 +9,21 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "aapat/core/geometry.h"
 #include "aapat/core/hash.h"
+#include "aapat/core/read_file.h"
 
 namespace aapat {
 namespace {
 
 // Version 2: a record's checksum covers its set and index as well as its
 // bytes (version 1's covered the bytes alone, so swapped indices passed).
-constexpr std::string_view kMagic = "aapat-checkpoint 2\n";
+// Version 3: each set of work items also records the input files read before
+// it began (core/read_file.h), so a changed texture inside a scene file is
+// seen, not only the files named on the command line.
+constexpr std::string_view kMagic = "aapat-checkpoint 3\n";
 constexpr std::string_view kAnyVersion = "aapat-checkpoint ";
 
 uint64_t record_sum(int call, int item, std::string_view bytes) {
@@ -31,9 +37,49 @@ std::string one_line(std::string text) {
   return text;
 }
 
+// "PATH BYTES FNV1A" of every input read, one after another, on one line.
+std::string inputs_text() {
+  std::string text;
+  for (const InputRead& r : inputs_read())
+    text += fmt::format("{}{} {} {:016x}", text.empty() ? "" : "\t", one_line(r.path), r.bytes,
+                        r.fnv1a);
+  return text;
+}
+
+// What differs between two inputs_text()s, for the message: the paths whose
+// digest changed, that are read now and were not, or the other way round.
+std::string changed_inputs(std::string_view before, std::string_view now) {
+  auto entries = [](std::string_view text) {
+    std::map<std::string, std::string> out;
+    size_t at = 0;
+    while (at < text.size()) {
+      size_t end = text.find('\t', at);
+      if (end == std::string_view::npos) end = text.size();
+      const std::string_view e = text.substr(at, end - at);
+      const size_t digest = e.rfind(' ', e.rfind(' ') - 1);
+      out[std::string(e.substr(0, digest))] = std::string(e.substr(digest + 1));
+      at = end + 1;
+    }
+    return out;
+  };
+  const auto a = entries(before), b = entries(now);
+  std::vector<std::string> notes;
+  for (const auto& [path, digest] : b) {
+    const auto it = a.find(path);
+    if (it == a.end())
+      notes.push_back(fmt::format("'{}' is read now and was not", path));
+    else if (it->second != digest)
+      notes.push_back(fmt::format("'{}' changed", path));
+  }
+  for (const auto& [path, digest] : a)
+    if (!b.contains(path)) notes.push_back(fmt::format("'{}' is no longer read", path));
+  return fmt::format("{}", fmt::join(notes, ", "));
+}
+
 // Reads the records after the header; returns where the last whole one ends.
 size_t read_records(const std::string& data, size_t at,
-                    std::map<std::pair<int, int>, std::string>& items, std::map<int, int>& counts) {
+                    std::map<std::pair<int, int>, std::string>& items, std::map<int, int>& counts,
+                    std::map<int, std::string>& inputs) {
   while (at < data.size()) {
     const size_t eol = data.find('\n', at);
     if (eol == std::string::npos) break;
@@ -45,6 +91,16 @@ size_t read_records(const std::string& data, size_t at,
     if (word == "set") {  // "set CALL COUNT"
       if (!(head >> call >> item)) break;
       counts[call] = item;
+      at = eol + 1;
+      continue;
+    }
+    if (word == "inputs") {  // "inputs CALL SUM TEXT": the inputs read before set CALL began
+      if (!(head >> call >> std::hex >> sum >> std::dec)) break;
+      std::string text;
+      std::getline(head, text);
+      if (!text.empty() && text.front() == ' ') text.erase(0, 1);
+      if (record_sum(call, -1, text) != sum) break;
+      inputs[call] = text;
       at = eol + 1;
       continue;
     }
@@ -90,7 +146,7 @@ Checkpoint::Checkpoint(std::string path, std::string fingerprint) : path_(std::m
             "delete the file or name another one",
             path_, other));
       }
-      keep = read_records(data, header.size(), items_, counts_);
+      keep = read_records(data, header.size(), items_, counts_, inputs_);
       restored_ = static_cast<int>(items_.size());
       // A record cut off by the kill is dropped before new ones follow it.
       std::filesystem::resize_file(path_, keep, ec);
@@ -115,6 +171,12 @@ Checkpoint::~Checkpoint() {
 }
 
 void Checkpoint::begin(int call, int count) {
+  const std::string inputs = inputs_text();
+  if (const auto it = inputs_.find(call); it != inputs_.end() && it->second != inputs)
+    throw Error(fmt::format(
+        "--checkpoint {}: the files the run read have changed since it was written ({}); "
+        "delete it or name another file",
+        path_, changed_inputs(it->second, inputs)));
   if (const auto it = counts_.find(call); it != counts_.end()) {
     if (it->second != count)
       throw Error(fmt::format(
@@ -122,11 +184,18 @@ void Checkpoint::begin(int call, int count) {
           "was written by another path through the command (another aapat version, or a time "
           "limit); delete it or name another file",
           path_, call + 1, count, it->second));
-    return;
+    if (inputs_.contains(call)) return;
   }
-  counts_[call] = count;
-  const std::string line = fmt::format("set {} {}\n", call, count);
-  append({line});
+  std::string lines;
+  if (!inputs_.contains(call)) {
+    inputs_[call] = inputs;
+    lines += fmt::format("inputs {} {:x} {}\n", call, record_sum(call, -1, inputs), inputs);
+  }
+  if (!counts_.contains(call)) {
+    counts_[call] = count;
+    lines += fmt::format("set {} {}\n", call, count);
+  }
+  append({lines});
 }
 
 std::optional<std::string> Checkpoint::find(int call, int item) const {

@@ -31,7 +31,9 @@ class Checkpoint {
 
   // The run's `call`-th set of work items has `count` items: recorded the
   // first time, checked on resume (a run that took another path, or a file
-  // from another version, is an Error rather than wrong results).
+  // from another version, is an Error rather than wrong results). So are the
+  // input files read before it began (core/read_file.h: inputs_read), by
+  // content: a run does not resume after a file it read changed.
   void begin(int call, int count);
   // Item `item` of the run's `call`-th set of work items, if it finished.
   std::optional<std::string> find(int call, int item) const;
@@ -47,7 +49,8 @@ class Checkpoint {
 
   std::string path_;
   std::map<std::pair<int, int>, std::string> items_;
-  std::map<int, int> counts_;  // items per set
+  std::map<int, int> counts_;          // items per set
+  std::map<int, std::string> inputs_;  // per set: the input files read before it began
   int restored_ = 0;
   std::FILE* file_ = nullptr;
 };
