@@ -16,6 +16,7 @@ AnimationSettings AnimationOptions::settings() const {
     throw Error(
         fmt::format("--size: '{}' must be at least {} pixels a side", size, kMinAnimationSize));
   s.reference = reference.settings;
+  check_animation_work(s.width, s.height, s.frames);  // before any scene is read
   return s;
 }
 

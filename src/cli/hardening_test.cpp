@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string>
 
+#include "aapat/render/animation.h"
 #include "cli/app.h"
 #include "testing/cli_run.h"
 
@@ -526,6 +527,34 @@ TEST(Hardening, DiffRefusesWhatItCannotCompareAndWritesNoMap) {
   EXPECT_EQ(alpha.code, 0) << alpha.err;
   EXPECT_NE(alpha.err.find("alpha channel; it is ignored"), std::string::npos) << alpha.err;
   EXPECT_TRUE(fs::exists(map));
+}
+
+}  // namespace
+}  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// Standard output carries one format (issue 26): --json beside an output
+// named `-`, or two outputs named `-`, are refused before any work.
+TEST(Hardening, StandardOutputCarriesOneFormat) {
+  expect_error(run({"spectrum", "jittered", "--n", "64", "--size", "16", "--json", "--csv", "-"}),
+               kExitUsage,
+               "--csv - and --json would all write to standard output; give files for all but one");
+  expect_error(run({"optimize", "--family", "P(1,1,2)", "--csv", "-", "--svg", "-"}), kExitUsage,
+               "--csv - and --svg - would all write to standard output");
+  const CliRun ok = run({"spectrum", "jittered", "--n", "64", "--size", "16", "--csv", "-"});
+  EXPECT_EQ(ok.code, kExitOk) << ok.err;
+}
+
+// An animation's work, frames x pixels, is bounded before any frame is drawn.
+TEST(Hardening, AnAnimationsFramesTimesPixelsIsBounded) {
+  expect_error(
+      run({"animate", "circle", "--pattern", "msaa-4", "--frames", "100000", "--size", "4096"}),
+      kExitError,
+      "frames 100000 at 4096x4096: 1.678e+12 pixel-frames exceed the limit of 1073741824 (2^30)");
+  EXPECT_THROW(check_animation_work(256, 256, 16385), ParameterError);
+  EXPECT_NO_THROW(check_animation_work(256, 256, 16384));
 }
 
 }  // namespace

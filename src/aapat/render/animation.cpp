@@ -1,5 +1,7 @@
 #include "aapat/render/animation.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "aapat/render/image_flip.h"
@@ -15,10 +17,21 @@ bool animation_moves(const AnimationSettings& a) {
   return !a.scene || a.motion.moving();
 }
 
+void check_animation_work(int width, int height, int frames) {
+  const double work = static_cast<double>(width) * height * frames;
+  if (work > kMaxAnimationPixelFrames)
+    throw ParameterError(
+        "frames",
+        fmt::format(" {} at {}x{}: {:.4g} pixel-frames exceed the limit of {:.0f} (2^30); "
+                    "render fewer frames or a smaller image",
+                    frames, width, height, work, kMaxAnimationPixelFrames));
+}
+
 AnimationResult animate(const AnimationSettings& a, const Sampling& sampling,
                         const std::optional<Filter>& filter,
                         const std::function<void(int, const Image&)>& on_frame,
                         const ReferenceSource& references) {
+  check_animation_work(a.width, a.height, a.frames);
   const ReferenceSource source = references ? references : render_reference;
   AnimationResult r;
   ImageError& total = r.total;

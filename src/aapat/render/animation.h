@@ -38,6 +38,13 @@ struct AnimationResult {
   double mean_flip = 0;  // over frames
 };
 
+// The most pixel-frames (width x height x frames, warm-up frames included)
+// one animation renders, refused before any work (docs/limits.md): 2^30,
+// e.g. 4096 x 4096 x 64 frames, or 256 x 256 x 16,384.
+inline constexpr double kMaxAnimationPixelFrames = 1073741824.0;
+// Throws ParameterError("frames") naming the product and the limit.
+void check_animation_work(int width, int height, int frames);
+
 // Frame f's scene: the animation's, or the scene moved f steps.
 Scene animation_scene(const AnimationSettings& settings, int frame);
 // Whether frame f differs from frame 0 (each frame needs its own reference).

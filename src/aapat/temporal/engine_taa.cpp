@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "aapat/render/animation.h"
 #include "aapat/render/color_render.h"
 #include "aapat/render/image_flip.h"
 #include "aapat/render/surface.h"
@@ -208,6 +209,7 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
   if (run.warmup < 0 || run.warmup > kMaxWarmupFrames)
     throw ParameterError("warmup",
                          fmt::format(" {}: from 0 to {} frames", run.warmup, kMaxWarmupFrames));
+  check_animation_work(run.width, run.height, run.frames + run.warmup);
   const ReferenceSource source = references ? references : render_reference;
   const int w = run.width, h = run.height, ch = scene_channels(run.scene);
   const int rw = render_side(w, taa.ratio), rh = render_side(h, taa.ratio);

@@ -32,6 +32,7 @@ TaaResult render_taa(const TaaScenes& settings, const Sequence& s, const Accumul
                      const ReferenceSource& references) {
   if (settings.frames < 1)
     throw ParameterError("frames", fmt::format(" {}: at least one frame", settings.frames));
+  check_animation_work(settings.width, settings.height, settings.frames);
   validate(s);
   validate(a);
   if (s.frames[0].footprint.size != 1 && a.resolve)
