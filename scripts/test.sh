@@ -12,26 +12,29 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 jobs=$(nproc 2>/dev/null || echo 2)
 status=0
+# Each stage's heading says when it started (minutes:seconds into the run).
+at() { printf '[%d:%02d]' $((SECONDS / 60)) $((SECONDS % 60)); }
 for preset in release asan; do
-  echo "== ${preset}: configure and build"
+  echo "== $(at) ${preset}: configure and build"
   cmake --preset "$preset" >/dev/null
   cmake --build --preset "$preset" -j "$jobs"
-  echo "== ${preset}: tests"
+  echo "== $(at) ${preset}: tests"
   # Each test's line, the output of any that fails, and ctest's summary.
   ctest --preset "$preset" -j "$jobs" --output-on-failure || status=1
   if [ "$preset" = release ]; then
-    echo "== docs: every committed table and figure regenerates byte for byte"
+    echo "== $(at) docs: every committed table and figure regenerates byte for byte"
     scripts/check-docs.sh || status=1
-    echo "== the installed package"
+    echo "== $(at) the installed package"
     scripts/test-install.sh || status=1
-    echo "== pip install . into a venv"
+    echo "== $(at) pip install . into a venv"
     scripts/test-pip.sh || status=1
-    echo "== the study report in headless Chromium"
+    echo "== $(at) the study report in headless Chromium"
     scripts/test-report.sh || status=1
-    echo "== the explorer page: WebAssembly build, headless Chromium"
+    echo "== $(at) the explorer page: WebAssembly build, headless Chromium"
     scripts/test-web.sh || status=1
   fi
 done
-echo "== fuzz: every parser under ASan + UBSan"
+echo "== $(at) fuzz: every parser under ASan + UBSan"
 scripts/fuzz.sh build/asan || status=1
+echo "== $(at) done, exit $status"
 exit "$status"
