@@ -57,6 +57,12 @@ for (const objective of ['recommended', 'laine-aila']) {
   check(worst <= 1e-12, `${names.length} catalog patterns, objective ${objective}: module E2 == CLI E2 (largest difference ${worst.toExponential(2)})`);
 }
 
+// One definition: the page's registries are `aapat list --json`'s.
+const listed = cli('list', '--json');
+delete listed.command;
+delete listed.schema;
+check(JSON.stringify(info.registry) === JSON.stringify(listed), `the module's registries == aapat list --json (${Object.keys(listed).length} sections)`);
+
 // ---- the page --------------------------------------------------------------
 const browser = await puppeteer.launch({
   executablePath: '/usr/bin/chromium',
@@ -89,7 +95,7 @@ try {
   check(text === '0.3643' && near(await e2Shown(), la, 1e-12), `#pattern=flipquad&objective=laine-aila shows ${text} (Laine & Aila Table 2: 0.3643)`);
 
   // A drag with the mouse; the CLI evaluates the pattern the page shows.
-  await open('#pattern=msaa-8');
+  await open('#pattern=msaa-16');
   const [x0, y0] = await page.evaluate(() => window.aapatExplorer.samplePoint(0, 2));
   const px = await page.evaluate(() => window.aapatExplorer.pixelSize());
   await page.mouse.move(x0, y0);
@@ -102,15 +108,15 @@ try {
   writeFileSync(file, JSON.stringify(dragged));
   const nativeDragged = cli('eval', file, '--json').rows[0].e2;
   const shown = await e2Shown();
-  check(dragged.name === 'msaa-8-edited' && near(shown, nativeDragged, 1e-12),
+  check(dragged.name === 'msaa-16-edited' && near(shown, nativeDragged, 1e-12),
     `dragged sample: page E2 ${shown.toFixed(6)} == CLI E2 ${nativeDragged.toFixed(6)} of ${dragged.name}`);
   const latencies = await page.evaluate(() => window.aapatStats.dragLatencyMs);
   const frames = await page.evaluate(() => window.aapatStats.frameLatencyMs);
   const median = (v) => [...v].sort((a, b) => a - b)[Math.floor(v.length / 2)];
-  console.log(`     drag-to-update latency over ${latencies.length} moves: median ${median(latencies).toFixed(1)} ms, ` +
+  console.log(`     drag-to-update latency (16 samples) over ${latencies.length} moves: median ${median(latencies).toFixed(1)} ms, ` +
     `largest ${Math.max(...latencies).toFixed(1)} ms; to the next frame: median ${median(frames).toFixed(1)} ms`);
 
-  // Dropped on the left border: shared, so P(1,1,8) becomes P(1,1+,8) and reads 9.
+  // Dropped on the left border: shared, so P(1,1,16) becomes P(1,1+,16) and reads 17.
   const [x1, y1] = await page.evaluate(() => window.aapatExplorer.samplePoint(0, 3));
   await page.mouse.move(x1, y1);
   await page.mouse.down();
@@ -122,7 +128,7 @@ try {
   await page.mouse.up();
   const shared = await page.evaluate(() => window.aapatExplorer.pattern());
   const family = await page.$eval('#family', (e) => e.textContent);
-  check(shared.footprint === '1+' && shared.sets[0].length === 9 && family === 'P(1,1+,8)',
+  check(shared.footprint === '1+' && shared.sets[0].length === 17 && family === 'P(1,1+,16)',
     `a sample dropped on a border is shared: family ${family}, ${shared.sets[0].length} samples read`);
 
   // An optimization to the end in the worker: the same result as the module
@@ -161,6 +167,18 @@ try {
   await page.select('#catalog', 'flipquad');
   const after = await e2Shown();
   check(cancelled === 'cancelled' && near(after, flipquad, 1e-12), `cancel stops the worker (status '${cancelled}') and the page goes on`);
+
+  // The point-set and sequence tabs show the CLI's numbers.
+  await open('#pattern=flipquad&tab=points');
+  await page.waitForFunction(() => document.getElementById('discrepancy-table').rows.length > 0, { timeout: 30000 });
+  const l2Shown = await page.$eval('#discrepancy-table', (t) => [...t.rows].find((r) => r.cells[0].textContent === 'l2_star').cells[1].textContent);
+  const l2Native = cli('discrepancy', 'jittered', '--n', '256', '--seed', '1', '--json').l2_star;
+  check(Number(l2Shown) === Number(l2Native.toPrecision(6)), `point sets tab: jittered, 256 points: L2-star ${l2Shown} (CLI ${l2Native})`);
+  await open('#pattern=flipquad&tab=sequences');
+  await page.waitForFunction(() => document.getElementById('sequence-table').rows.length > 0, { timeout: 30000 });
+  const worstShown = await page.$eval('#sequence-table', (t) => [...t.rows].find((r) => r.cells[0].textContent === 'worst_e2').cells[1].textContent);
+  const worstNative = cli('sequence', 'eval', 'aapat-taa-8', '--json').rows[0].worst_e2;
+  check(worstShown === worstNative.toFixed(4), `sequences tab: aapat-taa-8 under EMA 0.1: worst E2 ${worstShown} (CLI ${worstNative.toFixed(6)})`);
 
   // Bad input: each shows a message naming the problem.
   const bad = join(tmp, 'not-a-pattern.json');
