@@ -64,6 +64,25 @@ void mark_edited(Pattern& q, const Pattern& original) {
   q.provenance = {{"edited-from", original.name}};
 }
 
+// Lists the border sample `v` of set `set` in every neighbour whose closed
+// square holds it (in a 1x1 tile the pixel is its own neighbour).
+void share(Pattern& q, int set, Vec2 v) {
+  const int tx = set % q.tile_w, ty = set / q.tile_w;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      const Vec2 local{v.x - dx, v.y - dy};
+      if ((dx == 0 && dy == 0) || std::abs(local.x) > 0.5 + kSameSampleEps ||
+          std::abs(local.y) > 0.5 + kSameSampleEps)
+        continue;
+      const int s = set_index(q, tx + dx, ty + dy);
+      const Vec2 exact{std::clamp(local.x, -0.5, 0.5), std::clamp(local.y, -0.5, 0.5)};
+      const bool listed = std::any_of(q.sets[s].begin(), q.sets[s].end(),
+                                      [&](Vec2 w) { return same_point(w, exact); });
+      if (!listed) q.sets[s].push_back(exact);
+    }
+  }
+}
+
 }  // namespace
 
 Pattern move_sample(const Pattern& p, int set, int index, Vec2 to, int lattice) {
@@ -96,24 +115,19 @@ Pattern move_sample(const Pattern& p, int set, int index, Vec2 to, int lattice) 
   }
 
   // On a border it is shared: every neighbour whose closed square holds it
-  // lists it (in a 1x1 tile the pixel is its own neighbour).
+  // lists it. A footprint that gains its '+' shares the samples already on
+  // borders too (a plain pattern may keep samples on its closed pixel).
   const bool on_edge = near_border(to.x) || near_border(to.y);
   if (on_edge) {
-    q.footprint.plus = true;
-    const int tx = set % p.tile_w, ty = set / p.tile_w;
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const Vec2 local{to.x - dx, to.y - dy};
-        if ((dx == 0 && dy == 0) || std::abs(local.x) > 0.5 + kSameSampleEps ||
-            std::abs(local.y) > 0.5 + kSameSampleEps)
-          continue;
-        const int s = set_index(q, tx + dx, ty + dy);
-        const Vec2 exact{std::clamp(local.x, -0.5, 0.5), std::clamp(local.y, -0.5, 0.5)};
-        const bool listed = std::any_of(q.sets[s].begin(), q.sets[s].end(),
-                                        [&](Vec2 v) { return same_point(v, exact); });
-        if (!listed) q.sets[s].push_back(exact);
+    if (!q.footprint.plus) {
+      q.footprint.plus = true;
+      for (int k = 0; k < q.set_count(); ++k) {
+        const std::vector<Vec2> own = q.sets[k];
+        for (const Vec2& v : own)
+          if (near_border(v.x) || near_border(v.y)) share(q, k, v);
       }
     }
+    share(q, set, to);
   } else if (!has_border_sample(q)) {
     q.footprint.plus = false;  // nothing left to share
   }

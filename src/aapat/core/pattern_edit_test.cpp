@@ -72,6 +72,18 @@ TEST(PatternEdit, ASampleDroppedOnABorderIsShared) {
   EXPECT_EQ(metric.evaluate(back).e2, metric.evaluate(msaa(4)).e2);
 }
 
+// A plain pattern may keep a sample on its closed pixel's border (MSAA 16x's
+// x = -8/16); when another is dropped on a border the footprint gains its
+// '+', and that sample is shared as well.
+TEST(PatternEdit, GainingThePlusSharesTheSamplesAlreadyOnBorders) {
+  const Pattern p = single_pixel_pattern(
+      "closed", {{-0.5, 0.25}, {0.1, 0.1}, {0.2, -0.3}, {-0.2, 0}}, {0.25, 0.25, 0.25, 0.25});
+  const Pattern q = move_sample(p, 0, 1, {0.1, -0.495});
+  EXPECT_EQ(q.footprint.text(), "1+");
+  EXPECT_EQ(q.sets[0].size(), 6u);  // both border samples listed on both sides
+  EXPECT_EQ(family(q), "P(1,1+,4)");
+}
+
 // FLIPQUAD's samples sit on its pixels' edges, shared by the mirrored 2x2
 // tile's neighbours: sliding one along its edge moves every copy, keeps the
 // cost (P(4,1+,2)) and, with the same reads, the weights.
