@@ -154,6 +154,27 @@ std::string standard_output_conflict(const CLI::App& command) {
   return "";
 }
 
+// The options that name output files, in every command (the folders,
+// --best-dir and --frames-dir, are checked by their commands).
+constexpr std::string_view kOutputOptions[] = {
+    "output", "csv",   "svg",       "html",      "gif",           "map",     "table",
+    "curve",  "error", "reference", "histogram", "histogram-svg", "profile", "refinement-map"};
+
+// Every output file the command line names can be written: checked before
+// any work, so that a missing folder is not found after an hour of it.
+void check_output_targets(const CLI::App& command) {
+  for (const CLI::Option* o : command.get_options()) {
+    if (!o->nonpositional() || o->count() == 0) continue;
+    bool output = false;
+    for (const std::string_view name : kOutputOptions)
+      output = output || o->check_lname(std::string(name));
+    if (!output) continue;
+    for (const std::string& value : o->results())
+      if (!value.empty() && value != "-") check_file_target(value, o->get_name());
+  }
+  for (const CLI::App* sub : command.get_subcommands()) check_output_targets(*sub);
+}
+
 // The command word of a command line that CLI11 could not parse: the first
 // argument that is neither an option nor the value of a global one; "" if none.
 std::string command_word(int argc, const char* const* argv) {
@@ -266,6 +287,8 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
         (threads > 0 ? threads : tbb::info::default_concurrency()) + items.service_threads());
   bool agreed = false;
   try {
+    for (const auto& [sub, action] : commands)
+      if (sub->parsed()) check_output_targets(*sub);
     // A command writes all its files or, when it fails, none.
     OutputTransaction outputs;
     std::unique_ptr<Checkpoint> checkpoint;

@@ -417,10 +417,12 @@ TEST(Hardening, AFrameFolderIsAllOrNothing) {
             kExitOk);
   ASSERT_EQ(frames().size(), 6u);
   const std::string first = slurp(dir + "/frame-0000.png");
-  // Fails after rendering its frames (the histogram's folder is missing).
+  // Fails after rendering its frames (two of its outputs name one file, found
+  // when the second is written; a missing folder is now refused before).
+  const std::string twice = temp_path("twice.gif");
   expect_error(run({"animate", "circle", "--pattern", "msaa-4", "--frames", "4", "--size", "17x16",
-                    "--frames-dir", dir, "--histogram", temp_path("no-such/h.csv")}),
-               kExitError, "cannot write");
+                    "--frames-dir", dir, "--histogram", twice, "--gif", twice}),
+               kExitError, "two outputs of this command name the same file");
   EXPECT_EQ(frames().size(), 6u);
   EXPECT_EQ(slurp(dir + "/frame-0000.png"), first);
   ASSERT_EQ(run({"animate", "circle", "--pattern", "msaa-4", "--frames", "4", "--size", "17x16",
@@ -555,6 +557,40 @@ TEST(Hardening, AnAnimationsFramesTimesPixelsIsBounded) {
       "frames 100000 at 4096x4096: 1.678e+12 pixel-frames exceed the limit of 1073741824 (2^30)");
   EXPECT_THROW(check_animation_work(256, 256, 16385), ParameterError);
   EXPECT_NO_THROW(check_animation_work(256, 256, 16384));
+}
+
+}  // namespace
+}  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// An output file whose folder is missing is refused before any work: a
+// search of a million starts returns at once with the folder named.
+TEST(Hardening, AMissingOutputFolderIsFoundBeforeTheWork) {
+  expect_error(run({"optimize", "--family", "P(1,1,16)", "--starts", "1000000", "--svg",
+                    "no-such-folder/best.svg"}),
+               kExitError,
+               "--svg 'no-such-folder/best.svg': the folder 'no-such-folder' does not exist");
+  expect_error(run({"render", "zoneplate", "--pattern", "msaa-4", "--size", "16384", "--histogram",
+                    temp_path("")}),
+               kExitError, "is a folder, not a file");
+}
+
+}  // namespace
+}  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// study --compare prints its own table: the study's files are refused with it
+// rather than silently not written.
+TEST(Hardening, StudyCompareRefusesTheStudysFiles) {
+  for (const char* file : {"--table", "--csv", "--html"}) {
+    const CliRun r = run({"study", "--compare", "flipquad", file, temp_path("out.html")});
+    EXPECT_EQ(r.code, kExitUsage) << file;
+    EXPECT_NE(r.err.find("excludes"), std::string::npos) << r.err;
+  }
 }
 
 }  // namespace

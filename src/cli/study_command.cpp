@@ -249,6 +249,10 @@ Action add_study_command(CLI::App& app) {
   cmd->add_option("--html", o->html, "the report as one self-contained page (.html)");
   cmd->add_flag("--json", o->json,
                 "print every pattern, objective, measure and correlation as JSON");
+  // --compare prints its own table (or --json); the study's files are not its.
+  auto* compare = cmd->get_option("--compare");
+  for (const char* study_file : {"--table", "--csv", "--html"})
+    compare->excludes(cmd->get_option(study_file));
   return [o](std::ostream& out) { run_study(*o, out); };
 }
 

@@ -257,7 +257,11 @@
   // ---- the update after any change -----------------------------------------
   function evaluateNow() {
     const e = call('evaluate', { pattern: state.pattern, objective: objectiveText() });
-    if (!e) return false;
+    if (!e) {  // an objective that does not parse: no number rather than a stale one
+      $('e2').textContent = '—';
+      $('e2').dataset.value = '';
+      return false;
+    }
     state.evaluation = e;
     const row = e.eval.rows[0];
     $('e2').textContent = row.e2.toFixed(4);

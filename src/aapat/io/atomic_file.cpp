@@ -204,6 +204,22 @@ void check_directory_target(const std::string& path, std::string_view what) {
     throw Error(fmt::format("{} '{}': cannot write into it: {}", what, path, std::strerror(errno)));
 }
 
+void check_file_target(const std::string& path, std::string_view what) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw Error(fmt::format("{} '{}': it is a folder, not a file", what, path));
+  std::string folder = std::filesystem::path(path).parent_path().string();
+  if (folder.empty()) folder = ".";
+  const auto status = std::filesystem::status(folder, ec);
+  if (!std::filesystem::exists(status))
+    throw Error(fmt::format("{} '{}': the folder '{}' does not exist", what, path, folder));
+  if (!std::filesystem::is_directory(status))
+    throw Error(fmt::format("{} '{}': '{}' is not a folder", what, path, folder));
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw Error(fmt::format("{} '{}': cannot write into '{}': {}", what, path, folder,
+                            std::strerror(errno)));
+}
+
 OutputTransaction::OutputTransaction() {
   const std::lock_guard lock(g_mutex);
   if (g_open) throw Error("internal: an output transaction is already open");

@@ -43,6 +43,10 @@ void ensure_directory(const std::string& path, std::string_view what);
 // makes: it is a writable folder, or nothing is there yet.
 void check_directory_target(const std::string& path, std::string_view what);
 
+// Checks, before any work, that `path` can be written as a file: its folder
+// exists, is a folder and can be written, and `path` is not a folder.
+void check_file_target(const std::string& path, std::string_view what);
+
 // One command's outputs: all of them or none. At most one is open at a time.
 class OutputTransaction {
  public:
