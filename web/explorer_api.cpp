@@ -120,10 +120,6 @@ JsonObject objective_doc(const Objective& o) {
           {"norm", std::isinf(o.norm) ? JsonObject("inf") : JsonObject(o.norm)}};
 }
 
-std::vector<double> to_vector(const Image& image) {
-  return image.values;
-}
-
 // ---------------------------------------------------------------------------
 
 std::string info() {
@@ -302,8 +298,8 @@ std::string render(const std::string& request) {
                       {"rmse", result.figures->error.rmse},
                       {"max_deviation", result.figures->error.max_deviation},
                       {"flip", result.figures->flip},
-                      {"image", to_vector(result.image)},
-                      {"reference_image", to_vector(*result.reference)}};
+                      {"image", result.image.values},
+                      {"reference_image", result.reference->values}};
   });
 }
 

@@ -28,10 +28,15 @@
     m.textContent = text || '';
     m.hidden = !text;
   }
-  function call(name, request, quiet) {
-    const doc = JSON.parse(state.api[name](JSON.stringify(request)));
+  // The library's answer as it is, {"error": ...} included.
+  function ask(name, request) {
+    return JSON.parse(state.api[name](JSON.stringify(request)));
+  }
+  // The answer, or null with its error shown.
+  function call(name, request) {
+    const doc = ask(name, request);
     if (doc.error) {
-      if (!quiet) showMessage(doc.error);
+      showMessage(doc.error);
       return null;
     }
     return doc;
@@ -395,10 +400,9 @@
     }
     if (q.has('objective')) {
       const o = q.get('objective');
-      const check = call('evaluate', { pattern: 'msaa-1', objective: o }, true);
-      if (!check) {
-        const err = JSON.parse(state.api.evaluate(JSON.stringify({ pattern: 'msaa-1', objective: o }))).error;
-        showMessage(`link: ${err}`);
+      const check = ask('evaluate', { pattern: 'msaa-1', objective: o });
+      if (check.error) {
+        showMessage(`link: ${check.error}`);
         return false;
       }
       setObjective(o);
@@ -412,10 +416,9 @@
     }
     if (q.has('tab')) selectTab(q.get('tab'));
     if (q.has('pattern')) {
-      const d = call('loadPattern', { name: q.get('pattern') }, true);
-      if (!d) {
-        const err = JSON.parse(state.api.loadPattern(JSON.stringify({ name: q.get('pattern') }))).error;
-        showMessage(`link: ${err}`);
+      const d = ask('loadPattern', { name: q.get('pattern') });
+      if (d.error) {
+        showMessage(`link: ${d.error}`);
         return false;
       }
       setPattern(d.pattern, q.get('pattern'));
@@ -444,19 +447,11 @@
 
   // ---- export, files, compare -----------------------------------------------
   function refreshExport() {
-    const d = call('exportText', {
+    const d = ask('exportText', {
       pattern: state.pattern, api: $('api').value, shader: $('shader').value,
       snap: $('export-snap').checked, objective: objectiveText(),
-    }, true);
-    if (d) {
-      $('export-text').value = d.text;
-    } else {
-      const err = JSON.parse(state.api.exportText(JSON.stringify({
-        pattern: state.pattern, api: $('api').value, shader: $('shader').value,
-        snap: $('export-snap').checked, objective: objectiveText(),
-      }))).error;
-      $('export-text').value = `(not exportable: ${err})`;
-    }
+    });
+    $('export-text').value = d.error ? `(not exportable: ${d.error})` : d.text;
   }
   function download(name, text) {
     const a = document.createElement('a');
@@ -768,7 +763,8 @@
       fillControls();
       wire();
       if (!readHash()) {
-        const d = call('loadPattern', { name: 'aapat-8' }, true) || call('loadPattern', { name: 'msaa-8' });
+        const first = ask('loadPattern', { name: 'aapat-8' });
+        const d = first.error ? call('loadPattern', { name: 'msaa-8' }) : first;
         setPattern(d.pattern, d.pattern.name);
       }
       stats.ready = true;

@@ -14,10 +14,6 @@ bool on(double v, double target) {
   return std::abs(v - target) <= kSameSampleEps;
 }
 
-bool on_border(Vec2 v) {
-  return on(std::abs(v.x), 0.5) || on(std::abs(v.y), 0.5);
-}
-
 // The first and last pixel offset of a footprint relative to the kernel's
 // pixel, and where its output point sits relative to that pixel's centre.
 int first_offset(const Footprint& f) {
@@ -35,6 +31,10 @@ std::string direction(int dx, int dy) {
 }
 
 }  // namespace
+
+bool on_border(Vec2 v) {
+  return on(std::abs(v.x), 0.5) || on(std::abs(v.y), 0.5);
+}
 
 std::string Footprint::text() const {
   const std::string base = size == 1 ? "1" : fmt::format("{}x{}", size, size);

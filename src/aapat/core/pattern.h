@@ -83,6 +83,9 @@ double samples_per_pixel(const Pattern& p);
 std::string family(const Pattern& p);
 std::string format_cost(double n);
 
+// Whether a sample lies on its pixel's border (an edge or a corner).
+bool on_border(Vec2 p);
+
 // Where a sample sits in its pixel: "inside", an edge ("left", "right",
 // "bottom", "top") or a corner ("bottom-left", ...). Costs 1, 1/2 and 1/4
 // in a sharing (+) footprint.

@@ -11,10 +11,6 @@
 namespace aapat {
 namespace {
 
-bool near_border(double v) {
-  return std::abs(std::abs(v) - 0.5) <= kSameSampleEps;
-}
-
 // Clamped to the closed pixel; within kBorderSnap of a border, on it.
 double placed(double v) {
   v = std::clamp(v, -0.5, 0.5);
@@ -26,7 +22,7 @@ double placed(double v) {
 bool has_border_sample(const Pattern& p) {
   for (const auto& set : p.sets)
     for (const Vec2& s : set)
-      if (near_border(s.x) || near_border(s.y)) return true;
+      if (on_border(s)) return true;
   return false;
 }
 
@@ -117,14 +113,14 @@ Pattern move_sample(const Pattern& p, int set, int index, Vec2 to, int lattice) 
   // On a border it is shared: every neighbour whose closed square holds it
   // lists it. A footprint that gains its '+' shares the samples already on
   // borders too (a plain pattern may keep samples on its closed pixel).
-  const bool on_edge = near_border(to.x) || near_border(to.y);
+  const bool on_edge = on_border(to);
   if (on_edge) {
     if (!q.footprint.plus) {
       q.footprint.plus = true;
       for (int k = 0; k < q.set_count(); ++k) {
         const std::vector<Vec2> own = q.sets[k];
         for (const Vec2& v : own)
-          if (near_border(v.x) || near_border(v.y)) share(q, k, v);
+          if (on_border(v)) share(q, k, v);
       }
     }
     share(q, set, to);
