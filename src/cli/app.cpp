@@ -135,23 +135,29 @@ std::string fingerprint(int argc, const char* const* argv) {
   return text;
 }
 
+// The options given on the command line to `command` and to the
+// subcommands chosen under it (`sequence eval`, ...).
+std::vector<const CLI::Option*> given_options(const CLI::App& command) {
+  std::vector<const CLI::Option*> given;
+  for (const CLI::Option* o : command.get_options())
+    if (o->nonpositional() && o->count() > 0) given.push_back(o);
+  for (const CLI::App* sub : command.get_subcommands())
+    for (const CLI::Option* o : given_options(*sub)) given.push_back(o);
+  return given;
+}
+
 // Standard output carries one format: --json and an output named `-`, or two
 // outputs named `-`, would interleave theirs. "" when they do not.
 std::string standard_output_conflict(const CLI::App& command) {
   std::vector<std::string> users;
-  for (const CLI::Option* o : command.get_options()) {
-    if (!o->nonpositional() || o->count() == 0) continue;
-    const std::string name = o->get_name(false, true);
-    if (o->check_lname("json")) users.push_back(name);
+  for (const CLI::Option* o : given_options(command)) {
+    if (o->check_lname("json")) users.push_back(o->get_name());
     for (const std::string& value : o->results())
-      if (value == "-") users.push_back(name + " -");
+      if (value == "-") users.push_back(o->get_name() + " -");
   }
-  if (users.size() >= 2)
-    return fmt::format("{} would all write to standard output; give files for all but one",
-                       fmt::join(users, " and "));
-  for (const CLI::App* sub : command.get_subcommands())  // `sequence eval`, ...
-    if (std::string message = standard_output_conflict(*sub); !message.empty()) return message;
-  return "";
+  if (users.size() < 2) return "";
+  return fmt::format("{} would all write to standard output; give files for all but one",
+                     fmt::join(users, " and "));
 }
 
 // The options that name output files, in every command (the folders,
@@ -163,8 +169,7 @@ constexpr std::string_view kOutputOptions[] = {
 // Every output file the command line names can be written: checked before
 // any work, so that a missing folder is not found after an hour of it.
 void check_output_targets(const CLI::App& command) {
-  for (const CLI::Option* o : command.get_options()) {
-    if (!o->nonpositional() || o->count() == 0) continue;
+  for (const CLI::Option* o : given_options(command)) {
     bool output = false;
     for (const std::string_view name : kOutputOptions)
       output = output || o->check_lname(std::string(name));
@@ -172,7 +177,6 @@ void check_output_targets(const CLI::App& command) {
     for (const std::string& value : o->results())
       if (!value.empty() && value != "-") check_file_target(value, o->get_name());
   }
-  for (const CLI::App* sub : command.get_subcommands()) check_output_targets(*sub);
 }
 
 // The command word of a command line that CLI11 could not parse: the first
