@@ -1,5 +1,6 @@
 // `import aapat`: the library from Python with numpy arrays. Library errors
-// arrive as aapat.Error (a ValueError) with the library's message.
+// arrive as aapat.Error (a ValueError and a TypeError) with the library's
+// message, a wrong argument's type too.
 #include <algorithm>
 
 #include "aapat/version.h"
@@ -16,7 +17,10 @@ point sets with their spectra and discrepancies, and a test renderer, on numpy
 arrays. Specs name filters, acuity tables, generators and scenes
 ("name:key=value,..."); aapat.registry() lists them all.)doc";
   m.attr("__version__") = AAPAT_VERSION;
-  static py::exception<Error>& error = py::register_exception<Error>(m, "Error", PyExc_ValueError);
+  // aapat.Error is a ValueError (a bad value) and a TypeError (a value of the
+  // wrong type, see strict_arguments.cpp).
+  static py::exception<Error>& error = py::register_exception<Error>(
+      m, "Error", py::make_tuple(py::handle(PyExc_ValueError), py::handle(PyExc_TypeError)));
   // A setting the library names as the command line's flag (max-per-edge)
   // is named here as the keyword that gives it (max_per_edge).
   py::register_exception_translator([](std::exception_ptr p) {
@@ -30,10 +34,10 @@ arrays. Specs name filters, acuity tables, generators and scenes
       // A value converted inside a function (a list where a sequence or a
       // pattern was expected): aapat.Error like every bad input, not
       // pybind11's RuntimeError.
-      PyErr_SetString(error.ptr(),
-                      (std::string("an argument is not of a type this function takes (") +
-                       e.what() + ")")
-                          .c_str());
+      PyErr_SetString(
+          error.ptr(),
+          (std::string("an argument is not of a type this function takes (") + e.what() + ")")
+              .c_str());
     }
   });
   m.attr("Error").attr("__doc__") =
@@ -45,6 +49,7 @@ arrays. Specs name filters, acuity tables, generators and scenes
   bind_render(m);
   bind_studies(m);
   bind_temporal(m);
+  strict_arguments(m);  // last: it wraps every function defined above
 }
 
 }  // namespace aapat::python

@@ -71,7 +71,7 @@ Array batch_eval(const Metric& metric, const Array& xy, const py::object& weight
   const size_t m = static_cast<size_t>(xy.shape(0)), n = static_cast<size_t>(xy.shape(1));
   std::vector<double> w;
   if (!weights.is_none()) {
-    const Array a = weights.cast<Array>();
+    const Array a = to_array(weights, "weights");
     if (a.ndim() == 1 && static_cast<size_t>(a.shape(0)) == n) {
       for (size_t p = 0; p < m; ++p) w.insert(w.end(), a.data(), a.data() + n);
     } else if (a.ndim() == 2 && static_cast<size_t>(a.shape(0)) == m &&
@@ -87,15 +87,14 @@ Array batch_eval(const Metric& metric, const Array& xy, const py::object& weight
   std::span<double> e2(out.mutable_data(), m);
   const std::span<const double> coords(xy.data(), m * n * 2);
   check_threads(threads, "eval: threads");
-  {
-    py::gil_scoped_release release;
+  interruptible([&] {
     if (threads == 0) {
       batch_e2(metric, coords, w, m, n, e2);
     } else {
       tbb::task_arena arena(threads);
       arena.execute([&] { batch_e2(metric, coords, w, m, n, e2); });
     }
-  }
+  });
   return out;
 }
 
@@ -109,11 +108,10 @@ py::dict batch_profiles(const Metric& metric, const Array& xy) {
   Array values({static_cast<py::ssize_t>(m), static_cast<py::ssize_t>(angles)});
   Array e2(static_cast<py::ssize_t>(m));
   const std::span<const double> coords(xy.data(), m * n * 2);
-  {
-    py::gil_scoped_release release;
+  interruptible([&] {
     batch_profile(metric, coords, {}, m, n, {values.mutable_data(), m * angles});
     batch_e2(metric, coords, {}, m, n, {e2.mutable_data(), m});
-  }
+  });
   return py::dict(py::arg("angles_deg") = from_vector(metric.acuity().angles_deg),
                   py::arg("values") = values, py::arg("e2") = e2);
 }
@@ -158,7 +156,7 @@ void bind_metric(py::module_& m) {
         check_threads(threads, "eval: threads");  // on every path, used or not
         const Metric metric = make_metric(objective, filter, acuity, norm);
         if (py::isinstance<py::array>(patterns)) {
-          const Array xy = patterns.cast<Array>();
+          const Array xy = to_array(patterns, "patterns");
           if (xy.ndim() == 2) {  // one pattern
             Array batch = Array(xy).reshape({py::ssize_t{1}, xy.shape(0), xy.shape(1)});
             return py::float_(batch_eval(metric, batch, weights, threads).at(0));
@@ -169,10 +167,12 @@ void bind_metric(py::module_& m) {
           std::vector<Pattern> list;
           for (const py::handle& h : patterns) list.push_back(to_pattern(h));
           std::vector<double> e2(list.size());
-          {
-            py::gil_scoped_release release;
-            for (size_t i = 0; i < list.size(); ++i) e2[i] = metric.evaluate(list[i]).e2;
-          }
+          interruptible([&] {
+            for (size_t i = 0; i < list.size(); ++i) {
+              throw_if_interrupted();
+              e2[i] = metric.evaluate(list[i]).e2;
+            }
+          });
           return from_vector(e2);
         }
         return py::float_(metric.evaluate(to_pattern(patterns)).e2);
@@ -204,10 +204,8 @@ void bind_metric(py::module_& m) {
           list.push_back(to_pattern(patterns));
         }
         std::vector<PatternEvaluation> evaluations;
-        {
-          py::gil_scoped_release release;
-          evaluations = evaluate_patterns(metric, list, optimized_weights, false);
-        }
+        evaluations = interruptible(
+            [&] { return evaluate_patterns(metric, list, optimized_weights, false); });
         return to_python(eval_json(o, metric.angle_count(), list, evaluations));
       },
       py::arg("patterns"), py::arg("optimized_weights") = false, AAPAT_OBJECTIVE_ARGS,
@@ -222,7 +220,7 @@ and e2_optimized_weights with optimized_weights=True).)doc"));
          const py::object& acuity, const py::object& norm) -> py::dict {
         const Metric metric = make_metric(objective, filter, acuity, norm);
         if (py::isinstance<py::array>(pattern))
-          return batch_profiles(metric, pattern.cast<Array>());
+          return batch_profiles(metric, to_array(pattern, "pattern"));
         const Pattern p = to_pattern(pattern);
         const PatternError e = metric.evaluate(p);
         Array values({static_cast<py::ssize_t>(p.set_count()),

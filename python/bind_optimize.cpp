@@ -9,14 +9,7 @@
 namespace aapat::python {
 
 std::function<void(int, int, const std::string&)> progress_of(const py::object& callback) {
-  if (callback.is_none()) {
-    // No callable, but Ctrl-C is still heard at each step: the interrupt
-    // propagates through the library as an exception and ends the call.
-    return [](int, int, const std::string&) {
-      py::gil_scoped_acquire gil;  // called from the library's worker threads
-      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    };
-  }
+  if (callback.is_none()) return {};  // Ctrl-C is heard by interruptible()
   if (!PyCallable_Check(callback.ptr()))
     throw Error("progress: give a callable f(done, total, note), or None");
   return [callback](int done, int total, const std::string& note) {
@@ -89,8 +82,7 @@ OptimizeRunResult run_optimize(const py::object& family, const py::object& patte
   s.optimizer.nonnegative_weights = nonnegative;
   s.time_limit = time_limit;
   const auto report = progress_of(progress);
-  py::gil_scoped_release release;
-  return optimize_run(objective, s, report);
+  return interruptible([&] { return optimize_run(objective, s, report); });
 }
 
 }  // namespace
@@ -199,10 +191,7 @@ thread count). Returns an aapat.OptimizeResult (.pattern, .e2, .starts, ...).
         s.seed = seed;
         const auto report = progress_of(progress);
         Enumeration e;
-        {
-          py::gil_scoped_release release;
-          e = enumerate_study(o.metric(), s, report);
-        }
+        e = interruptible([&] { return enumerate_study(o.metric(), s, report); });
         // The rows of `aapat enumerate --json`, each with its best pattern.
         py::list rows = rows_of(enumeration_json(o, s, e));
         for (size_t i = 0; i < e.rows.size(); ++i)

@@ -15,6 +15,15 @@
 
 namespace aapat::python {
 
+Array to_array(const py::handle& value, const char* what) {
+  try {
+    return value.cast<Array>();
+  } catch (const py::error_already_set& e) {
+    if (!e.matches(PyExc_ValueError) && !e.matches(PyExc_TypeError)) throw;
+    throw Error(fmt::format("{}: not an array of numbers ({})", what, e.what()));
+  }
+}
+
 std::vector<Vec2> to_points(const Array& a, const char* what) {
   if (a.ndim() != 2 || a.shape(1) != 2) {
     std::string shape;
@@ -55,7 +64,7 @@ Pattern pattern_from_arrays(const Array& positions, const py::object& weights,
   const std::vector<Vec2> points = to_points(positions, "positions");
   std::vector<double> w(points.size(), points.empty() ? 0.0 : 1.0 / points.size());
   if (!weights.is_none()) {
-    const Array a = weights.cast<Array>();
+    const Array a = to_array(weights, "weights");
     if (a.ndim() != 1 || static_cast<size_t>(a.shape(0)) != points.size())
       throw Error(fmt::format("weights: expected {} weights, one per position", points.size()));
     w.assign(a.data(), a.data() + a.shape(0));

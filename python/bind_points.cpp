@@ -13,9 +13,9 @@ namespace {
 PointSets to_sets(const py::object& points) {
   PointSets sets;
   if (py::isinstance<py::list>(points) || py::isinstance<py::tuple>(points)) {
-    for (const py::handle& h : points) sets.push_back(to_points(h.cast<Array>(), "points"));
+    for (const py::handle& h : points) sets.push_back(to_points(to_array(h, "points"), "points"));
   } else {
-    sets.push_back(to_points(points.cast<Array>(), "points"));
+    sets.push_back(to_points(to_array(points, "points"), "points"));
   }
   return sets;
 }
@@ -27,10 +27,7 @@ void bind_points(py::module_& m) {
       "generate",
       [](const std::string& spec, int n, uint64_t seed) {
         std::vector<Vec2> points;
-        {
-          py::gil_scoped_release release;
-          points = generate_points(spec, n, seed);
-        }
+        points = interruptible([&] { return generate_points(spec, n, seed); });
         return from_points(points);
       },
       py::arg("spec"), py::arg("n"), py::arg("seed") = 1,
@@ -67,10 +64,7 @@ void bind_points(py::module_& m) {
         const std::vector<Vec2> p = to_points(points, "points");
         const DiscrepancyMeasures m = parse_measures(measures);
         DiscrepancyReport d;
-        {
-          py::gil_scoped_release release;
-          d = discrepancy_report(p, m);
-        }
+        d = interruptible([&] { return discrepancy_report(p, m); });
         return values_of(discrepancy_json("", d));
       },
       py::arg("points"), py::arg("measures") = std::string(kDefaultDiscrepancyMeasures),
@@ -110,12 +104,11 @@ l2_mixture**2) and the L2-star not.
         SpectrumSettings s{size, spec.empty() ? static_cast<int>(sets.size()) : realizations,
                            spec.empty() ? 0 : static_cast<size_t>(n), method == "fast"};
         SpectrumStudy st;
-        {
-          py::gil_scoped_release release;
-          st = spectrum_study(
+        st = interruptible([&] {
+          return spectrum_study(
               [&](int r) { return spec.empty() ? sets[r] : generate_points(spec, n, seed + r); },
               s);
-        }
+        });
         Array power({static_cast<py::ssize_t>(size), static_cast<py::ssize_t>(size)});
         std::copy(st.mean.power.begin(), st.mean.power.end(), power.mutable_data());
         return py::dict(py::arg("power") = power, py::arg("radius") = from_vector(st.radial.radius),
@@ -145,10 +138,8 @@ error_bound (on |P - exact P| at every f != 0; 0 for the exact sum).)doc");
       [](const std::vector<std::string>& kinds, int n, uint64_t seed, int frequencies,
          double max_frequency) {
         std::vector<LineSpectrum> spectra;
-        {
-          py::gil_scoped_release release;
-          spectra = line_spectra(kinds, n, seed, frequencies, max_frequency);
-        }
+        spectra =
+            interruptible([&] { return line_spectra(kinds, n, seed, frequencies, max_frequency); });
         std::vector<double> f(static_cast<size_t>(frequencies));
         for (int k = 0; k < frequencies; ++k) f[k] = k * max_frequency / frequencies;
         py::dict d(py::arg("frequency") = from_vector(f));

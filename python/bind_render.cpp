@@ -82,10 +82,7 @@ reads it) as an (h, w, 3) array of sRGB values in [0, 1], top row first.)doc");
       [](const Array& reference, const Array& test, double ppd) {
         const ColorImage ref = color_image(reference, "reference"), tst = color_image(test, "test");
         ImageDiff d;
-        {
-          py::gil_scoped_release release;
-          d = image_diff(ref, tst, ppd);
-        }
+        d = interruptible([&] { return image_diff(ref, tst, ppd); });
         py::dict out = values_of(diff_json("", "", d));
         Array map(
             {static_cast<py::ssize_t>(d.flip.height), static_cast<py::ssize_t>(d.flip.width)});
@@ -142,10 +139,7 @@ FLIP as an (h, w) array.
         s.reference = {reference_samples, reference_filter, reference_seed(seed)};
         const Scene sc = resolve_scene(scene, w, h, texture);
         RenderResult r;
-        {
-          py::gil_scoped_release release;
-          r = render_study(sc, s);
-        }
+        r = interruptible([&] { return render_study(sc, s); });
         // The values of `aapat render --json`, with the images as arrays.
         py::dict d = values_of(render_json(scene, sc, texture, pattern_name, s, r));
         d["image"] = image_array(r.image);
@@ -217,12 +211,11 @@ width), top row first, values in [0, 1]), reference_image, refinement_map
         run.reference = {reference_samples, reference_filter, seed};
         std::vector<Image> shown;
         EngineResult r;
-        {
-          py::gil_scoped_release release;
-          r = render_engine_taa(run, s, t, [&](int, const Image& img) {
+        r = interruptible([&] {
+          return render_engine_taa(run, s, t, [&](int, const Image& img) {
             if (images) shown.push_back(img);
           });
-        }
+        });
         py::dict d = values_of(engine_taa_json(scene, run, s, t, r));
         if (images) {
           py::list list;

@@ -15,10 +15,7 @@ void bind_studies(py::module_& m) {
         const Objective o = make_objective(objective, filter, acuity, norm);
         const Table3Settings s{patterns, iterations, seed, parse_method(method)};
         std::vector<Table3Row> rows;
-        {
-          py::gil_scoped_release release;
-          rows = table3(o.metric(), s);
-        }
+        rows = interruptible([&] { return table3(o.metric(), s); });
         return rows_of(table3_json(o, s, rows));
       },
       py::kw_only(), py::arg("patterns") = Table3Settings{}.patterns,
@@ -39,10 +36,7 @@ five numbers beside.)doc"));
         const Objective o = make_objective(objective, filter, acuity, norm);
         const Figure10Settings s{starts, seed};
         Figure10 fig;
-        {
-          py::gil_scoped_release release;
-          fig = figure10(o.metric(), s);
-        }
+        fig = interruptible([&] { return figure10(o.metric(), s); });
         return rows_of(figure10_json(o, s, fig));
       },
       py::kw_only(), py::arg("starts") = Figure10Settings{}.starts,
@@ -61,10 +55,7 @@ placement, series}.)doc"));
         a.width = a.height = size;
         a.frames = frames;
         std::vector<Table2Row> rows;
-        {
-          py::gil_scoped_release release;
-          rows = table2(a);
-        }
+        rows = interruptible([&] { return table2(a); });
         return rows_of(table2_json(a, rows));
       },
       py::kw_only(), py::arg("size") = AnimationSettings{}.width,
@@ -81,10 +72,7 @@ paper: {e2, rmse, max_deviation}}.)doc");
         const Objective o = make_objective(objective, filter, acuity, norm);
         const HardwareTableSettings s{starts, seed};
         std::vector<HardwareTableRow> rows;
-        {
-          py::gil_scoped_release release;
-          rows = hardware_table(o.metric(), s);
-        }
+        rows = interruptible([&] { return hardware_table(o.metric(), s); });
         return rows_of(hardware_table_json(o, s, rows));
       },
       py::kw_only(), py::arg("starts") = HardwareTableSettings{}.starts,

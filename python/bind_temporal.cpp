@@ -78,10 +78,7 @@ with pattern=...), a name of the optimized ones ("aapat-taa-8") or a file.)doc")
         const Metric metric = make_metric(objective, filter, acuity, norm);
         const Accumulation a = make_accumulation(model, alpha, window, resolve);
         TemporalReport r;
-        {
-          py::gil_scoped_release release;
-          r = evaluate_temporal(s, a, metric);
-        }
+        r = interruptible([&] { return evaluate_temporal(s, a, metric); });
         return to_python(temporal_report_json(s, r));
       },
       py::arg("sequence"), py::kw_only(), py::arg("model") = "ema", py::arg("alpha") = 0.1,
@@ -122,10 +119,7 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
         const Objective o = make_objective(objective, filter, acuity, norm);
         const Metric metric = o.metric();
         SequenceSearchResult r;
-        {
-          py::gil_scoped_release release;
-          r = optimize_sequence(s, metric);
-        }
+        r = interruptible([&] { return optimize_sequence(s, metric); });
         py::dict d = to_python(sequence_search_json(s, accumulation_text(s.model), o, r));
         d["result"] = r.best;
         return d;

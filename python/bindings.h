@@ -15,6 +15,7 @@
 #include "aapat/core/objective.h"
 #include "aapat/core/pattern.h"
 #include "aapat/io/json_report.h"
+#include "interruptible.h"
 
 namespace aapat::python {
 
@@ -28,6 +29,13 @@ void bind_points(py::module_& m);
 void bind_render(py::module_& m);
 void bind_studies(py::module_& m);
 void bind_temporal(py::module_& m);
+// Wraps every function, method and constructor of m so that arguments of the
+// wrong type raise aapat.Error (pybind11 raises TypeError).
+void strict_arguments(py::module_& m);
+
+// Any array-like value as an array of doubles, else aapat.Error naming
+// `what` (numpy's own ValueError or TypeError does not escape).
+Array to_array(const py::handle& value, const char* what);
 
 // (n, 2) array <-> points.
 std::vector<Vec2> to_points(const Array& a, const char* what);
@@ -71,7 +79,7 @@ inline py::object values_of(JsonObject doc) {
 void check_samples(const Array& xy, const char* what);
 
 // A progress callable (done, total, note), called with the GIL held; None:
-// silent, but Ctrl-C (a pending KeyboardInterrupt) still ends the call at a step.
+// silent (Ctrl-C is heard by interruptible() either way).
 std::function<void(int, int, const std::string&)> progress_of(const py::object& callback);
 
 // The docstring of the metric keywords, shared by the functions that take them.

@@ -80,7 +80,7 @@ def first_line(doc):
 def stubs():
     out = ['"""Type stubs of aapat (written by python/make_stubs.py from the module)."""',
            "from typing import Any, Callable", "", "import numpy", "",
-           "__version__: str", "", "class Error(ValueError): ...", ""]
+           "__version__: str", "", "class Error(ValueError, TypeError): ...", ""]
     for name, obj in sorted(vars(aapat).items()):
         if name.startswith("_") or name == "Error":
             continue

@@ -308,14 +308,20 @@ def test_a_mesh_view_renders_in_colour_on_both_faces(aapat_cli, tmp_path):
     assert abs(cli["ssim"] - diffed["ssim"]) < 1e-12
 
 
-def test_wrong_types_are_aapat_errors_or_type_errors():
-    """A value of the wrong type converted inside a function is aapat.Error,
-    not pybind11's RuntimeError; a call whose signature does not match is
-    Python's TypeError, naming the signatures it takes."""
+def test_wrong_types_are_aapat_errors():
+    """A value of the wrong type is aapat.Error wherever it is found: converted
+    inside a function, or refused by the signature (pybind11's TypeError, whose
+    message names the signatures taken). aapat.Error is a TypeError and a
+    ValueError, so both of Python's idioms catch it."""
     with pytest.raises(aapat.Error, match="not of a type this function takes"):
         aapat.sequence_eval([1, 2])
-    with pytest.raises(TypeError, match="incompatible function arguments"):
+    with pytest.raises(aapat.Error, match=r"incompatible function arguments(.|\n)*spec: str, n: int"):
         aapat.generate("halton", "ten")
+    with pytest.raises(TypeError):
+        aapat.Pattern(np.zeros((1, 2)), weights="")
+    with pytest.raises(aapat.Error, match="weights: not an array of numbers"):
+        aapat.Pattern(np.zeros((1, 2)), weights="")
+    assert issubclass(aapat.Error, ValueError) and issubclass(aapat.Error, TypeError)
 
 
 def test_threads_are_checked_on_every_path():

@@ -13,6 +13,7 @@
 
 #include "aapat/analyze/l2_discrepancy.h"
 #include "aapat/analyze/radix_sort.h"
+#include "aapat/core/interrupt.h"
 
 namespace aapat {
 
@@ -45,6 +46,7 @@ EdgeDiscrepancy edge_discrepancy(const std::vector<Vec2>& p, int directions,
   std::atomic<int> done{0};
   std::mutex report;
   tbb::parallel_for(tbb::blocked_range<int>(0, directions), [&](const auto& range) {
+    throw_if_interrupted();
     std::vector<double> s(p.size());
     std::vector<uint64_t> scratch;
     for (int k = range.begin(); k != range.end(); ++k) {

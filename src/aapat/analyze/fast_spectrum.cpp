@@ -1,5 +1,7 @@
 #include "aapat/analyze/fast_spectrum.h"
 
+#include "aapat/core/interrupt.h"
+
 #include <fftw3.h>
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
@@ -91,6 +93,7 @@ FastSpectrum power_spectrum_fast(const std::vector<Vec2>& points, int size) {
   }
   constexpr size_t kBand = 16;
   tbb::parallel_for(size_t{0}, (r + kBand - 1) / kBand, [&](size_t band) {
+    throw_if_interrupted();
     const int lo = static_cast<int>(band * kBand), hi = static_cast<int>(std::min(r, lo + kBand));
     // Windows starting 2w-1 rows below the band reach into it.
     for (int start = lo - 2 * g.w + 1; start < hi; ++start) {

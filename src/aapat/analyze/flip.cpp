@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "aapat/core/geometry.h"
+#include "aapat/core/interrupt.h"
 
 namespace aapat {
 namespace {
@@ -163,6 +164,7 @@ void filter_rows(const Plane& in, int w, int h, const std::vector<const Taps*>& 
                  const std::vector<Plane*>& out) {
   const int r = taps[0]->radius;
   tbb::parallel_for(0, h, [&](int j) {
+    throw_if_interrupted();
     std::vector<float> padded(static_cast<size_t>(w + 2 * r));
     const float* row = in.data() + static_cast<size_t>(j) * w;
     for (int i = 0; i < w + 2 * r; ++i) padded[i] = row[std::clamp(i - r, 0, w - 1)];
@@ -200,6 +202,7 @@ Opponent to_opponent(const ColorImage& img) {
   const size_t n = img.pixels();
   Opponent o{Plane(n), Plane(n), Plane(n)};
   tbb::parallel_for(size_t{0}, n, [&](size_t p) {
+    throw_if_interrupted();
     const float* c = &img.rgb[3 * p];
     const Vec3f v = xyz_to_ycxcz(
         rgb_to_xyz({srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2])}));
@@ -218,6 +221,7 @@ Opponent filtered_lab(const Opponent& o, int w, int h, const CsfFilters& f) {
   filter_rows(o.cz, w, h, {&f.cz1, &f.cz2}, {&cz1, &cz2});
   Opponent lab{Plane(n), Plane(n), Plane(n)};
   tbb::parallel_for(0, h, [&](int j) {
+    throw_if_interrupted();
     std::vector<float> y(w), cx(w), c1(w), c2(w);
     filter_column(y1, w, h, j, f.y, y.data());
     filter_column(cx1, w, h, j, f.cx, cx.data());
@@ -244,6 +248,7 @@ std::pair<Plane, Plane> features(const Plane& ycxcz_y, int w, int h, const Featu
   filter_rows(lum, w, h, {&f.g, &f.dg, &f.ddg}, {&gx, &dx, &ddx});
   Plane edge(n), point(n);
   tbb::parallel_for(0, h, [&](int j) {
+    throw_if_interrupted();
     std::vector<float> dxy(w), ddxy(w), dyx(w), ddyx(w);
     filter_column(dx, w, h, j, f.g, dxy.data());    // d/dx, smoothed along y
     filter_column(ddx, w, h, j, f.g, ddxy.data());  // d2/dx2, smoothed along y
@@ -321,6 +326,7 @@ FlipResult flip(const ColorImage& reference, const ColorImage& test, double ppd)
   const float cmax = max_color_distance(), knee = kPc * cmax;
   FlipResult r{w, h, std::vector<float>(n), 0, 0, 0, 0, 0, 0, {}};
   tbb::parallel_for(size_t{0}, n, [&](size_t p) {
+    throw_if_interrupted();
     float color = std::pow(hyab({ref_lab.y[p], ref_lab.cx[p], ref_lab.cz[p]},
                                 {tst_lab.y[p], tst_lab.cx[p], tst_lab.cz[p]}),
                            kQc);

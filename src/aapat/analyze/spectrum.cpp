@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "aapat/analyze/spectrum_simd.h"
+#include "aapat/core/interrupt.h"
 
 namespace aapat {
 
@@ -40,6 +41,7 @@ Spectrum2D power_spectrum(const std::vector<Vec2>& points, int size) {
   constexpr size_t kBlock = 8;
   const size_t columns = std::min(computed, m);
   tbb::parallel_for(size_t{0}, (columns + kBlock - 1) / kBlock, [&](size_t block) {
+    throw_if_interrupted();
     const size_t first = block * kBlock, count = std::min(kBlock, columns - first);
     std::vector<double> re(kBlock * m, 0.0), im(kBlock * m, 0.0);
     double ar[kPointsAtOnce * kBlock], ai[kPointsAtOnce * kBlock];
@@ -123,6 +125,7 @@ std::vector<double> power_spectrum_1d(const std::vector<double>& xs, int count, 
   const double df = f_max / count;
   constexpr int kBlock = 256;  // exact exponentials at each block start, rotations inside
   tbb::parallel_for(0, (count + kBlock - 1) / kBlock, [&](int b) {
+    throw_if_interrupted();
     const int k0 = b * kBlock, k1 = std::min(count, k0 + kBlock);
     std::vector<std::complex<double>> sum(k1 - k0);
     for (double x : xs) {

@@ -1,5 +1,7 @@
 #include "aapat/analyze/star_discrepancy.h"
 
+#include "aapat/core/interrupt.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -156,6 +158,7 @@ StarDiscrepancy star_discrepancy(const std::vector<Vec2>& p, size_t exact_limit,
   const size_t chunks = std::min<size_t>(g, 64);
   std::vector<Chunk> results(chunks);
   tbb::parallel_for(size_t{0}, chunks, [&](size_t chunk) {
+    throw_if_interrupted();
     const size_t first = chunk * g / chunks, last = (chunk + 1) * g / chunks;
     Chunk& r = results[chunk];
     std::vector<size_t> column(g + 1, 0);  // points left of the line, by y cell

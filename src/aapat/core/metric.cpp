@@ -1,6 +1,7 @@
 #include "aapat/core/metric.h"
 
 #include "aapat/core/filter_catalog.h"
+#include "aapat/core/interrupt.h"
 #include "aapat/core/metric_simd.h"
 
 #include <fmt/format.h>
@@ -238,6 +239,7 @@ KernelError Metric::kernel_error(const Kernel& k) const {
 }
 
 PatternError Metric::evaluate(const Pattern& p) const {
+  throw_if_interrupted();  // loops over many patterns stop between two
   PatternError r;
   std::vector<int> worst_angle;
   for (int k = 0; k < p.set_count(); ++k) {

@@ -12,6 +12,7 @@
 #include <random>
 
 #include "aapat/core/filter_catalog.h"
+#include "aapat/core/interrupt.h"
 #include "aapat/core/metric.h"
 #include "aapat/core/text.h"
 
@@ -125,6 +126,7 @@ std::vector<Vec2> poisson(int n, double radius, bool maximal, std::mt19937_64& r
   // Dart throwing with rejection; give up after many misses in a row.
   const int patience = 1000 + 100 * n;
   for (int misses = 0; misses < patience && (maximal || static_cast<int>(pts.size()) < n);) {
+    throw_if_interrupted();
     const Vec2 c{u(rng), u(rng)};
     if (!grid.any_within(c, radius)) {
       pts.push_back(c);
@@ -149,6 +151,7 @@ std::vector<Vec2> best_candidate(int n, double q, std::mt19937_64& rng) {
   };
   TorusGrid grid(1);
   for (int i = 0; i < n; ++i) {
+    throw_if_interrupted();
     if (grid_for(p.size()) > grid.side()) {  // about 1 point in 2 cells; O(n^1.5) rebuilding
       grid = TorusGrid(grid_for(p.size()));
       for (const Vec2& v : p) grid.add(v);

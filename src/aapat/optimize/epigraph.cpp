@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 #include <nlopt.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
+
+#include "aapat/optimize/nlopt_guard.h"
 
 namespace aapat {
 namespace {
@@ -71,6 +74,7 @@ struct Context {
   int evaluations = 0;
   double best_e2 = std::numeric_limits<double>::infinity();
   std::vector<double> best_x;
+  NloptGuard guard;
 };
 
 double objective_s(unsigned n, const double* x, double* grad, void* data) {
@@ -82,9 +86,8 @@ double objective_s(unsigned n, const double* x, double* grad, void* data) {
 
 // Every term W^2 E1^2 - s <= 0, then (non-negative weights) every group's
 // eliminated weight >= 0, written as the sum of the others - 1 <= 0.
-void constraints(unsigned m, double* result, unsigned n, const double* x, double* grad,
-                 void* data) {
-  auto& c = *static_cast<Context*>(data);
+void constraints_of(Context& c, unsigned m, double* result, unsigned n, const double* x,
+                    double* grad) {
   c.layout.apply(x, c.problem);
   const double e2 = c.objective.e2(c.problem, c.ws);
   ++c.evaluations;
@@ -135,6 +138,13 @@ void constraints(unsigned m, double* result, unsigned n, const double* x, double
     }
 }
 
+void constraints(unsigned m, double* result, unsigned n, const double* x, double* grad,
+                 void* data) {
+  auto& c = *static_cast<Context*>(data);
+  if (!c.guard.call([&] { constraints_of(c, m, result, n, x, grad); }))
+    std::fill(result, result + m, 0.0);  // NLopt stops; the values are not used
+}
+
 nlopt_algorithm nlopt_of(EpigraphAlgorithm a) {
   switch (a) {
     case EpigraphAlgorithm::slsqp:
@@ -163,6 +173,7 @@ RunResult epigraph(const ProblemE2& objective, Problem& problem, const Optimizer
             {},
             0,
             std::numeric_limits<double>::infinity(),
+            {},
             {}};
   RunResult r = begin_run(objective, problem, settings.nonnegative_weights, c.ws);
   const size_t n = c.layout.size();
@@ -176,6 +187,7 @@ RunResult epigraph(const ProblemE2& objective, Problem& problem, const Optimizer
   std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(
       nlopt_create(nlopt_of(algorithm), static_cast<unsigned>(n)), nlopt_destroy);
   if (!opt) throw Error("optimize: NLopt could not create its optimizer");
+  c.guard.attach(opt.get());
   std::vector<double> lo(n, -HUGE_VAL), hi(n, HUGE_VAL);
   for (size_t i = 0; i < c.layout.coordinates.size(); ++i) {
     const double limit = problem.generators[c.layout.coordinates[i].generator].limit;
@@ -202,6 +214,7 @@ RunResult epigraph(const ProblemE2& objective, Problem& problem, const Optimizer
   }
   double s = 0;
   nlopt_optimize(opt.get(), x.data(), &s);  // any stop: the best point seen is kept below
+  c.guard.rethrow();
   // The best point any evaluation saw, by the true E2 (not s: the last
   // iterate may be slightly infeasible), and never worse than the start.
   c.layout.apply(c.best_x.data(), problem);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "aapat/core/gradient.h"
+#include "aapat/core/interrupt.h"
 
 namespace aapat {
 
@@ -32,6 +33,7 @@ void ProblemE2::fill_kernels(const Problem& pr, Workspace& ws) const {
 }
 
 double ProblemE2::e2(const Problem& pr, Workspace& ws) const {
+  throw_if_interrupted();  // every optimizer evaluates here, a few microseconds apart
   fill_kernels(pr, ws);
   const int angles = metric_.angle_count();
   ws.values.resize(ws.kernels.size() * angles);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "aapat/core/interrupt.h"
 #include "aapat/generate/point_generators.h"
 #include "aapat/render/color_render.h"
 #include "aapat/render/surface.h"
@@ -228,6 +229,7 @@ AdaptiveImage render_adaptive(const Scene& scene, int width, int height, const A
   // Phase 1: every pixel's first samples.
   std::vector<std::vector<Taken>> first(static_cast<size_t>(rw) * rh);
   tbb::parallel_for(-m, height + m, [&](int b) {
+    throw_if_interrupted();
     for (int a = -m; a < width + m; ++a) {
       std::vector<Vec2> at;
       if (s.initial.pattern) {
@@ -249,6 +251,7 @@ AdaptiveImage render_adaptive(const Scene& scene, int width, int height, const A
   std::vector<std::vector<Weighted>> kept(first.size());
   std::vector<int> evaluations(first.size());
   tbb::parallel_for(-m, height + m, [&](int b) {
+    throw_if_interrupted();
     const Refiner refiner(scene, s);
     for (int a = -m; a < width + m; ++a) {
       double contrast = 0;  // the largest channel's

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "aapat/core/interrupt.h"
 #include "aapat/render/image_flip.h"
 
 namespace aapat {
@@ -37,6 +38,7 @@ AnimationResult animate(const AnimationSettings& a, const Sampling& sampling,
   ImageError& total = r.total;
   double pixels = 0, flip_sum = 0;
   for (int f = 0; f < a.frames; ++f) {
+    throw_if_interrupted();
     const Scene scene = animation_scene(a, f);
     const Image image = render(scene, a.width, a.height, sampling, filter);
     ReferenceSettings ref = a.reference;

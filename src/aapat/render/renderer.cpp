@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 
+#include "aapat/core/interrupt.h"
 #include "aapat/generate/point_generators.h"
 #include "aapat/render/color_render.h"
 #include "aapat/render/surface.h"
@@ -226,6 +227,7 @@ Image render_band(const Scene& scene, int width, int height, const Sampling& s,
                           static_cast<int>(std::ceil(std::abs(kernels.back().y[r]) + 1))});
     }
     tbb::parallel_for(0, height, [&](int j) {
+      throw_if_interrupted();
       OwnedSampleCache owned(sampler, j, width, reach, counts);
       for (int i = 0; i < width; ++i) {
         const Kernel& k = kernels[set_index(p, i, j)];
@@ -251,6 +253,7 @@ Image render_band(const Scene& scene, int width, int height, const Sampling& s,
     const int reach = static_cast<int>(std::floor(filter->radius() + 0.5)) + (offset != 0 ? 1 : 0);
     constexpr int kBlock = kRenderBlockRows;
     tbb::parallel_for(0, (rows + kBlock - 1) / kBlock, [&](int block) {
+      throw_if_interrupted();
       const int j0 = row_begin + block * kBlock, j1 = std::min(row_end, j0 + kBlock);
       std::vector<double> sum(static_cast<size_t>(j1 - j0) * width * nc, 0.0),
           weight(static_cast<size_t>(j1 - j0) * width, 0.0);

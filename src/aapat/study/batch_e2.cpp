@@ -1,5 +1,7 @@
 #include "aapat/study/batch_e2.h"
 
+#include "aapat/core/interrupt.h"
+
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
@@ -37,6 +39,7 @@ void for_each_pattern(const Metric& metric, std::span<const double> xy,
                       Done&& done) {
   check_batch(xy, weights, patterns, samples);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, patterns, 64), [&](const auto& range) {
+    throw_if_interrupted();
     Kernel k;
     k.x.resize(samples), k.y.resize(samples), k.w.resize(samples);
     std::vector<double> proj(samples), values(metric.angle_count());

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "aapat/core/interrupt.h"
 #include "aapat/render/animation.h"
 #include "aapat/render/color_render.h"
 #include "aapat/render/image_flip.h"
@@ -242,6 +243,7 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
   int ghost_frames = 0;
   Scene previous_scene = run.scene;
   for (int f = -run.warmup; f < run.frames; ++f) {
+    throw_if_interrupted();
     const Scene scene = moved_scene(run.scene, run.motion, f);
     const int phase = ((f % period) + period) % period;
     const PhaseTaps& t = phases[static_cast<size_t>(phase)];

@@ -14,6 +14,7 @@
 #include "aapat/core/gradient.h"
 #include "aapat/core/lattice.h"
 #include "aapat/optimize/family.h"
+#include "aapat/optimize/nlopt_guard.h"
 #include "aapat/temporal/engine_taa_settings.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/temporal_metrics.h"
@@ -44,6 +45,7 @@ struct Epigraph {
   std::vector<std::vector<double>> dv;   // per angle, d(term)/dp per sample
   std::vector<std::vector<double>> dvw;  // per angle, d(term)/d(sample weight)
   std::vector<size_t> order;
+  NloptGuard guard;
 
   Epigraph(const Metric& m, const SequenceSearch& s)
       : metric(m),
@@ -275,9 +277,11 @@ double nlopt_objective(unsigned n, const double* x, double* grad, void* data) {
   return value;
 }
 
-void nlopt_constraints(unsigned, double* result, unsigned, const double* x, double* grad,
+void nlopt_constraints(unsigned m, double* result, unsigned, const double* x, double* grad,
                        void* data) {
-  static_cast<Epigraph*>(data)->constraints(x, result, grad);
+  auto& e = *static_cast<Epigraph*>(data);
+  if (!e.guard.call([&] { e.constraints(x, result, grad); }))
+    std::fill(result, result + m, 0.0);  // NLopt stops; the values are not used
 }
 
 // One start: SLSQP from `start`, never ending worse than it began.
@@ -301,6 +305,7 @@ std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
   for (size_t i = e.s_index(); i < n; ++i) lo[i] = 0, hi[i] = HUGE_VAL;
   std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(
       nlopt_create(NLOPT_LD_SLSQP, static_cast<unsigned>(n)), nlopt_destroy);
+  e.guard.attach(opt.get());
   nlopt_set_lower_bounds(opt.get(), lo.data());
   nlopt_set_upper_bounds(opt.get(), hi.data());
   nlopt_set_min_objective(opt.get(), nlopt_objective, &e);
@@ -313,6 +318,7 @@ std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
   std::vector<double> start = x;
   double value = 0;
   nlopt_optimize(opt.get(), x.data(), &value);  // any stop: compared with the start below
+  e.guard.rethrow();
   for (size_t i = 0; i < 2 * static_cast<size_t>(e.samples); ++i)
     x[i] = std::clamp(x[i], -kBound, kBound);
   x.resize(e.s_index());
@@ -521,12 +527,17 @@ struct SubplexData {
   const SequenceSearch& search;
   const Metric& metric;
   const std::string& name;
+  NloptGuard guard;
 };
 
 double subplex_objective(unsigned, const double* x, double*, void* data) {
-  const auto& d = *static_cast<const SubplexData*>(data);
-  const std::vector<double> v(x, x + 2 * d.search.frames);
-  return upscaled_objective(sequence_of(v, d.search, d.name), d.search, d.metric).objective;
+  auto& d = *static_cast<SubplexData*>(data);
+  double value = HUGE_VAL;  // when the evaluation failed: NLopt stops
+  d.guard.call([&] {
+    const std::vector<double> v(x, x + 2 * d.search.frames);
+    value = upscaled_objective(sequence_of(v, d.search, d.name), d.search, d.metric).objective;
+  });
+  return value;
 }
 
 // One start of the upscale search: the native search (the one-pixel model's
@@ -543,13 +554,14 @@ std::vector<double> run_upscale_start(const SequenceSearch& s, const Metric& met
     x = searched;
   x.resize(static_cast<size_t>(2 * s.frames));
   const size_t n = x.size();
-  SubplexData data{s, metric, name};
+  SubplexData data{s, metric, name, {}};
   std::vector<double> lo(n, -kBound), hi(n, kBound), step(n, 0.05);
   std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(
       nlopt_create(NLOPT_LN_SBPLX, static_cast<unsigned>(n)), nlopt_destroy);
   nlopt_set_lower_bounds(opt.get(), lo.data());
   nlopt_set_upper_bounds(opt.get(), hi.data());
   nlopt_set_initial_step(opt.get(), step.data());
+  data.guard.attach(opt.get());
   nlopt_set_min_objective(opt.get(), subplex_objective, &data);
   nlopt_set_xtol_abs1(opt.get(), 1e-5);
   nlopt_set_maxeval(opt.get(), std::min(s.iterations, kMaxUpscaleEvaluations));
@@ -557,6 +569,7 @@ std::vector<double> run_upscale_start(const SequenceSearch& s, const Metric& met
   const double before = subplex_objective(0, start.data(), nullptr, &data);
   double value = 0;
   nlopt_optimize(opt.get(), x.data(), &value);  // any stop: compared with the start below
+  data.guard.rethrow();
   if (!(subplex_objective(0, x.data(), nullptr, &data) < before)) return start;
   return x;
 }

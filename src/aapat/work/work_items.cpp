@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "aapat/core/geometry.h"
+#include "aapat/core/interrupt.h"
 #include "aapat/work/checkpoint.h"
 
 namespace aapat {
@@ -44,7 +45,7 @@ void LocalEngine::run(std::vector<std::optional<std::string>>& results, const It
   std::atomic<int> first_failure{INT_MAX};
   tbb::parallel_for(size_t{0}, missing.size(), [&](size_t k) {
     const int i = missing[k];
-    if (i > first_failure) return;
+    if (i > first_failure || interrupt_requested()) return;
     try {
       std::string result = work(i);
       const std::lock_guard lock(mutex);
@@ -57,6 +58,7 @@ void LocalEngine::run(std::vector<std::optional<std::string>>& results, const It
       }
     }
   });
+  throw_if_interrupted();  // before the items' errors: an interrupted item may have failed
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
 }
