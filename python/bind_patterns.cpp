@@ -8,6 +8,7 @@
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/aapat_catalog.h"
 #include "aapat/io/pattern_json.h"
+#include "aapat/limits/limits_table.h"
 #include "aapat/render/scene.h"
 #include "aapat/render/texture_filter.h"
 #include "aapat/temporal/spec_registries.h"
@@ -186,6 +187,11 @@ pattern file (.json, or Laine's x y weight text .xyw).)doc");
 "textures", "texture_filters", "api_profiles", "motions", "sequences", "aapat_sequences",
 "taa_presets")
 to a list of {name, usage, summary, source, parameters}.)doc");
+  m.def(
+      "limits", [] { return to_python(limits_json().at("limits")); },
+      R"doc(Every limit aapat checks, as `aapat limits --json` lists them (and
+docs/limits.md shows them): a list of {what, limit, defined}. The same
+limits hold here as on the command line; a value past one raises aapat.Error.)doc");
 }
 
 }  // namespace aapat::python

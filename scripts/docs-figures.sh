@@ -114,4 +114,14 @@ cp "$flip_tmp/mesh-reference.png" "$img/flip-mesh-reference.png"
 rm -rf "$flip_tmp"
 # Every registry of specs, as aapat list prints it (the same entries the parsers use).
 "$aapat" list > docs/registry.txt
+# docs/limits.md's table is `aapat limits --markdown` (the library's table of
+# limits), set between its two markers; the prose around it is kept.
+"$aapat" limits --markdown | python3 -c '
+import re, sys
+doc = open(sys.argv[1]).read()
+begin, end = "<!-- the table: aapat limits --markdown -->\n", "<!-- end of the table -->\n"
+head, rest = doc.split(begin)
+sys.stdout.write(head + begin + sys.stdin.read() + end + rest.split(end, 1)[1])
+' "$root/docs/limits.md" > docs/limits.md.new
+mv docs/limits.md.new docs/limits.md
 echo "figures written under docs/"

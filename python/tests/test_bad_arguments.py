@@ -82,6 +82,7 @@ def calls(files):
         "profile": (aapat.profile, ["msaa-4"], {"acuity": "uniform:step=10"}),
         "read_points": (aapat.read_points, [files["points"]], {"format": ""}),
         "registry": (aapat.registry, [], {}),
+        "limits": (aapat.limits, [], {}),
         "render": (aapat.render, ["disc"], {"pattern": "msaa-4", "size": (8, 8), "samples": 4,
                                             "reference_samples": 4}),
         "save_pattern": (aapat.save_pattern, [p, os.path.join(tmp, "s.json")], {}),
@@ -129,7 +130,7 @@ def test_every_callable_has_a_bad_argument_case(files):
     ["acuity", "AcuityTable", "filter", "Filter", "Filter.__call__", "diff", "discrepancy",
      "engine_taa", "enumerate", "eval", "eval_report", "figure10", "generate", "hardware_table",
      "load_pattern", "optimize", "optimize_sequence", "pattern", "Pattern", "Pattern.from_json",
-     "Pattern.save", "profile", "read_points", "registry", "render", "save_pattern", "sequence",
+     "Pattern.save", "profile", "read_points", "registry", "limits", "render", "save_pattern", "sequence",
      "Sequence.save", "sequence_eval", "spectrum", "spectrum_1d", "table2", "table3",
      "write_points"]))
 def test_random_bad_arguments_raise_only_aapat_error(name, files):

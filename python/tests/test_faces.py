@@ -329,3 +329,34 @@ def test_threads_are_checked_on_every_path():
     them: the same limit as the command line's --threads."""
     with pytest.raises(aapat.Error, match=r"threads: 65537 is not in \[0, 1024\]"):
         aapat.eval("rgss", threads=65537)
+
+
+def test_limits_are_one_table_on_every_face(aapat_cli):
+    """The library's table of limits: aapat.limits() is `aapat limits --json`,
+    and docs/limits.md shows `aapat limits --markdown` between its markers."""
+    cli = cli_json(aapat_cli, "limits", "--json")
+    assert aapat.limits() == cli["limits"]
+    assert len(cli["limits"]) >= 30
+    here = os.path.dirname(os.path.abspath(__file__))
+    with open(os.path.join(here, "..", "..", "docs", "limits.md")) as f:
+        doc = f.read()
+    table = doc.split("<!-- the table: aapat limits --markdown -->\n")[1].split(
+        "<!-- end of the table -->\n")[0]
+    assert table == aapat_cli("limits", "--markdown")
+
+
+def test_a_value_past_a_limit_is_refused_on_both_faces(aapat_cli):
+    """The same limit, checked by the library, on both faces: one past the
+    image side, the starts and the reference samples."""
+    with pytest.raises(aapat.Error, match="16384"):
+        aapat.render("disc", pattern="msaa-4", size=(16385, 1))
+    with pytest.raises(aapat.Error, match="1000000"):
+        aapat.optimize(family="P(1,1,2)", starts=1_000_001)
+    with pytest.raises(aapat.Error, match="reference_samples 65537: expected 1 to 65536"):
+        aapat.render("disc", pattern="msaa-4", size=(4, 4), reference=True,
+                     reference_samples=65537)
+    for args in (["render", "disc", "--pattern", "msaa-4", "--size", "16385x1"],
+                 ["optimize", "--family", "P(1,1,2)", "--starts", "1000001"],
+                 ["render", "disc", "--pattern", "msaa-4", "--reference-samples", "65537"]):
+        with pytest.raises(subprocess.CalledProcessError):
+            aapat_cli(*args)

@@ -12,9 +12,6 @@ namespace aapat {
 AnimationSettings AnimationOptions::settings() const {
   AnimationSettings s = a;
   std::tie(s.width, s.height) = parse_size(size, "--size", kMaxAnimationSize);
-  if (s.width < kMinAnimationSize || s.height < kMinAnimationSize)
-    throw Error(
-        fmt::format("--size: '{}' must be at least {} pixels a side", size, kMinAnimationSize));
   s.reference = reference.settings;
   check_animation_work(s.width, s.height, s.frames);  // before any scene is read
   return s;

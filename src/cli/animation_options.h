@@ -11,8 +11,6 @@
 
 namespace aapat {
 
-inline constexpr int kMinAnimationSize = 8, kMaxAnimationSize = 4096;
-
 struct AnimationOptions {
   AnimationSettings a;
   std::string size;  // WIDTHxHEIGHT or N (N x N), as every command's --size

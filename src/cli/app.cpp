@@ -229,6 +229,7 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
     commands.emplace_back(app.get_subcommands({})[before], std::move(action));
   };
   add(add_list_command);
+  add(add_limits_command);
   add(add_show_command);
   add(add_eval_command);
   add(add_optimize_command);

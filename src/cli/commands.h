@@ -11,6 +11,7 @@ namespace aapat {
 using Action = std::function<void(std::ostream& out)>;
 
 Action add_list_command(CLI::App& app);
+Action add_limits_command(CLI::App& app);
 Action add_show_command(CLI::App& app);
 Action add_eval_command(CLI::App& app);
 Action add_optimize_command(CLI::App& app);

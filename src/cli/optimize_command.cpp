@@ -245,7 +245,7 @@ Action add_optimize_command(CLI::App& app) {
   o->metric.add_to(cmd);
   cmd->add_option("--starts", o->starts, "random starts (run in parallel)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 1000000));
+      ->check(CLI::Range(1, kMaxStarts));
   add_seed_option(cmd, o->seed, "random seed");
   cmd->add_option("--seeds", o->seeds,
                   "seed patterns: jittered, poisson, uniform, or a pattern file (.json) whose "
@@ -257,7 +257,7 @@ Action add_optimize_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 1e7));
   cmd->add_option("--iterations", o->iterations, "iterations per start at most")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100000000));
+      ->check(CLI::Range(1, kMaxIterations));
   cmd->add_option("--method", o->method,
                   "descent (Laine-Aila heuristic), minimax (eps-active min-norm descent), anneal, "
                   "or the epigraph form with NLopt: slsqp, mma, ccsaq")
@@ -267,7 +267,7 @@ Action add_optimize_command(CLI::App& app) {
       ->check(CLI::Range(0, kMaxThreads));
   cmd->add_option("--lattice", o->lattice,
                   "then search positions on the 1/N-pixel lattice (16: programmable MSAA)")
-      ->check(CLI::Range(2, 256));
+      ->check(CLI::Range(kMinLatticeSteps, kMaxLatticeSteps));
   cmd->add_option("--api", o->api,
                   "with --lattice: the pattern must fit this API profile (d3d12-tier1, "
                   "d3d12-tier2, vulkan, metal, gl)");

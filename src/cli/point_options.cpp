@@ -14,7 +14,9 @@ void PointOptions::add_to(CLI::App* cmd) {
 }
 
 void PointOptions::add_common(CLI::App* cmd) {
-  cmd->add_option("--n", n, "points")->capture_default_str()->check(CLI::Range(1, 1000000));
+  cmd->add_option("--n", n, "points")
+      ->capture_default_str()
+      ->check(CLI::Range(1, kMaxGeneratedPoints));
   add_seed_option(cmd, seed, "random seed");
   cmd->add_option("--format", format,
                   "point file format: csv, safari, utk, utk-bin, psa, pspec, json (default: by "

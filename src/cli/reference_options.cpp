@@ -25,7 +25,7 @@ void add_reference_options(CLI::App* cmd, ReferenceOptions& o, int samples_defau
   cmd->add_option("--reference-samples", o.settings.samples,
                   "jittered samples per pixel of the reference (a square)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 65536))
+      ->check(CLI::Range(1, kMaxSamplesPerPixel))
       ->check(CLI::Validator(
           [](const std::string& text) {
             const long n = std::strtol(text.c_str(), nullptr, 10);

@@ -105,7 +105,7 @@ std::string ssim_text(const RenderFigures& f) {
 }
 
 void run_grid(const Options& o, std::ostream& out) {
-  const auto [w, h] = parse_size(o.size, "--size", 16384);
+  const auto [w, h] = parse_size(o.size, "--size", kMaxImageSide);
   if (o.output.empty() || !o.output.ends_with(".png"))
     throw Error("render --grid: give the sheet's file with -o SHEET.png");
   const Scene scene = make_view_scene(o, w, h);
@@ -268,7 +268,7 @@ RenderSettings single_settings(const Options& o, int w, int h) {
 }
 
 void run_single(const Options& o, std::ostream& out) {
-  const auto [w, h] = parse_size(o.size, "--size", 16384);
+  const auto [w, h] = parse_size(o.size, "--size", kMaxImageSide);
   for (const std::string* f : {&o.output, &o.error_png, &o.reference_png, &o.refinement_map})
     if (!f->empty() && !f->ends_with(".png")) throw Error(fmt::format("'{}' must end in .png", *f));
   const Scene scene = make_view_scene(o, w, h);
@@ -321,7 +321,7 @@ void run_temporal(const Options& o, std::ostream& out) {
     throw Error(
         "--sequence renders the sequence's frames with their own weights (or --resolve): "
         "give no --pattern, --generator, --filter, --grid or --adaptive");
-  const auto [w, h] = parse_size(o.size, "--size", 16384);
+  const auto [w, h] = parse_size(o.size, "--size", kMaxImageSide);
   if (!o.output.empty() && !o.output.ends_with(".png"))
     throw Error(fmt::format("'{}' must end in .png", o.output));
   const Scene scene = make_view_scene(o, w, h);
@@ -376,7 +376,7 @@ Action add_render_command(CLI::App& app) {
   cmd->add_option("--generator", o->generator, "per-pixel generator instead, e.g. jittered");
   cmd->add_option("--samples", o->samples, "samples per pixel for --generator")
       ->capture_default_str()
-      ->check(CLI::Range(1, 65536));
+      ->check(CLI::Range(1, kMaxSamplesPerPixel));
   cmd->add_option("--filter", o->filter,
                   "reconstruct with this filter's normalized weights (default: the pattern's own)");
   cmd->add_option("--size", o->size, "WIDTHxHEIGHT")->capture_default_str();

@@ -33,7 +33,7 @@ Action add_snap_command(CLI::App& app) {
   cmd->add_option("pattern", o->pattern, "catalog name or pattern file")->required();
   cmd->add_option("--lattice", o->lattice, "steps per pixel")
       ->capture_default_str()
-      ->check(CLI::Range(2, 256));
+      ->check(CLI::Range(kMinLatticeSteps, kMaxLatticeSteps));
   o->metric.add_to(cmd);
   cmd->add_flag("--optimize-weights", o->weights,
                 "then optimize the weights for the snapped positions");

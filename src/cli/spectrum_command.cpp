@@ -133,7 +133,7 @@ Action add_spectrum_command(CLI::App& app) {
   o->n_option = cmd->get_option("--n");
   cmd->add_option("--size", o->size, "frequencies per axis, -size/2 .. size/2-1")
       ->capture_default_str()
-      ->check(CLI::Range(8, 2048));
+      ->check(CLI::Range(kMinSpectrumSize, kMaxSpectrumSize));
   cmd->add_option("--realizations", o->realizations,
                   "point sets averaged (seeds seed, seed+1, ...)")
       ->capture_default_str()

@@ -70,8 +70,9 @@ struct FftwFree {
 }  // namespace
 
 FastSpectrum power_spectrum_fast(const std::vector<Vec2>& points, int size) {
-  if (size < 8 || size > 2048 || size % 2 != 0)
-    throw Error(fmt::format("fast spectrum: size {} must be even, 8 to 2048", size));
+  if (size < kMinSpectrumSize || size > kMaxSpectrumSize || size % 2 != 0)
+    throw Error(fmt::format("fast spectrum: size {} must be even, {} to {}", size, kMinSpectrumSize,
+                            kMaxSpectrumSize));
   const Gridding g(size);
   const size_t n = points.size(), r = static_cast<size_t>(g.r);
   // exp(-(l h)^2 / (4 tau)), l = 0 .. w.

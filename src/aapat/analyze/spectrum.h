@@ -13,6 +13,9 @@
 
 namespace aapat {
 
+// A spectrum image's side (frequencies per axis) on every face.
+inline constexpr int kMinSpectrumSize = 8, kMaxSpectrumSize = 2048;
+
 struct Spectrum2D {
   int size = 0;               // M: frequencies -M/2 .. M/2-1 on each axis
   std::vector<double> power;  // row v (from -M/2, bottom) then column u

@@ -278,7 +278,8 @@ const std::vector<Entry>& entries() {
        {},
        [](int n, const Params&, std::mt19937_64&) {
          // Past 20 the lexicographic search for the first solutions takes seconds to minutes.
-         if (n < 1 || n > 20) throw Error(fmt::format("n-queens: N = {} is out of range 1..20", n));
+         if (n < 1 || n > kMaxNQueens)
+           throw Error(fmt::format("n-queens: N = {} is out of range 1..{}", n, kMaxNQueens));
          return best_n_queens(n);
        }},
       {{"poisson:radius=R",
@@ -447,9 +448,9 @@ const GeneratorRegistry& generator_registry() {
                           if (prm.contains(base)) spec.whole(base, 2, 64);
                         const std::string name = spec.name();
                         return [&e, prm, name](int n, uint64_t seed) {
-                          if (n < 1 || n > 1000000)
-                            throw Error(
-                                fmt::format("{}: n = {} is out of range 1..1000000", name, n));
+                          if (n < 1 || n > kMaxGeneratedPoints)
+                            throw Error(fmt::format("{}: n = {} is out of range 1..{}", name, n,
+                                                    kMaxGeneratedPoints));
                           std::mt19937_64 rng(seed);
                           return e.make(n, prm, rng);
                         };

@@ -19,6 +19,10 @@ namespace aapat {
 
 // Mitchell's best candidate costs q n^2 / 2 nearest-point queries; past this
 // many it is refused (docs/limits.md).
+// Points one generator makes, and the largest N of the N-queens search (the
+// lexicographic search takes 40 s at N = 32).
+inline constexpr int kMaxGeneratedPoints = 1'000'000;
+inline constexpr int kMaxNQueens = 20;
 inline constexpr double kMaxBestCandidateQueries = 5e7;  // about 7 s on one core
 
 // Dart throwing (poisson, poisson-maximal) past this many points is refused.

@@ -6,6 +6,12 @@
 
 namespace aapat {
 
+// The optimizer's counts on every face: random starts, iterations per start,
+// and the steps per pixel of a position lattice.
+inline constexpr int kMaxStarts = 1'000'000;
+inline constexpr int kMaxIterations = 100'000'000;
+inline constexpr int kMinLatticeSteps = 2, kMaxLatticeSteps = 256;
+
 // The descent heuristic, the minimax descent, annealing, and the epigraph
 // form with NLopt's SLSQP, MMA or CCSAQ (optimize/epigraph.h).
 enum class Method { kDescent, kMinimax, kAnneal, kSlsqp, kMma, kCcsaq };

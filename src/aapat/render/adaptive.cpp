@@ -215,8 +215,9 @@ void validate(const AdaptiveSettings& s) {
 AdaptiveImage render_adaptive(const Scene& scene, int width, int height, const AdaptiveSettings& s,
                               const std::optional<Filter>& filter) {
   validate(s);
-  if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    throw ParameterError("size", fmt::format(": {}x{} is out of range 1..16384", width, height));
+  if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
+    throw ParameterError(
+        "size", fmt::format(": {}x{} is out of range 1..{}", width, height, kMaxImageSide));
   // The pixels a filter reaches beyond the image are refined too.
   const int m = filter ? static_cast<int>(std::ceil(filter->radius())) : 0;
   const int rw = width + 2 * m, rh = height + 2 * m;

@@ -19,6 +19,9 @@ bool animation_moves(const AnimationSettings& a) {
 }
 
 void check_animation_work(int width, int height, int frames) {
+  if (std::min(width, height) < kMinAnimationSize || std::max(width, height) > kMaxAnimationSize)
+    throw ParameterError("size", fmt::format(": {}x{} is out of range {} to {} pixels a side",
+                                             width, height, kMinAnimationSize, kMaxAnimationSize));
   const double work = static_cast<double>(width) * height * frames;
   if (work > kMaxAnimationPixelFrames)
     throw ParameterError(

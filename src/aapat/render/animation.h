@@ -42,7 +42,11 @@ struct AnimationResult {
 // one animation renders, refused before any work (docs/limits.md): 2^30,
 // e.g. 4096 x 4096 x 64 frames, or 256 x 256 x 16,384.
 inline constexpr double kMaxAnimationPixelFrames = 1073741824.0;
-// Throws ParameterError("frames") naming the product and the limit.
+// An animation's image side, in pixels.
+inline constexpr int kMinAnimationSize = 8, kMaxAnimationSize = 4096;
+// Throws ParameterError("size") for a side outside [kMinAnimationSize,
+// kMaxAnimationSize], ParameterError("frames") naming the product and the
+// limit for too much work.
 void check_animation_work(int width, int height, int frames);
 
 // Frame f's scene: the animation's, or the scene moved f steps.

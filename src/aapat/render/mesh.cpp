@@ -173,8 +173,9 @@ std::shared_ptr<const MeshView> make_mesh_view(std::shared_ptr<const Mesh> mesh,
                                                const MeshCamera& camera, const MeshLight& light,
                                                int width, int height) {
   validate(camera, "camera");
-  if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    throw ParameterError("size", fmt::format(": {}x{} is out of range 1..16384", width, height));
+  if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
+    throw ParameterError(
+        "size", fmt::format(": {}x{} is out of range 1..{}", width, height, kMaxImageSide));
   auto view = std::make_shared<MeshView>();
   view->mesh_ = mesh;
   view->light_ = light;

@@ -13,6 +13,9 @@ namespace aapat {
 
 Image render_reference(const Scene& scene, int width, int height, const ReferenceSettings& r,
                        double offset) {
+  if (r.samples < 1 || r.samples > kMaxSamplesPerPixel)
+    throw ParameterError("reference-samples", fmt::format(" {}: expected 1 to {} per pixel",
+                                                          r.samples, kMaxSamplesPerPixel));
   Sampling s;
   s.generator = "jittered";
   s.samples = r.samples;

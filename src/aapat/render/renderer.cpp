@@ -197,9 +197,13 @@ namespace {
 Image render_band(const Scene& scene, int width, int height, const Sampling& s,
                   const std::optional<Filter>& filter, RenderStats* stats, double offset,
                   int row_begin, int row_end) {
-  if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    throw ParameterError("size", fmt::format(": {}x{} is out of range 1..16384", width, height));
+  if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
+    throw ParameterError(
+        "size", fmt::format(": {}x{} is out of range 1..{}", width, height, kMaxImageSide));
   if (!s.pattern && s.generator.empty()) throw Error("render: give a pattern or a generator");
+  if (!s.pattern && (s.samples < 1 || s.samples > kMaxSamplesPerPixel))
+    throw ParameterError(
+        "samples", fmt::format(" {}: expected 1 to {} per pixel", s.samples, kMaxSamplesPerPixel));
   if (!filter && !s.pattern) throw Error("render: a per-pixel generator needs a filter");
   if (row_begin < 0 || row_begin % kRenderBlockRows != 0 || row_end <= row_begin ||
       row_end > height || (!filter && (row_begin != 0 || row_end != height)))

@@ -76,6 +76,10 @@ Image render(const Scene& scene, int width, int height, const Sampling& sampling
 
 // With a filter, the rows are rendered in independent blocks of this many.
 inline constexpr int kRenderBlockRows = 8;
+// The largest image side render takes (pixels), and the most samples per pixel
+// of a pattern, a generator or a reference.
+inline constexpr int kMaxImageSide = 16384;
+inline constexpr int kMaxSamplesPerPixel = 65536;
 // Rows [row_begin, row_end) of render(scene, width, height, sampling, filter,
 // nullptr, offset), bit for bit, as an image of those rows alone; row_begin
 // is a multiple of kRenderBlockRows. A reference renders in such bands, each

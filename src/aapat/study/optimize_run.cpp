@@ -75,17 +75,18 @@ LatticeStage lattice_stage(const Metric& metric, const OptimizeRunSettings& s,
 void check_settings(const OptimizeRunSettings& s) {
   if (s.family.empty() && !s.start)
     throw Error("optimize: give either a family to search or a pattern to polish");
-  if (s.starts && !(*s.starts >= 1 && *s.starts <= 1000000))
-    throw Error(fmt::format("optimize: starts {} is not in [1, 1000000]", *s.starts));
+  if (s.starts && !(*s.starts >= 1 && *s.starts <= kMaxStarts))
+    throw Error(fmt::format("optimize: starts {} is not in [1, {}]", *s.starts, kMaxStarts));
   if (!(s.time_limit >= 0 && std::isfinite(s.time_limit)))
     throw Error(fmt::format("optimize: time limit {} is not a finite number of seconds >= 0",
                             s.time_limit));
-  if (s.optimizer.max_iterations < 1)
-    throw Error(
-        fmt::format("optimize: iterations {} must be at least 1", s.optimizer.max_iterations));
+  if (s.optimizer.max_iterations < 1 || s.optimizer.max_iterations > kMaxIterations)
+    throw Error(fmt::format("optimize: iterations {} is not in [1, {}]", s.optimizer.max_iterations,
+                            kMaxIterations));
   check_threads(s.threads, "optimize: threads");
-  if (s.lattice != 0 && !(s.lattice >= 2 && s.lattice <= 256))
-    throw Error(fmt::format("optimize: lattice {} is not in [2, 256] steps per pixel", s.lattice));
+  if (s.lattice != 0 && !(s.lattice >= kMinLatticeSteps && s.lattice <= kMaxLatticeSteps))
+    throw Error(fmt::format("optimize: lattice {} is not in [{}, {}] steps per pixel", s.lattice,
+                            kMinLatticeSteps, kMaxLatticeSteps));
   if (!s.api.empty() && s.lattice != kLatticeSteps)
     throw Error(fmt::format("optimize: the API profile {} has a 1/{} pixel lattice, not 1/{}",
                             s.api, kLatticeSteps, s.lattice));

@@ -83,8 +83,9 @@ DiscrepancyReport discrepancy_report(const std::vector<Vec2>& points,
 
 SpectrumStudy spectrum_study(const PointSource& source, const SpectrumSettings& s,
                              const StudyProgress& progress) {
-  if (!(s.size >= 8 && s.size <= 2048))
-    throw ParameterError("size", fmt::format(" {}: expected 8 to 2048 frequencies", s.size));
+  if (!(s.size >= kMinSpectrumSize && s.size <= kMaxSpectrumSize))
+    throw ParameterError("size", fmt::format(" {}: expected {} to {} frequencies", s.size,
+                                             kMinSpectrumSize, kMaxSpectrumSize));
   if (!(s.realizations >= 1 && s.realizations <= 100000))
     throw ParameterError("realizations", fmt::format(" {}: expected 1 to 100000", s.realizations));
   if (s.fast && s.size % 2 != 0)

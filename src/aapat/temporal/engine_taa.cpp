@@ -204,9 +204,8 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
   validate(s);
   if (s.frames[0].footprint.size != 1 || s.frames[0].tile_w != 1 || s.frames[0].tile_h != 1)
     throw Error(fmt::format("sequence {}: engine TAA jitters one-pixel frames (P(1,1,n))", s.name));
-  if (run.frames < 1 || run.frames > kMaxSequenceFrames * 16)
-    throw ParameterError("frames",
-                         fmt::format(" {}: from 1 to {}", run.frames, kMaxSequenceFrames * 16));
+  if (run.frames < 1 || run.frames > kMaxEngineFrames)
+    throw ParameterError("frames", fmt::format(" {}: from 1 to {}", run.frames, kMaxEngineFrames));
   if (run.warmup < 0 || run.warmup > kMaxWarmupFrames)
     throw ParameterError("warmup",
                          fmt::format(" {}: from 0 to {} frames", run.warmup, kMaxWarmupFrames));

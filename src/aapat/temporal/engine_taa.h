@@ -46,6 +46,8 @@ namespace aapat {
 
 inline constexpr int kGhostThreshold = 8;
 inline constexpr int kMaxWarmupFrames = 4096;
+// Frames one engine TAA run renders after its warm-up.
+inline constexpr int kMaxEngineFrames = 16 * kMaxSequenceFrames;
 
 struct EngineRun {
   Scene scene = HalfPlaneScene{};  // frame 0's, at display resolution
