@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -50,7 +51,21 @@ void untrack_temporary(const std::string& tmp) {
   }
 }
 
+// A signal during a commit's renames would leave some outputs new and the
+// others old, so it waits for the last rename: the handler (on whichever
+// thread the signal reaches) and the commit agree through one lock-free state.
+enum CommitState : int { kIdle, kCommitting, kDying };
+std::atomic<int> g_commit_state{kIdle};
+std::atomic<int> g_deferred_signal{0};
+
 extern "C" void remove_temporaries_and_reraise(int sig) {
+  int idle = kIdle;
+  if (!g_commit_state.compare_exchange_strong(idle, kDying)) {
+    if (idle == kCommitting) {
+      g_deferred_signal.store(sig);  // the commit raises it after its last rename
+      return;
+    }
+  }
   for (auto& slot : g_in_flight)
     if (const char* p = slot.load()) ::unlink(p);
   std::signal(sig, SIG_DFL);
@@ -297,16 +312,27 @@ void OutputTransaction::commit() {
     g_created_dirs.clear();
     g_open = false;
   }
+  int idle = kIdle;
+  if (!g_commit_state.compare_exchange_strong(idle, kCommitting)) {
+    // A signal is ending the process and removing the temporaries: rename
+    // nothing, so that the old set stays whole.
+    for (;;) pause();
+  }
   // Every path is staged once (write_file_atomically refuses a second).
-  for (size_t i = 0; i < staged.size(); ++i) {
+  std::exception_ptr failure;
+  for (size_t i = 0; i < staged.size() && !failure; ++i) {
     try {
       rename_into_place(staged[i].tmp, staged[i].path);
     } catch (const Error&) {
       for (size_t j = i + 1; j < staged.size(); ++j) remove_temporary(staged[j].tmp);
-      throw;
+      failure = std::current_exception();
     }
   }
-  for (const std::string& path : removals) std::remove(path.c_str());
+  if (!failure)
+    for (const std::string& path : removals) std::remove(path.c_str());
+  g_commit_state.store(kIdle);
+  if (const int sig = g_deferred_signal.exchange(0)) remove_temporaries_and_reraise(sig);
+  if (failure) std::rethrow_exception(failure);
 }
 
 void remove_temporaries_on_signals() {

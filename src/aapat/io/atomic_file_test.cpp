@@ -1,12 +1,17 @@
 #include "aapat/io/atomic_file.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include "aapat/core/geometry.h"
 #include "testing/cli_run.h"
@@ -102,6 +107,54 @@ TEST(AtomicFile, ASignalDuringAWriteRemovesTheTemporaries) {
   EXPECT_EQ(WTERMSIG(status), SIGTERM);
   EXPECT_FALSE(fs::exists(target));
   EXPECT_EQ(temporaries_in(dir), 0u);
+}
+
+// A signal at any moment of a commit: the set of outputs is all old or all
+// new, never a mix. Each trial stages many files, then a second thread sends
+// SIGTERM after a delay spread over the time before, during and after the
+// renames; the process still ends by the signal.
+TEST(AtomicFile, ASignalDuringACommitLeavesTheOldSetOrTheNewOne) {
+  const fs::path dir = fs::path(testing::temp_path("commit-set")).parent_path() / "commit-set";
+  fs::create_directories(dir);
+  constexpr int kFiles = 200, kTrials = 24;
+  std::vector<std::string> paths;
+  for (int i = 0; i < kFiles; ++i) paths.push_back((dir / fmt::format("out-{}.txt", i)).string());
+  int mixed = 0, old_sets = 0, new_sets = 0;
+  for (int trial = 0; trial < kTrials; ++trial) {
+    for (const std::string& p : paths) std::ofstream(p) << "old";
+    const auto delay = std::chrono::microseconds(150 * trial);
+    const pid_t pid = fork();
+    if (pid == 0) {
+      remove_temporaries_on_signals();
+      OutputTransaction t;
+      for (const std::string& p : paths) write_file_atomically(p, "new");
+      std::thread killer([delay] {
+        std::this_thread::sleep_for(delay);
+        kill(getpid(), SIGTERM);
+      });
+      t.commit();
+      killer.join();
+      for (;;) pause();  // the signal ends the process
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status));
+    EXPECT_EQ(WTERMSIG(status), SIGTERM);
+    int fresh = 0;
+    for (const std::string& p : paths) {
+      std::ifstream in(p);
+      std::string text;
+      in >> text;
+      fresh += text == "new";
+    }
+    mixed += fresh != 0 && fresh != kFiles;
+    old_sets += fresh == 0;
+    new_sets += fresh == kFiles;
+    EXPECT_EQ(temporaries_in(dir), 0u) << "trial " << trial;
+  }
+  EXPECT_EQ(mixed, 0) << old_sets << " old sets, " << new_sets << " new sets";
+  EXPECT_GT(old_sets + new_sets, 0);
+  fs::remove_all(dir);
 }
 
 TEST(AtomicFile, ReadingNamesMissingFoldersAndOversizedFiles) {
