@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "aapat/core/filter_catalog.h"
+#include "aapat/core/hash.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/render/adaptive.h"
 #include "aapat/render/renderer.h"
@@ -138,3 +139,16 @@ BENCHMARK(AdaptiveSpiral512)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace aapat
+
+// The reference cache's checksum of an N x N grey reference: what a cached
+// render pays to trust its entry (docs/benchmarks.md compares it with the
+// cached render itself): checksum64, and fnv1a, which it replaced.
+template <uint64_t (*Hash)(std::string_view)>
+void CacheChecksum(benchmark::State& state) {
+  const size_t n = static_cast<size_t>(state.range(0));
+  const std::string values(n * n * sizeof(double), '\x5a');
+  for (auto _ : state) benchmark::DoNotOptimize(Hash(values));
+  state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * values.size()));
+}
+BENCHMARK(CacheChecksum<aapat::checksum64>)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond);
+BENCHMARK(CacheChecksum<aapat::fnv1a>)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond);

@@ -560,6 +560,7 @@ namespace {
 
 TEST(CliRender, SceneFilesViewsSsimAndTheCache) {
   const std::string scene = temp_path("scene.json"), cache = temp_path("cache");
+  fs::remove_all(cache);  // an earlier run's entries (another cache version) are not this run's
   std::ofstream(scene) << R"({"background": 0, "shapes": [
       {"polygon": [[2, 2], [20, 4], [6, 18]], "grey": 1},
       {"circle": [14, 14], "radius": 4, "grey": 0.5}]})";

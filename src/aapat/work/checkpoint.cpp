@@ -22,8 +22,9 @@ namespace {
 // bytes (version 1's covered the bytes alone, so swapped indices passed).
 // Version 3: each set of work items also records the input files read before
 // it began (core/read_file.h), so a changed texture inside a scene file is
-// seen, not only the files named on the command line.
-constexpr std::string_view kMagic = "aapat-checkpoint 3\n";
+// seen, not only the files named on the command line. Version 4: the
+// checksums are true FNV-1a (the offset basis had lost its last digit).
+constexpr std::string_view kMagic = "aapat-checkpoint 4\n";
 constexpr std::string_view kAnyVersion = "aapat-checkpoint ";
 
 uint64_t record_sum(int call, int item, std::string_view bytes) {
