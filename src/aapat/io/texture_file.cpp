@@ -56,7 +56,8 @@ std::shared_ptr<const TexturedSurface> load_texture(const std::string& spec_or_p
   const std::string bytes =
       file ? read_file(spec_or_path, "texture file", kMaxTextureFileBytes) : std::string();
   const std::string key =
-      file ? fmt::format("{}\n{} {:016x}", spec_or_path, bytes.size(), checksum64(bytes)) : spec_or_path;
+      file ? fmt::format("{}\n{} {:016x}", spec_or_path, bytes.size(), checksum64(bytes))
+           : spec_or_path;
   {
     std::lock_guard<std::mutex> guard(lock);
     if (const auto it = loaded.find(key); it != loaded.end()) return it->second;
