@@ -117,8 +117,8 @@ std::string file_digest(std::string_view arg) {
 }
 
 // The command a checkpoint belongs to: the arguments less those that do not
-// change a result (--threads, --checkpoint), each file argument's content
-// digest, and the version.
+// change a result (--threads, --checkpoint, --fresh-checkpoint), each file
+// argument's content digest, and the version.
 std::string fingerprint(int argc, const char* const* argv) {
   std::string text = "aapat " AAPAT_VERSION;
   for (int i = 1; i < argc; ++i) {
@@ -127,7 +127,9 @@ std::string fingerprint(int argc, const char* const* argv) {
       ++i;
       continue;
     }
-    if (arg.starts_with("--threads=") || arg.starts_with("--checkpoint=")) continue;
+    if (arg.starts_with("--threads=") || arg.starts_with("--checkpoint=") ||
+        arg == "--fresh-checkpoint")
+      continue;
     text += " ";
     text += shell_quoted(arg);
     text += file_digest(arg);
@@ -211,17 +213,25 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
       ->check(CLI::Range(0, kMaxThreads));
   // A long run keeps its finished work items, and resumes from them.
   std::string checkpoint_path;
-  app.add_option("--checkpoint", checkpoint_path,
-                 "keep every finished work item in FILE and resume from it when run again with "
-                 "the same command (the same output as a run that never stopped); before the "
-                 "command")
-      ->type_name("FILE")
-      ->check(CLI::Validator(
-          [](const std::string& path) {
-            return path.empty() ? std::string("an empty path names no checkpoint file")
-                                : std::string();
-          },
-          "FILE"));
+  auto* checkpoint_option =
+      app.add_option("--checkpoint", checkpoint_path,
+                     "keep every finished work item in FILE and resume from it when run again with "
+                     "the same command (the same output as a run that never stopped); before the "
+                     "command")
+          ->type_name("FILE")
+          ->check(CLI::Validator(
+              [](const std::string& path) {
+                return path.empty() ? std::string("an empty path names no checkpoint file")
+                                    : std::string();
+              },
+              "FILE"));
+  // A checkpoint that is refused (another command, changed inputs) or that
+  // the user no longer wants is replaced on request, never silently.
+  bool fresh_checkpoint = false;
+  app.add_flag("--fresh-checkpoint", fresh_checkpoint,
+               "with --checkpoint: start afresh and replace FILE, whatever it holds, instead of "
+               "resuming from it or refusing it")
+      ->needs(checkpoint_option);
   std::vector<std::pair<CLI::App*, Action>> commands;
   auto add = [&](auto adder) {
     const size_t before = app.get_subcommands({}).size();
@@ -297,8 +307,11 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
     // A command writes all its files or, when it fails, none.
     OutputTransaction outputs;
     std::unique_ptr<Checkpoint> checkpoint;
-    if (!checkpoint_path.empty() && items.root())
+    if (!checkpoint_path.empty() && items.root()) {
+      if (fresh_checkpoint && std::filesystem::is_regular_file(checkpoint_path))
+        std::filesystem::remove(checkpoint_path);
       checkpoint = std::make_unique<Checkpoint>(checkpoint_path, fingerprint(argc, argv));
+    }
     if (checkpoint && checkpoint->restored() > 0)
       err << fmt::format("aapat: resuming from {}: {} work items done\n", checkpoint_path,
                          checkpoint->restored());

@@ -376,6 +376,14 @@ TEST(Hardening, ACheckpointKnowsItsInputFiles) {
   EXPECT_EQ(run(command).out, first.out);  // unchanged: resumed, the same answer
   write("edited.csv", "0,1\n45,5\n90,1\n");
   expect_error(run(command), kExitError, "belongs to another command");
+  // Asked to, it starts afresh: the answer of a run that never had a checkpoint.
+  std::vector<std::string> fresh = command;
+  fresh.insert(fresh.begin(), "--fresh-checkpoint");
+  const CliRun replaced = run(fresh);
+  ASSERT_EQ(replaced.code, kExitOk) << replaced.err;
+  EXPECT_EQ(replaced.out, run(std::vector<std::string>(command.begin() + 2, command.end())).out);
+  EXPECT_EQ(run(command).out, replaced.out);  // the new checkpoint resumes
+  expect_error(run({"--fresh-checkpoint", "list"}), kExitUsage, "--checkpoint");
   fs::remove(checkpoint);
 }
 
