@@ -21,7 +21,7 @@ double e1_squared_gradient(const Filter& filter, std::span<const double> p,
         spread += w[k] * std::abs(d);
       }
       const double jm = filter.abs_moment(p[j]);
-      dp[j] = w[j] * (2 * filter.step_response(p[j]) - 1 - balance);
+      if (!dp.empty()) dp[j] = w[j] * (2 * filter.step_response(p[j]) - 1 - balance);
       dw[j] = jm - spread;
       e1sq += w[j] * (jm - spread / 2);
     }
@@ -52,7 +52,7 @@ double e1_squared_gradient(const Filter& filter, std::span<const double> p,
       const double balance = below_w - above_w;
       const double spread = p[j] * balance - (below_wp - above_wp);
       const double jm = filter.abs_moment(p[j]);
-      dp[j] = w[j] * (2 * filter.step_response(p[j]) - 1 - balance);
+      if (!dp.empty()) dp[j] = w[j] * (2 * filter.step_response(p[j]) - 1 - balance);
       dw[j] = jm - spread;
       e1sq += w[j] * (jm - spread / 2);
     }

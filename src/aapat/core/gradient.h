@@ -16,7 +16,9 @@
 
 namespace aapat {
 
-// Returns E1^2 and writes dE1^2/dp into dp and dE1^2/dw into dw (both of p's size).
+// Returns E1^2 and writes dE1^2/dp into dp and dE1^2/dw into dw (both of p's
+// size); an empty dp skips the position gradient (a weights-only step needs
+// none, and its step responses are most of the cost), the rest unchanged.
 double e1_squared_gradient(const Filter& filter, std::span<const double> p,
                            std::span<const double> w, std::span<double> dp, std::span<double> dw);
 

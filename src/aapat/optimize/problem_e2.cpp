@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "aapat/core/gradient.h"
@@ -45,21 +46,24 @@ double ProblemE2::e2(const Problem& pr, Workspace& ws) const {
 }
 
 void ProblemE2::add_term_gradient(const Problem& pr, Workspace& ws, int k, int a, double scale,
-                                  Direction& dir) const {
+                                  Direction& dir, bool positions) const {
   const Kernel& ker = ws.kernels[k];
   const size_t n = ker.w.size();
   const double c = metric_.cos(a), s = metric_.sin(a);
   for (size_t j = 0; j < n; ++j) ws.proj[j] = c * ker.y[j] - s * ker.x[j];
-  const double e1sq = e1_squared_gradient(metric_.filter(), {ws.proj.data(), n}, ker.w,
-                                          {ws.dp.data(), n}, {ws.dw.data(), n});
+  const double e1sq = e1_squared_gradient(
+      metric_.filter(), {ws.proj.data(), n}, ker.w,
+      positions ? std::span<double>(ws.dp.data(), n) : std::span<double>(), {ws.dw.data(), n});
   if (e1sq <= 0) return;
   // d(W E1) = W dE1^2 / (2 E1)
   const double f = scale * metric_.acuity().weights[a] / (2 * std::sqrt(e1sq));
   const auto& reads = pr.kernels[k];
   for (size_t j = 0; j < n; ++j) {
-    const Placement& pl = reads[j].place;
-    dir.pos[pl.generator].x += f * pl.sx * (-s * ws.dp[j]);
-    dir.pos[pl.generator].y += f * pl.sy * (c * ws.dp[j]);
+    if (positions) {
+      const Placement& pl = reads[j].place;
+      dir.pos[pl.generator].x += f * pl.sx * (-s * ws.dp[j]);
+      dir.pos[pl.generator].y += f * pl.sy * (c * ws.dp[j]);
+    }
     dir.w[reads[j].weight] += f * ws.dw[j];
   }
 }
@@ -90,9 +94,11 @@ void ProblemE2::heuristic_direction(const Problem& pr, Workspace& ws, double e2,
       } else {
         // The L_p mean's own gradient weighs each term by (W E1)^(p-1).
         const double rel = ws.kernel_e2[k] > 0 ? std::sqrt(v) / ws.kernel_e2[k] : 0;
-        scale = (kernel_near_max ? ratio : 1.0) * std::pow(rel, metric_.norm() - 1);
+        // (p = 2: rel itself, which pow(rel, 1) returns exactly, at a tenth of its cost.)
+        const double p1 = metric_.norm() - 1;
+        scale = (kernel_near_max ? ratio : 1.0) * (p1 == 1 ? rel : std::pow(rel, p1));
       }
-      add_term_gradient(pr, ws, static_cast<int>(k), a, scale, dir);
+      add_term_gradient(pr, ws, static_cast<int>(k), a, scale, dir, move_positions);
     }
   }
   constrain(pr, move_positions, dir);
@@ -118,36 +124,51 @@ void ProblemE2::minimax_direction(const Problem& pr, Workspace& ws, double e2, d
   fill_kernels(pr, ws);
   const int angles = metric_.angle_count();
   const double threshold_sq = t * t * e2 * e2;
-  // Gradients of the active terms, flattened: 2 per generator, 1 per weight.
-  std::vector<std::vector<double>> grads;
+  // Gradients of the active terms, flattened (2 per generator, 1 per weight),
+  // stored by coordinate: column c holds every term's coordinate c, so the
+  // Gram matrix's inner loop runs over terms and vectorizes, while each entry
+  // is still summed over c in order (the same bits as term by term).
+  std::vector<std::array<int, 2>> active;
+  for (size_t k = 0; k < ws.kernels.size(); ++k)
+    for (int a = 0; a < angles; ++a)
+      if (!(ws.values[k * angles + a] < threshold_sq)) active.push_back({static_cast<int>(k), a});
+  const size_t m = active.size(), dim = 2 * pr.generators.size() + pr.weights.size();
+  std::vector<double> by_coordinate(dim * m);
   Direction g;
-  for (size_t k = 0; k < ws.kernels.size(); ++k) {
-    for (int a = 0; a < angles; ++a) {
-      if (ws.values[k * angles + a] < threshold_sq) continue;
-      g.pos.assign(pr.generators.size(), {0, 0});
-      g.w.assign(pr.weights.size(), 0.0);
-      add_term_gradient(pr, ws, static_cast<int>(k), a, 1.0, g);
-      constrain(pr, move_positions, g);
-      std::vector<double> flat;
-      for (const Vec2& v : g.pos) flat.insert(flat.end(), {v.x, v.y});
-      flat.insert(flat.end(), g.w.begin(), g.w.end());
-      grads.push_back(std::move(flat));
+  for (size_t i = 0; i < m; ++i) {
+    g.pos.assign(pr.generators.size(), {0, 0});
+    g.w.assign(pr.weights.size(), 0.0);
+    add_term_gradient(pr, ws, active[i][0], active[i][1], 1.0, g, move_positions);
+    constrain(pr, move_positions, g);
+    for (size_t gi = 0; gi < g.pos.size(); ++gi) {
+      by_coordinate[(2 * gi) * m + i] = g.pos[gi].x;
+      by_coordinate[(2 * gi + 1) * m + i] = g.pos[gi].y;
     }
+    for (size_t wi = 0; wi < g.w.size(); ++wi)
+      by_coordinate[(2 * g.pos.size() + wi) * m + i] = g.w[wi];
   }
-  const size_t m = grads.size(), dim = grads.empty() ? 0 : grads[0].size();
+  const auto grad = [&](size_t term, size_t c) { return by_coordinate[c * m + term]; };
   // Minimum-norm point of the convex hull: Frank-Wolfe on the Gram matrix.
-  std::vector<double> gram(m * m);
-  for (size_t i = 0; i < m; ++i)
-    for (size_t j = 0; j <= i; ++j) {
-      double d = 0;
-      for (size_t c = 0; c < dim; ++c) d += grads[i][c] * grads[j][c];
-      gram[i * m + j] = gram[j * m + i] = d;
+  std::vector<double> gram(m * m), row(m);
+  for (size_t i = 0; i < m; ++i) {
+    std::fill(row.begin(), row.begin() + static_cast<std::ptrdiff_t>(i + 1), 0.0);
+    for (size_t c = 0; c < dim; ++c) {
+      const double* column = by_coordinate.data() + c * m;
+      const double gi = column[i];
+      for (size_t j = 0; j <= i; ++j) row[j] += gi * column[j];
     }
+    for (size_t j = 0; j <= i; ++j) gram[i * m + j] = gram[j * m + i] = row[j];
+  }
   std::vector<double> lambda(m, m ? 1.0 / m : 0.0), q(m);
   for (int it = 0; it < 200 && m > 1; ++it) {
-    for (size_t i = 0; i < m; ++i) {
-      q[i] = 0;
-      for (size_t j = 0; j < m; ++j) q[i] += gram[i * m + j] * lambda[j];
+    // q = G lambda, each q[i] summed over j in order as before (the bits do
+    // not change), but column by column: G is symmetric, so column j is the
+    // contiguous row j, and the inner loop over i vectorizes.
+    std::fill(q.begin(), q.end(), 0.0);
+    for (size_t j = 0; j < m; ++j) {
+      const double lj = lambda[j];
+      const double* column = gram.data() + j * m;
+      for (size_t i = 0; i < m; ++i) q[i] += column[i] * lj;
     }
     const size_t best = std::min_element(q.begin(), q.end()) - q.begin();
     double lq = 0;  // |x|^2 for x = G lambda
@@ -163,11 +184,11 @@ void ProblemE2::minimax_direction(const Problem& pr, Workspace& ws, double e2, d
   dir.w.assign(pr.weights.size(), 0.0);
   for (size_t i = 0; i < m; ++i) {
     for (size_t gi = 0; gi < pr.generators.size(); ++gi) {
-      dir.pos[gi].x += lambda[i] * grads[i][2 * gi];
-      dir.pos[gi].y += lambda[i] * grads[i][2 * gi + 1];
+      dir.pos[gi].x += lambda[i] * grad(i, 2 * gi);
+      dir.pos[gi].y += lambda[i] * grad(i, 2 * gi + 1);
     }
     for (size_t wi = 0; wi < pr.weights.size(); ++wi)
-      dir.w[wi] += lambda[i] * grads[i][2 * pr.generators.size() + wi];
+      dir.w[wi] += lambda[i] * grad(i, 2 * pr.generators.size() + wi);
   }
 }
 

@@ -53,8 +53,9 @@ class ProblemE2 {
   // Adds scale * grad(W E1) at one (kernel, angle) to `dir`, unconstrained
   // (each generator's full 2D gradient, every weight's): the kernels of `ws`
   // as e2() left them.
+  // Without `positions`, only the weights' part is added (the same values).
   void add_term_gradient(const Problem& pr, Workspace& ws, int kernel, int angle, double scale,
-                         Direction& dir) const;
+                         Direction& dir, bool positions = true) const;
 
  private:
   void fill_kernels(const Problem& pr, Workspace& ws) const;
