@@ -167,11 +167,8 @@ void bind_metric(py::module_& m) {
           std::vector<Pattern> list;
           for (const py::handle& h : patterns) list.push_back(to_pattern(h));
           std::vector<double> e2(list.size());
-          interruptible([&] {
-            for (size_t i = 0; i < list.size(); ++i) {
-              throw_if_interrupted();
-              e2[i] = metric.evaluate(list[i]).e2;
-            }
+          interruptible([&] {  // Metric::evaluate stops between patterns
+            for (size_t i = 0; i < list.size(); ++i) e2[i] = metric.evaluate(list[i]).e2;
           });
           return from_vector(e2);
         }
@@ -203,8 +200,7 @@ void bind_metric(py::module_& m) {
         } else {
           list.push_back(to_pattern(patterns));
         }
-        std::vector<PatternEvaluation> evaluations;
-        evaluations = interruptible(
+        const auto evaluations = interruptible(
             [&] { return evaluate_patterns(metric, list, optimized_weights, false); });
         return to_python(eval_json(o, metric.angle_count(), list, evaluations));
       },

@@ -190,8 +190,7 @@ thread count). Returns an aapat.OptimizeResult (.pattern, .e2, .starts, ...).
         s.starts = starts;
         s.seed = seed;
         const auto report = progress_of(progress);
-        Enumeration e;
-        e = interruptible([&] { return enumerate_study(o.metric(), s, report); });
+        const auto e = interruptible([&] { return enumerate_study(o.metric(), s, report); });
         // The rows of `aapat enumerate --json`, each with its best pattern.
         py::list rows = rows_of(enumeration_json(o, s, e));
         for (size_t i = 0; i < e.rows.size(); ++i)

@@ -26,8 +26,7 @@ void bind_points(py::module_& m) {
   m.def(
       "generate",
       [](const std::string& spec, int n, uint64_t seed) {
-        std::vector<Vec2> points;
-        points = interruptible([&] { return generate_points(spec, n, seed); });
+        const auto points = interruptible([&] { return generate_points(spec, n, seed); });
         return from_points(points);
       },
       py::arg("spec"), py::arg("n"), py::arg("seed") = 1,
@@ -63,8 +62,7 @@ void bind_points(py::module_& m) {
       [](const Array& points, const std::string& measures) {
         const std::vector<Vec2> p = to_points(points, "points");
         const DiscrepancyMeasures m = parse_measures(measures);
-        DiscrepancyReport d;
-        d = interruptible([&] { return discrepancy_report(p, m); });
+        const auto d = interruptible([&] { return discrepancy_report(p, m); });
         return values_of(discrepancy_json("", d));
       },
       py::arg("points"), py::arg("measures") = std::string(kDefaultDiscrepancyMeasures),
@@ -103,8 +101,7 @@ l2_mixture**2) and the L2-star not.
           throw Error("spectrum: the sets given are the realizations; leave realizations at 1");
         SpectrumSettings s{size, spec.empty() ? static_cast<int>(sets.size()) : realizations,
                            spec.empty() ? 0 : static_cast<size_t>(n), method == "fast"};
-        SpectrumStudy st;
-        st = interruptible([&] {
+        const auto st = interruptible([&] {
           return spectrum_study(
               [&](int r) { return spec.empty() ? sets[r] : generate_points(spec, n, seed + r); },
               s);
@@ -137,8 +134,7 @@ error_bound (on |P - exact P| at every f != 0; 0 for the exact sum).)doc");
       "spectrum_1d",
       [](const std::vector<std::string>& kinds, int n, uint64_t seed, int frequencies,
          double max_frequency) {
-        std::vector<LineSpectrum> spectra;
-        spectra =
+        const auto spectra =
             interruptible([&] { return line_spectra(kinds, n, seed, frequencies, max_frequency); });
         std::vector<double> f(static_cast<size_t>(frequencies));
         for (int k = 0; k < frequencies; ++k) f[k] = k * max_frequency / frequencies;

@@ -81,8 +81,7 @@ reads it) as an (h, w, 3) array of sRGB values in [0, 1], top row first.)doc");
       "diff",
       [](const Array& reference, const Array& test, double ppd) {
         const ColorImage ref = color_image(reference, "reference"), tst = color_image(test, "test");
-        ImageDiff d;
-        d = interruptible([&] { return image_diff(ref, tst, ppd); });
+        const auto d = interruptible([&] { return image_diff(ref, tst, ppd); });
         py::dict out = values_of(diff_json("", "", d));
         Array map(
             {static_cast<py::ssize_t>(d.flip.height), static_cast<py::ssize_t>(d.flip.width)});
@@ -138,8 +137,7 @@ FLIP as an (h, w) array.
         s.measure = reference;
         s.reference = {reference_samples, reference_filter, reference_seed(seed)};
         const Scene sc = resolve_scene(scene, w, h, texture);
-        RenderResult r;
-        r = interruptible([&] { return render_study(sc, s); });
+        const auto r = interruptible([&] { return render_study(sc, s); });
         // The values of `aapat render --json`, with the images as arrays.
         py::dict d = values_of(render_json(scene, sc, texture, pattern_name, s, r));
         d["image"] = image_array(r.image);
@@ -210,8 +208,7 @@ width), top row first, values in [0, 1]), reference_image, refinement_map
         run.warmup = cut ? 0 : warmup;
         run.reference = {reference_samples, reference_filter, seed};
         std::vector<Image> shown;
-        EngineResult r;
-        r = interruptible([&] {
+        const auto r = interruptible([&] {
           return render_engine_taa(run, s, t, [&](int, const Image& img) {
             if (images) shown.push_back(img);
           });

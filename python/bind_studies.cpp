@@ -14,8 +14,7 @@ void bind_studies(py::module_& m) {
          const py::object& norm) {
         const Objective o = make_objective(objective, filter, acuity, norm);
         const Table3Settings s{patterns, iterations, seed, parse_method(method)};
-        std::vector<Table3Row> rows;
-        rows = interruptible([&] { return table3(o.metric(), s); });
+        const auto rows = interruptible([&] { return table3(o.metric(), s); });
         return rows_of(table3_json(o, s, rows));
       },
       py::kw_only(), py::arg("patterns") = Table3Settings{}.patterns,
@@ -35,8 +34,7 @@ five numbers beside.)doc"));
          const py::object& acuity, const py::object& norm) {
         const Objective o = make_objective(objective, filter, acuity, norm);
         const Figure10Settings s{starts, seed};
-        Figure10 fig;
-        fig = interruptible([&] { return figure10(o.metric(), s); });
+        const auto fig = interruptible([&] { return figure10(o.metric(), s); });
         return rows_of(figure10_json(o, s, fig));
       },
       py::kw_only(), py::arg("starts") = Figure10Settings{}.starts,
@@ -54,8 +52,7 @@ placement, series}.)doc"));
         AnimationSettings a;
         a.width = a.height = size;
         a.frames = frames;
-        std::vector<Table2Row> rows;
-        rows = interruptible([&] { return table2(a); });
+        const auto rows = interruptible([&] { return table2(a); });
         return rows_of(table2_json(a, rows));
       },
       py::kw_only(), py::arg("size") = AnimationSettings{}.width,
@@ -71,8 +68,7 @@ paper: {e2, rmse, max_deviation}}.)doc");
          const py::object& acuity, const py::object& norm) {
         const Objective o = make_objective(objective, filter, acuity, norm);
         const HardwareTableSettings s{starts, seed};
-        std::vector<HardwareTableRow> rows;
-        rows = interruptible([&] { return hardware_table(o.metric(), s); });
+        const auto rows = interruptible([&] { return hardware_table(o.metric(), s); });
         return rows_of(hardware_table_json(o, s, rows));
       },
       py::kw_only(), py::arg("starts") = HardwareTableSettings{}.starts,

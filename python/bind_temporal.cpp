@@ -77,8 +77,7 @@ with pattern=...), a name of the optimized ones ("aapat-taa-8") or a file.)doc")
                                : resolve_sequence(seq.cast<std::string>());
         const Metric metric = make_metric(objective, filter, acuity, norm);
         const Accumulation a = make_accumulation(model, alpha, window, resolve);
-        TemporalReport r;
-        r = interruptible([&] { return evaluate_temporal(s, a, metric); });
+        const auto r = interruptible([&] { return evaluate_temporal(s, a, metric); });
         return to_python(temporal_report_json(s, r));
       },
       py::arg("sequence"), py::kw_only(), py::arg("model") = "ema", py::arg("alpha") = 0.1,
@@ -118,8 +117,7 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
         s.model = make_accumulation(model, alpha, window, "");
         const Objective o = make_objective(objective, filter, acuity, norm);
         const Metric metric = o.metric();
-        SequenceSearchResult r;
-        r = interruptible([&] { return optimize_sequence(s, metric); });
+        const auto r = interruptible([&] { return optimize_sequence(s, metric); });
         py::dict d = to_python(sequence_search_json(s, accumulation_text(s.model), o, r));
         d["result"] = r.best;
         return d;
