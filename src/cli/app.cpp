@@ -100,7 +100,7 @@ std::string shell_quoted(std::string_view arg) {
 }
 
 // What a file argument holds, so that a checkpoint of a command that reads it
-// does not resume after the file changed: its size and FNV-1a hash, or ""
+// does not resume after the file changed: its size and checksum64, or ""
 // for an argument that is not a readable regular file.
 std::string file_digest(std::string_view arg) {
   if (const size_t eq = arg.find('='); arg.starts_with("--") && eq != std::string_view::npos)
@@ -110,7 +110,7 @@ std::string file_digest(std::string_view arg) {
   if (arg.empty() || !std::filesystem::is_regular_file(path, e)) return "";
   try {
     const std::string bytes = read_file(path, "input file");
-    return fmt::format(" [{} bytes, fnv1a {:016x}]", bytes.size(), fnv1a(bytes));
+    return fmt::format(" [{} bytes, checksum {:016x}]", bytes.size(), checksum64(bytes));
   } catch (const Error&) {  // unreadable or too large: the command itself will say so
     return "";
   }

@@ -123,9 +123,7 @@ double combine_over_angles(std::span<const double> values, double norm) {
   if (norm == Metric::kMaxNorm || largest == 0) return std::sqrt(largest);
   // ((1/M) sum v^(p/2))^(1/p) = sqrt(largest) ((1/M) sum (v / largest)^(p/2))^(1/p)
   double sum = 0;
-  // (p = 2: the ratio itself, which pow(x, 1) returns exactly, at a tenth of its cost.)
-  const double half = norm / 2;
-  for (double v : values) sum += half == 1 ? v / largest : std::pow(v / largest, half);
+  for (double v : values) sum += norm_power(v / largest, norm / 2);
   return std::sqrt(largest) * std::pow(sum / static_cast<double>(values.size()), 1.0 / norm);
 }
 

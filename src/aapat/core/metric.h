@@ -15,6 +15,7 @@
 // W(theta) E1(theta) (Eq. 5), or their L_p mean, and max over kernels.
 #pragma once
 
+#include <cmath>
 #include <limits>
 #include <span>
 #include <string>
@@ -52,6 +53,12 @@ double e1_squared_piecewise(const Filter& filter, std::span<const double> p,
 // computed scaled by the largest term so that no p over- or underflows.
 // The one place the metric and the optimizer combine angles.
 double combine_over_angles(std::span<const double> weighted_e1_squared, double norm);
+
+// x^y for the L_p mean's powers: at y = 1 (p = 2) x itself, which pow(x, 1)
+// returns exactly, at a tenth of its cost.
+inline double norm_power(double x, double y) {
+  return y == 1 ? x : std::pow(x, y);
+}
 
 // "inf" for the maximum, else p as written shortest ("2", "2.5").
 std::string format_norm(double norm);

@@ -46,7 +46,7 @@ std::string read_file(const std::string& path, std::string_view what, size_t max
   std::string bytes = s.str();
   if (note_input) {
     const std::lock_guard<std::mutex> lock(inputs_mutex);
-    inputs()[path] = {path, bytes.size(), fnv1a(bytes)};
+    inputs()[path] = {path, bytes.size(), checksum64(bytes)};
   }
   return bytes;
 }

@@ -23,13 +23,13 @@ std::string read_file(const std::string& path, std::string_view what,
                       size_t max_bytes = kMaxInputFileBytes, bool note_input = true);
 
 // Every input file this process has read, by path (the last read of each),
-// with its size and FNV-1a hash: what a checkpoint binds itself to
+// with its size and checksum64: what a checkpoint binds itself to
 // (work/checkpoint.h), however the command reached the file (a texture named
 // inside a scene file, a model's images).
 struct InputRead {
   std::string path;
   size_t bytes = 0;
-  uint64_t fnv1a = 0;
+  uint64_t sum = 0;
   friend bool operator==(const InputRead&, const InputRead&) = default;
 };
 std::vector<InputRead> inputs_read();

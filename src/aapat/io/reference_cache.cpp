@@ -20,7 +20,7 @@ namespace {
 
 // Version 2 adds the values' checksum: a file whose values were changed after
 // it was written is rendered afresh, not trusted. Version 3 takes it with
-// checksum64 (fnv1a cost 5% of a cached 1024² render; this, 0.5%).
+// checksum64 (fnv1a cost 5% of a cached 1024² render; this, 0.3%).
 constexpr std::string_view kMagic = "aapat-reference 3\n";
 
 // The line between the key and the values: their checksum.

@@ -94,9 +94,7 @@ void ProblemE2::heuristic_direction(const Problem& pr, Workspace& ws, double e2,
       } else {
         // The L_p mean's own gradient weighs each term by (W E1)^(p-1).
         const double rel = ws.kernel_e2[k] > 0 ? std::sqrt(v) / ws.kernel_e2[k] : 0;
-        // (p = 2: rel itself, which pow(rel, 1) returns exactly, at a tenth of its cost.)
-        const double p1 = metric_.norm() - 1;
-        scale = (kernel_near_max ? ratio : 1.0) * (p1 == 1 ? rel : std::pow(rel, p1));
+        scale = (kernel_near_max ? ratio : 1.0) * norm_power(rel, metric_.norm() - 1);
       }
       add_term_gradient(pr, ws, static_cast<int>(k), a, scale, dir, move_positions);
     }

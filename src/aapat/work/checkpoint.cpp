@@ -23,7 +23,8 @@ namespace {
 // Version 3: each set of work items also records the input files read before
 // it began (core/read_file.h), so a changed texture inside a scene file is
 // seen, not only the files named on the command line. Version 4: the
-// checksums are true FNV-1a (the offset basis had lost its last digit).
+// record checksums are true FNV-1a (the offset basis had lost its last
+// digit), and the input files' contents are summed with checksum64.
 constexpr std::string_view kMagic = "aapat-checkpoint 4\n";
 constexpr std::string_view kAnyVersion = "aapat-checkpoint ";
 
@@ -38,12 +39,12 @@ std::string one_line(std::string text) {
   return text;
 }
 
-// "PATH BYTES FNV1A" of every input read, one after another, on one line.
+// "PATH BYTES SUM" of every input read, one after another, on one line.
 std::string inputs_text() {
   std::string text;
   for (const InputRead& r : inputs_read())
-    text += fmt::format("{}{} {} {:016x}", text.empty() ? "" : "\t", one_line(r.path), r.bytes,
-                        r.fnv1a);
+    text +=
+        fmt::format("{}{} {} {:016x}", text.empty() ? "" : "\t", one_line(r.path), r.bytes, r.sum);
   return text;
 }
 
