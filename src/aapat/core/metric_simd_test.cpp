@@ -9,24 +9,12 @@
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/metric.h"
+#include "testing/every_simd_path.h"
 
 namespace aapat {
 namespace {
 
-// Every code path this machine runs, each pinned in turn (the pin lifted at
-// the end, whatever happens).
-class EveryPath {
- public:
-  ~EveryPath() { pin_simd_target(0); }
-  template <class F>
-  void run(F&& test) {
-    for (const int64_t target : simd_targets_here()) {
-      pin_simd_target(target);
-      SCOPED_TRACE(simd_target_name(target));
-      test();
-    }
-  }
-};
+using testing::EveryPath;
 
 Kernel random_kernel(std::mt19937_64& rng, size_t n) {
   std::uniform_real_distribution<double> u(-1.5, 1.5), w(0.1, 1);

@@ -26,6 +26,8 @@ RunResult descend(const ProblemE2& objective, Problem& problem, const OptimizerS
   Workspace ws;
   Direction dir;
   RunResult r = begin_run(objective, problem, s.nonnegative_weights, ws);
+  // Positions that stay put: their per-angle tables once (held_positions.h).
+  if (s.weights_only) ws.held.hold(objective.metric(), ws.kernels);
   double e2 = r.initial_e2;
   Problem trial = problem, best = problem;
   double best_e2 = e2, window_start = e2;

@@ -8,6 +8,7 @@
 
 #include "aapat/core/gradient.h"
 #include "aapat/core/interrupt.h"
+#include "aapat/optimize/min_norm_point.h"
 
 namespace aapat {
 
@@ -31,6 +32,11 @@ void ProblemE2::fill_kernels(const Problem& pr, Workspace& ws) const {
   ws.proj.resize(largest);
   ws.dp.resize(largest);
   ws.dw.resize(largest);
+  ws.held_kernel = -1;  // the weights may have changed
+  // Which kernels still have the held positions: checked once per load.
+  ws.held_now.assign(pr.kernels.size(), false);
+  if (ws.held.held())
+    for (size_t k = 0; k < pr.kernels.size(); ++k) ws.held_now[k] = ws.held.holds(k, ws.kernels[k]);
 }
 
 double ProblemE2::e2(const Problem& pr, Workspace& ws) const {
@@ -39,9 +45,15 @@ double ProblemE2::e2(const Problem& pr, Workspace& ws) const {
   const int angles = metric_.angle_count();
   ws.values.resize(ws.kernels.size() * angles);
   ws.kernel_e2.resize(ws.kernels.size());
-  for (size_t k = 0; k < ws.kernels.size(); ++k)
-    ws.kernel_e2[k] = metric_.kernel_terms(
-        ws.kernels[k], ws.proj, {ws.values.data() + k * angles, static_cast<size_t>(angles)});
+  for (size_t k = 0; k < ws.kernels.size(); ++k) {
+    const std::span<double> values{ws.values.data() + k * angles, static_cast<size_t>(angles)};
+    if (ws.held_now[k]) {
+      ws.held.weighted_e1_squared(k, ws.kernels[k].w, values);
+      ws.kernel_e2[k] = combine_over_angles(values, metric_.norm());
+    } else {
+      ws.kernel_e2[k] = metric_.kernel_terms(ws.kernels[k], ws.proj, values);
+    }
+  }
   return combine_over_kernels(ws.kernel_e2).e2;
 }
 
@@ -49,6 +61,10 @@ void ProblemE2::add_term_gradient(const Problem& pr, Workspace& ws, int k, int a
                                   Direction& dir, bool positions) const {
   const Kernel& ker = ws.kernels[k];
   const size_t n = ker.w.size();
+  if (!positions && ws.held_now[k]) {
+    add_held_weight_gradient(pr, ws, k, a, scale, dir);
+    return;
+  }
   const double c = metric_.cos(a), s = metric_.sin(a);
   for (size_t j = 0; j < n; ++j) ws.proj[j] = c * ker.y[j] - s * ker.x[j];
   const double e1sq = e1_squared_gradient(
@@ -66,6 +82,25 @@ void ProblemE2::add_term_gradient(const Problem& pr, Workspace& ws, int k, int a
     }
     dir.w[reads[j].weight] += f * ws.dw[j];
   }
+}
+
+void ProblemE2::add_held_weight_gradient(const Problem& pr, Workspace& ws, int k, int a,
+                                         double scale, Direction& dir) const {
+  // Every angle of kernel k at once, then this angle's share, added as
+  // add_term_gradient adds it.
+  const size_t angles = static_cast<size_t>(metric_.angle_count());
+  if (ws.held_kernel != k) {
+    ws.held_e1sq.resize(angles);
+    ws.held.e1_squared_weight_gradient(static_cast<size_t>(k), ws.kernels[k].w, ws.held_e1sq,
+                                       ws.held_dw);
+    ws.held_kernel = k;
+  }
+  const double e1sq = ws.held_e1sq[a];
+  if (e1sq <= 0) return;
+  const double f = scale * metric_.acuity().weights[a] / (2 * std::sqrt(e1sq));
+  const auto& reads = pr.kernels[k];
+  for (size_t j = 0; j < reads.size(); ++j)
+    dir.w[reads[j].weight] += f * ws.held_dw[j * ws.held.stride() + static_cast<size_t>(a)];
 }
 
 void ProblemE2::term_gradient(const Problem& pr, Workspace& ws, int kernel, int angle,
@@ -147,37 +182,19 @@ void ProblemE2::minimax_direction(const Problem& pr, Workspace& ws, double e2, d
   }
   const auto grad = [&](size_t term, size_t c) { return by_coordinate[c * m + term]; };
   // Minimum-norm point of the convex hull: Frank-Wolfe on the Gram matrix.
+  // Without positions their columns are zeros, which add nothing: skipped.
+  const size_t first = move_positions ? 0 : 2 * pr.generators.size();
   std::vector<double> gram(m * m), row(m);
   for (size_t i = 0; i < m; ++i) {
     std::fill(row.begin(), row.begin() + static_cast<std::ptrdiff_t>(i + 1), 0.0);
-    for (size_t c = 0; c < dim; ++c) {
+    for (size_t c = first; c < dim; ++c) {
       const double* column = by_coordinate.data() + c * m;
       const double gi = column[i];
       for (size_t j = 0; j <= i; ++j) row[j] += gi * column[j];
     }
     for (size_t j = 0; j <= i; ++j) gram[i * m + j] = gram[j * m + i] = row[j];
   }
-  std::vector<double> lambda(m, m ? 1.0 / m : 0.0), q(m);
-  for (int it = 0; it < 200 && m > 1; ++it) {
-    // q = G lambda, each q[i] summed over j in order as before (the bits do
-    // not change), but column by column: G is symmetric, so column j is the
-    // contiguous row j, and the inner loop over i vectorizes.
-    std::fill(q.begin(), q.end(), 0.0);
-    for (size_t j = 0; j < m; ++j) {
-      const double lj = lambda[j];
-      const double* column = gram.data() + j * m;
-      for (size_t i = 0; i < m; ++i) q[i] += column[i] * lj;
-    }
-    const size_t best = std::min_element(q.begin(), q.end()) - q.begin();
-    double lq = 0;  // |x|^2 for x = G lambda
-    for (size_t i = 0; i < m; ++i) lq += lambda[i] * q[i];
-    // Exact line search from x towards vertex `best`.
-    const double num = lq - q[best], den = lq - 2 * q[best] + gram[best * m + best];
-    if (num <= 1e-18 * std::max(1.0, lq) || den <= 0) break;
-    const double gamma = std::min(1.0, num / den);
-    for (double& l : lambda) l *= 1 - gamma;
-    lambda[best] += gamma;
-  }
+  const std::vector<double> lambda = min_norm_combination(gram, m);
   dir.pos.assign(pr.generators.size(), {0, 0});
   dir.w.assign(pr.weights.size(), 0.0);
   for (size_t i = 0; i < m; ++i) {

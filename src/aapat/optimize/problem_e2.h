@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "aapat/core/metric.h"
+#include "aapat/optimize/held_positions.h"
 #include "aapat/optimize/problem.h"
 #include "aapat/optimize/settings.h"
 
@@ -16,6 +17,12 @@ struct Workspace {
   std::vector<double> proj, dp, dw;
   std::vector<double> values;  // W^2 E1^2 per (kernel, angle)
   std::vector<double> kernel_e2;
+  // A weights-only run's positions (descend holds them), and the held
+  // gradient of kernel held_kernel at the current weights (-1: none yet).
+  HeldPositions held;
+  std::vector<bool> held_now;  // per kernel: its positions are the held ones
+  int held_kernel = -1;
+  std::vector<double> held_e1sq, held_dw;
 };
 
 // A direction in parameter space: one 2D step per generator, one per weight.
@@ -59,6 +66,9 @@ class ProblemE2 {
 
  private:
   void fill_kernels(const Problem& pr, Workspace& ws) const;
+  // add_term_gradient's weights from the held positions' tables.
+  void add_held_weight_gradient(const Problem& pr, Workspace& ws, int k, int a, double scale,
+                                Direction& dir) const;
   void constrain(const Problem& pr, bool move_positions, Direction& dir) const;
 
   const Metric& metric_;
