@@ -1,7 +1,10 @@
 #include "aapat/optimize/lattice_search.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "aapat/core/lattice.h"
 #include "aapat/optimize/descent.h"
@@ -102,17 +105,29 @@ LatticeRun lattice_descent(const Metric& metric, Problem& problem, int steps,
 
 LatticeSearch lattice_search(const Metric& metric, int starts,
                              const std::function<Problem(int)>& make_start, int steps,
-                             const OptimizerSettings& settings, bool y_down) {
+                             const OptimizerSettings& settings, bool y_down,
+                             const ItemsProgress& progress) {
   // Each start is a work item (work/work_items.h); the winner is rebuilt
   // from its start and its values.
-  const std::vector<std::string> results = run_work_items(starts, [&](int i) {
-    Problem problem = make_start(i);
-    const LatticeRun run = lattice_descent(metric, problem, steps, settings, y_down);
-    ByteWriter w;
-    w.put(run.snapped_e2).put(run.final_e2).put<int32_t>(run.moves);
-    put_problem_values(w, problem);
-    return w.take();
-  });
+  double best_so_far = std::numeric_limits<double>::infinity();
+  const auto report = [&](int done, int total, const std::string& result) {
+    if (!progress) return;
+    ByteReader reader(result);
+    reader.get<double>();  // snapped E2
+    best_so_far = std::min(best_so_far, reader.get<double>());
+    progress(done, total, fmt::format("lattice: best E2 {:.4f}", best_so_far));
+  };
+  const std::vector<std::string> results = run_work_items(
+      starts,
+      [&](int i) {
+        Problem problem = make_start(i);
+        const LatticeRun run = lattice_descent(metric, problem, steps, settings, y_down);
+        ByteWriter w;
+        w.put(run.snapped_e2).put(run.final_e2).put<int32_t>(run.moves);
+        put_problem_values(w, problem);
+        return w.take();
+      },
+      report);
   LatticeSearch r;
   r.starts = starts;
   for (int i = 0; i < starts; ++i) {
@@ -134,7 +149,7 @@ LatticeSearch lattice_search(const Metric& metric, int starts,
 LatticeSearch lattice_search_from(const Metric& metric, const Problem& continuous_best,
                                   const std::function<Problem(int)>& make_seed, int starts,
                                   uint64_t seed, int steps, const OptimizerSettings& settings,
-                                  bool y_down) {
+                                  bool y_down, const ItemsProgress& progress) {
   return lattice_search(
       metric, std::clamp(starts, 1, 32),
       [&](int i) {
@@ -142,7 +157,7 @@ LatticeSearch lattice_search_from(const Metric& metric, const Problem& continuou
         auto rng = start_rng(seed + 7, static_cast<uint64_t>(i));
         return i % 2 == 1 ? perturbed(continuous_best, 0.15, rng) : make_seed(i);
       },
-      steps, settings, y_down);
+      steps, settings, y_down, progress);
 }
 
 }  // namespace aapat

@@ -12,6 +12,7 @@
 #include "aapat/core/metric.h"
 #include "aapat/optimize/problem.h"
 #include "aapat/optimize/settings.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 
@@ -37,9 +38,11 @@ struct LatticeSearch {
 
 // lattice_descent from make_start(i), i = 0..starts-1, in parallel; the
 // lowest E2 wins (ties: the lowest start), whatever the thread count.
+// progress: (starts done, starts, "lattice: best E2 ...") as each finishes.
 LatticeSearch lattice_search(const Metric& metric, int starts,
                              const std::function<Problem(int)>& make_start, int steps,
-                             const OptimizerSettings& settings, bool y_down = true);
+                             const OptimizerSettings& settings, bool y_down = true,
+                             const ItemsProgress& progress = {});
 
 // After a continuous search: up to 32 lattice starts, from its best (start
 // 0), from kicks of up to 0.15 pixel around it (odd starts) and from fresh
@@ -47,6 +50,6 @@ LatticeSearch lattice_search(const Metric& metric, int starts,
 LatticeSearch lattice_search_from(const Metric& metric, const Problem& continuous_best,
                                   const std::function<Problem(int)>& make_seed, int starts,
                                   uint64_t seed, int steps, const OptimizerSettings& settings,
-                                  bool y_down = true);
+                                  bool y_down = true, const ItemsProgress& progress = {});
 
 }  // namespace aapat

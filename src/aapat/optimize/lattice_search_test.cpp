@@ -1,5 +1,6 @@
 #include "aapat/optimize/lattice_search.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -73,6 +74,27 @@ TEST(LatticeSearch, SameResultForAnyThreadCountAndStartOrder) {
   EXPECT_EQ(a.run.final_e2, b.run.final_e2);
   // msaa-4 is the rotated grid, E2 0.4390; the lattice search does not end above it.
   EXPECT_LE(a.run.final_e2, 0.4391);
+}
+
+// Progress: one report per start, counting up to all of them, the last
+// naming the winner's E2 as the output prints it.
+TEST(LatticeSearch, ReportsEachFinishedStartAndTheBestE2) {
+  const Metric metric(make_filter("mitchell"), laine_aila_acuity());
+  const Problem start = problem_from_pattern(catalog_pattern("msaa-4"));
+  auto make = [&](int i) {
+    std::mt19937_64 rng(static_cast<uint64_t>(i) + 1);
+    return i == 0 ? start : perturbed(start, 0.2, rng);
+  };
+  std::vector<int> done;
+  std::string last;
+  const LatticeSearch r = lattice_search(metric, 5, make, 16, OptimizerSettings{}, true,
+                                         [&](int d, int total, const std::string& note) {
+                                           EXPECT_EQ(total, 5);
+                                           done.push_back(d);
+                                           last = note;
+                                         });
+  EXPECT_EQ(done, (std::vector<int>{1, 2, 3, 4, 5}));
+  EXPECT_EQ(last, fmt::format("lattice: best E2 {:.4f}", r.run.final_e2));
 }
 
 }  // namespace

@@ -48,7 +48,8 @@ std::vector<std::string> placements_of(const OptimizeRunSettings& s) {
 
 // From the continuous optimum, kicks around it, and fresh seeds, all snapped.
 LatticeStage lattice_stage(const Metric& metric, const OptimizeRunSettings& s,
-                           MultiStartResult& result, const SeedFunction& make_seed, int starts) {
+                           MultiStartResult& result, const SeedFunction& make_seed, int starts,
+                           const StudyProgress& progress) {
   const ApiProfile* profile = s.api.empty() ? nullptr : &api_profile(s.api);
   LatticeStage stage;
   stage.steps = s.lattice;
@@ -60,7 +61,7 @@ LatticeStage lattice_stage(const Metric& metric, const OptimizeRunSettings& s,
   }
   const LatticeSearch lat =
       lattice_search_from(metric, result.best_problem, make_seed, starts, s.seed, s.lattice,
-                          s.optimizer, profile ? profile->y_down : true);
+                          s.optimizer, profile ? profile->y_down : true, progress);
   result.best_problem = lat.best;
   stage.continuous_e2 = result.starts[result.best].run.final_e2;
   stage.snapped_e2 = lat.run.snapped_e2;
@@ -209,7 +210,8 @@ OptimizeRunResult optimize_run(const Metric& metric, const OptimizeRunSettings& 
   if (out.search.best < 0) throw Error("optimize: the time limit passed before any start ran");
   const StartRecord& best = out.best_start();
 
-  if (s.lattice > 0) out.lattice = lattice_stage(metric, s, out.search, make_seed, starts);
+  if (s.lattice > 0)
+    out.lattice = lattice_stage(metric, s, out.search, make_seed, starts, progress);
 
   Pattern& p = out.best;
   p = pattern_of(out.search.best_problem);
