@@ -1,6 +1,7 @@
 #include "aapat/core/gradient.h"
 
 #include "aapat/core/metric.h"
+#include "aapat/core/metric_simd.h"
 
 #include <algorithm>
 #include <array>
@@ -9,35 +10,49 @@
 #include <vector>
 
 namespace aapat {
+
+void sort_samples(std::span<const double> p, std::vector<size_t>& order) {
+  order.resize(p.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return p[a] < p[b]; });
+}
+
 double e1_squared_gradient(const Filter& filter, std::span<const double> p,
                            std::span<const double> w, std::span<double> dp, std::span<double> dw) {
+  // The filter's values at the samples, then the sums (scratch kept per thread).
+  thread_local std::vector<double> moment, step;
+  thread_local std::vector<size_t> order;
   const size_t n = p.size();
-  double e1sq = -filter.half_mean_distance();
+  moment.resize(n);
+  for (size_t j = 0; j < n; ++j) moment[j] = filter.abs_moment(p[j]);
+  step.resize(dp.empty() ? 0 : n);
+  for (size_t j = 0; j < step.size(); ++j) step[j] = filter.step_response(p[j]);
+  if (n > kPairwiseLimit) sort_samples(p, order);
+  const std::span<const size_t> sorted =
+      n > kPairwiseLimit ? std::span<const size_t>(order) : std::span<const size_t>();
+  return e1_squared_gradient(filter.half_mean_distance(), {p, moment, step, sorted}, w, dp, dw);
+}
+
+double e1_squared_gradient(double half_mean_distance, const HeldSamples& at,
+                           std::span<const double> w, std::span<double> dp, std::span<double> dw) {
+  const std::span<const double> p = at.p;
+  const size_t n = p.size();
+  double e1sq = -half_mean_distance;
   if (n <= kPairwiseLimit) {
     // balance_j = sum_k w_k sign(p_j - p_k), spread_j = sum_k w_k |p_j - p_k|,
-    // each summed over k in order, all j at once (the inner loop over j
-    // vectorizes; the sums are the same bits as one j at a time).
-    std::array<double, kPairwiseLimit> balance{}, spread{};
-    for (size_t k = 0; k < n; ++k) {
-      const double pk = p[k], wk = w[k];
-      for (size_t j = 0; j < n; ++j) {
-        const double d = p[j] - pk;
-        balance[j] += d > 0 ? wk : d < 0 ? -wk : 0.0;
-        spread[j] += wk * std::abs(d);
-      }
-    }
+    // each summed over k in order, all j at once on SIMD lanes.
+    std::array<double, kPairwiseLimit> balance, spread;
+    pairwise_balance_spread(p.data(), w.data(), n, balance.data(), spread.data());
     for (size_t j = 0; j < n; ++j) {
-      const double jm = filter.abs_moment(p[j]);
-      if (!dp.empty()) dp[j] = w[j] * (2 * filter.step_response(p[j]) - 1 - balance[j]);
+      const double jm = at.moment[j];
+      if (!dp.empty()) dp[j] = w[j] * (2 * at.step[j] - 1 - balance[j]);
       dw[j] = jm - spread[j];
       e1sq += w[j] * (jm - spread[j] / 2);
     }
     return std::max(0.0, e1sq);
   }
   // Sorted: prefix sums of weight and weight * position give both sums in O(N log N).
-  std::vector<size_t> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return p[a] < p[b]; });
+  const std::span<const size_t> order = at.order;
   double total_w = 0, total_wp = 0;
   for (size_t j = 0; j < n; ++j) {
     total_w += w[j];
@@ -58,8 +73,8 @@ double e1_squared_gradient(const Filter& filter, std::span<const double> p,
       const size_t j = order[g];
       const double balance = below_w - above_w;
       const double spread = p[j] * balance - (below_wp - above_wp);
-      const double jm = filter.abs_moment(p[j]);
-      if (!dp.empty()) dp[j] = w[j] * (2 * filter.step_response(p[j]) - 1 - balance);
+      const double jm = at.moment[j];
+      if (!dp.empty()) dp[j] = w[j] * (2 * at.step[j] - 1 - balance);
       dw[j] = jm - spread;
       e1sq += w[j] * (jm - spread / 2);
     }

@@ -10,7 +10,9 @@
 // the optimizer steps along. A tie p_j = p_k takes the sign 0 (a subgradient).
 #pragma once
 
+#include <cstddef>
 #include <span>
+#include <vector>
 
 #include "aapat/core/filter.h"
 
@@ -21,5 +23,19 @@ namespace aapat {
 // none, and its step responses are most of the cost), the rest unchanged.
 double e1_squared_gradient(const Filter& filter, std::span<const double> p,
                            std::span<const double> w, std::span<double> dp, std::span<double> dw);
+
+// The same with the filter's values at the samples given, for positions held
+// while the weights vary (a sequence's phases at one angle): moment[j] =
+// J(p_j), step[j] = g0(p_j) (not read when dp is empty) and, past
+// kPairwiseLimit samples, `order`, the samples sorted by p (std::sort of
+// 0..n-1 by p, as e1_squared_gradient sorts). The same bits as above.
+struct HeldSamples {
+  std::span<const double> p, moment, step;
+  std::span<const size_t> order;
+};
+double e1_squared_gradient(double half_mean_distance, const HeldSamples& at,
+                           std::span<const double> w, std::span<double> dp, std::span<double> dw);
+// Fills `order` with 0..n-1 sorted by p, as the gradient's sorted path needs.
+void sort_samples(std::span<const double> p, std::vector<size_t>& order);
 
 }  // namespace aapat

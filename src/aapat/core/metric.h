@@ -54,10 +54,10 @@ double e1_squared_piecewise(const Filter& filter, std::span<const double> p,
 // The one place the metric and the optimizer combine angles.
 double combine_over_angles(std::span<const double> weighted_e1_squared, double norm);
 
-// x^y for the L_p mean's powers: at y = 1 (p = 2) x itself, which pow(x, 1)
-// returns exactly, at a tenth of its cost.
+// x^y for the L_p mean's powers and their derivatives: at y = 1 (p = 2) x
+// itself and at y = 0 one, which pow returns exactly, at a tenth of its cost.
 inline double norm_power(double x, double y) {
-  return y == 1 ? x : std::pow(x, y);
+  return y == 1 ? x : y == 0 ? 1.0 : std::pow(x, y);
 }
 
 // "inf" for the maximum, else p as written shortest ("2", "2.5").

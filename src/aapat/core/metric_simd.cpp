@@ -204,6 +204,31 @@ void PairwiseWeightedE1Squared(const Filter::AbsMomentTable& j, double half_mean
   });
 }
 
+// The pair sums of e1_squared_gradient (core/gradient.cpp), lanes over j:
+// balance_j = sum_k w_k sign(p_j - p_k), spread_j = sum_k w_k |p_j - p_k|,
+// each summed over k in order.
+void PairwiseBalanceSpread(const double* p, const double* w, size_t n, double* balance,
+                           double* spread) {
+  const D d;
+  const size_t lanes = hn::Lanes(d);
+  static_assert(kPairwiseLimit % kMaxLanes == 0, "whole vectors of samples");
+  HWY_ALIGN double padded[kPairwiseLimit] = {};
+  std::memcpy(padded, p, n * sizeof(double));
+  const V zero = hn::Zero(d);
+  for (size_t j = 0; j < n; j += lanes) {
+    const V pj = hn::Load(d, padded + j);
+    V b = zero, s = zero;
+    for (size_t k = 0; k < n; ++k) {
+      const V diff = hn::Sub(pj, hn::Set(d, p[k])), wk = hn::Set(d, w[k]);
+      b = hn::Add(b, hn::IfThenElse(hn::Gt(diff, zero), wk,
+                                    hn::IfThenElse(hn::Lt(diff, zero), hn::Neg(wk), zero)));
+      s = hn::Add(s, hn::Mul(wk, hn::Abs(diff)));
+    }
+    hn::StoreU(b, d, balance + j);
+    hn::StoreU(s, d, spread + j);
+  }
+}
+
 // J of n values by `abs_moment`.
 template <class AbsMomentOfP>
 void AbsMomentBlocks(D d, AbsMomentOfP abs_moment, const double* p, size_t n, double* out) {
@@ -232,6 +257,7 @@ namespace aapat {
 
 HWY_EXPORT(PairwiseWeightedE1Squared);
 HWY_EXPORT(AbsMoments);
+HWY_EXPORT(PairwiseBalanceSpread);
 
 void pairwise_weighted_e1_squared(const Filter::AbsMomentTable& j, double half_mean_distance,
                                   const AngleTable& angles, const double* x, const double* y,
@@ -242,6 +268,11 @@ void pairwise_weighted_e1_squared(const Filter::AbsMomentTable& j, double half_m
 
 void abs_moments(const Filter::AbsMomentTable& j, const double* p, size_t n, double* out) {
   HWY_DYNAMIC_DISPATCH(AbsMoments)(j, p, n, out);
+}
+
+void pairwise_balance_spread(const double* p, const double* w, size_t n, double* balance,
+                             double* spread) {
+  HWY_DYNAMIC_DISPATCH(PairwiseBalanceSpread)(p, w, n, balance, spread);
 }
 
 // A build with one Highway target (the WebAssembly build's HWY_COMPILE_ONLY_EMU128)

@@ -34,6 +34,12 @@ void pairwise_weighted_e1_squared(const Filter::AbsMomentTable& j, double half_m
 // J(p_i) for every p into out: Filter::abs_moment, the lanes running over p.
 void abs_moments(const Filter::AbsMomentTable& j, const double* p, size_t n, double* out);
 
+// For n <= kPairwiseLimit samples, each j's balance_j = sum_k w_k sign(p_j -
+// p_k) and spread_j = sum_k w_k |p_j - p_k|, summed over k in order, the lanes
+// running over j; balance and spread have room for kPairwiseLimit values.
+void pairwise_balance_spread(const double* p, const double* w, size_t n, double* balance,
+                             double* spread);
+
 // The code path that runs here ("AVX3", "AVX2", "EMU128", ...).
 std::string simd_target();
 // Every path compiled into this binary that this processor can run, best

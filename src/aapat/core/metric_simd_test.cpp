@@ -107,6 +107,36 @@ TEST(MetricSimd, AbsMomentsAreFilterAbsMomentBitForBit) {
   }
 }
 
+// The gradient's pair sums: the scalar loop's bits on every path, ties (sign
+// 0) and negative weights included, for every size of the pair form.
+TEST(MetricSimd, PairSumsAreTheScalarLoopsBitForBit) {
+  EveryPath paths;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  for (size_t n = 1; n <= kPairwiseLimit; ++n) {
+    std::vector<double> p(n), w(n);
+    for (size_t j = 0; j < n; ++j) {
+      p[j] = j % 5 == 4 ? p[j - 1] : u(rng);  // some ties
+      w[j] = u(rng);
+    }
+    std::vector<double> balance(kPairwiseLimit, 0.0), spread(kPairwiseLimit, 0.0);
+    for (size_t k = 0; k < n; ++k)
+      for (size_t j = 0; j < n; ++j) {
+        const double d = p[j] - p[k];
+        balance[j] += d > 0 ? w[k] : d < 0 ? -w[k] : 0.0;
+        spread[j] += w[k] * std::abs(d);
+      }
+    paths.run([&] {
+      std::vector<double> b(kPairwiseLimit), s(kPairwiseLimit);
+      pairwise_balance_spread(p.data(), w.data(), n, b.data(), s.data());
+      for (size_t j = 0; j < n; ++j) {
+        EXPECT_EQ(b[j], balance[j]) << n << " " << j;
+        EXPECT_EQ(s[j], spread[j]) << n << " " << j;
+      }
+    });
+  }
+}
+
 TEST(MetricSimd, NamesThePathItRuns) {
   const std::vector<int64_t> targets = simd_targets_here();
   ASSERT_FALSE(targets.empty());

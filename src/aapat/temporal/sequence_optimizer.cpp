@@ -44,7 +44,13 @@ struct Epigraph {
   std::vector<double> sample_w;          // each sample's weight within its frame (sum 1 per frame)
   std::vector<std::vector<double>> dv;   // per angle, d(term)/dp per sample
   std::vector<std::vector<double>> dvw;  // per angle, d(term)/d(sample weight)
-  std::vector<size_t> order;
+  std::vector<double> gx, gy;            // a row's position gradient, x and y apart
+  std::vector<double> phase_of_sample;   // u_f of each sample's frame f at one phase
+  // The positions' share, the same for every phase at one angle, computed
+  // once per evaluation: projections, J, g0 and the sorted order per angle.
+  std::vector<double> projected, moment, step;  // [angle * samples + j]
+  std::vector<std::vector<size_t>> sorted;      // per angle
+  int angle = 0;                                // the angle project() chose
   NloptGuard guard;
 
   Epigraph(const Metric& m, const SequenceSearch& s)
@@ -58,9 +64,12 @@ struct Epigraph {
         lambda(s.flicker_weight) {
     for (int k = 0; k < frames; ++k) phase.push_back(phase_weights(s.model, frames, k, true));
     const size_t n = static_cast<size_t>(samples), angles = static_cast<size_t>(m.angle_count());
-    p.resize(n), w.resize(n), dp.resize(n), dw.resize(n), dq.resize(n), order.resize(n);
+    p.resize(n), w.resize(n), dp.resize(n), dw.resize(n), dq.resize(n), gx.resize(n), gy.resize(n);
+    phase_of_sample.resize(n);
     sample_w.assign(n, 1.0 / per_frame);
     values.resize(angles);
+    projected.resize(angles * n), moment.resize(angles * n), step.resize(angles * n);
+    sorted.resize(angles);
     dv.assign(angles, std::vector<double>(n));
     dvw.assign(angles, std::vector<double>(n));
   }
@@ -96,9 +105,33 @@ struct Epigraph {
   size_t e2_bound(int k) const { return s_index() + (mean_e2 ? static_cast<size_t>(k) : 0); }
   size_t flicker_bound(int k) const { return s_index() + e2_bounds() + static_cast<size_t>(k); }
 
-  void project(const double* x, int angle) {
-    const double nx = -metric.sin(angle), ny = metric.cos(angle);
-    for (int j = 0; j < samples; ++j) p[static_cast<size_t>(j)] = x[2 * j] * nx + x[2 * j + 1] * ny;
+  // Every angle's projections and the filter's values at them.
+  void hold_positions(const double* x) {
+    const size_t n = static_cast<size_t>(samples);
+    for (int a = 0; a < angles(); ++a) {
+      const double nx = -metric.sin(a), ny = metric.cos(a);
+      double* pa = projected.data() + static_cast<size_t>(a) * n;
+      for (size_t j = 0; j < n; ++j) {
+        pa[j] = x[2 * j] * nx + x[2 * j + 1] * ny;
+        moment[static_cast<size_t>(a) * n + j] = metric.filter().abs_moment(pa[j]);
+        step[static_cast<size_t>(a) * n + j] = metric.filter().step_response(pa[j]);
+      }
+      sort_samples({pa, n}, sorted[static_cast<size_t>(a)]);
+    }
+  }
+  void project(int a) {
+    angle = a;
+    const size_t n = static_cast<size_t>(samples);
+    std::copy_n(projected.data() + static_cast<size_t>(a) * n, n, p.data());
+  }
+  // The held samples at the current angle, for e1_squared_gradient.
+  HeldSamples held() const {
+    const size_t n = static_cast<size_t>(samples), at = static_cast<size_t>(angle) * n;
+    return {p,
+            {moment.data() + at, n},
+            {step.data() + at, n},
+            n > kPairwiseLimit ? std::span<const size_t>(sorted[static_cast<size_t>(angle)])
+                               : std::span<const size_t>()};
   }
 
   // The change of the step response between two frames (weights c):
@@ -106,8 +139,7 @@ struct Epigraph {
   // running sum, so dF/dp_(j) = |R_(j-1)| - |R_j| and dF/dc_(j) = the sum
   // of sign(R_i) gap_i over i >= j. Returns F^2, d(F^2)/dp and d(F^2)/dc (dq).
   double flicker_squared(const std::vector<double>& c) {
-    std::iota(order.begin(), order.end(), size_t{0});
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return p[a] < p[b]; });
+    const std::vector<size_t>& order = sorted[static_cast<size_t>(angle)];
     double running = 0, f = 0;
     for (size_t j = 0; j < order.size(); ++j) {
       const size_t m = order[j];
@@ -140,7 +172,7 @@ struct Epigraph {
              Value&& value) {
     const size_t n = variable_count();
     for (int a = 0; a < angles(); ++a) {
-      project(x, a);
+      project(a);
       values[static_cast<size_t>(a)] = metric.weight_sq(a) * value();
       for (int j = 0; j < samples; ++j) {
         dv[static_cast<size_t>(a)][static_cast<size_t>(j)] =
@@ -155,14 +187,19 @@ struct Epigraph {
       if (!grad) return;
       double* g = grad + row * n;
       std::fill(g, g + n, 0.0);
+      // The position gradient summed over angles in x and y apart (contiguous:
+      // the loop over samples vectorizes), then interleaved into g.
+      std::fill(gx.begin(), gx.end(), 0.0);
+      std::fill(gy.begin(), gy.end(), 0.0);
       for (int a = 0; a < angles(); ++a) {
         const double c = coefficient(a);
         if (c == 0) continue;
         const double nx = -metric.sin(a), ny = metric.cos(a);
-        for (int j = 0; j < samples; ++j) {
-          const double d = c * dv[static_cast<size_t>(a)][static_cast<size_t>(j)];
-          g[2 * j] += d * nx;
-          g[2 * j + 1] += d * ny;
+        const double* dva = dv[static_cast<size_t>(a)].data();
+        for (size_t j = 0; j < gx.size(); ++j) {
+          const double d = c * dva[j];
+          gx[j] += d * nx;
+          gy[j] += d * ny;
         }
         if (free_weights)  // the last weight of a frame is 1 minus the others
           for (int f = 0; f < frames; ++f) {
@@ -171,6 +208,10 @@ struct Epigraph {
             for (int i = 0; i + 1 < per_frame; ++i)
               g[weight_variable(f, i)] += c * (dw_a[static_cast<size_t>(f * per_frame + i)] - last);
           }
+      }
+      for (size_t j = 0; j < gx.size(); ++j) {
+        g[2 * j] = gx[j];
+        g[2 * j + 1] = gy[j];
       }
       g[bound] = -1;
     };
@@ -190,27 +231,30 @@ struct Epigraph {
       return;
     }
     double mean = 0;
-    for (double v : values) mean += std::pow(v / top, norm / 2);
+    for (double v : values) mean += norm_power(v / top, norm / 2);
     mean /= angles();
     const double scale = 0.5 / angles() / std::sqrt(top) * std::pow(mean, 1 / norm - 1);
     emit(first, combined, [&](int a) {
       const double v = values[static_cast<size_t>(a)];
-      return v > 0 ? scale * std::pow(v / top, norm / 2 - 1) : 0.0;
+      return v > 0 ? scale * norm_power(v / top, norm / 2 - 1) : 0.0;
     });
   }
 
   void constraints(const double* x, double* result, double* grad) {
     read_weights(x);
+    hold_positions(x);
     for (int k = 0; k < frames; ++k) {
       const auto& u = phase[static_cast<size_t>(k)];
-      for (int j = 0; j < samples; ++j)
+      for (int j = 0; j < samples; ++j) {
+        phase_of_sample[static_cast<size_t>(j)] = u[static_cast<size_t>(j / per_frame)];
         w[static_cast<size_t>(j)] =
-            u[static_cast<size_t>(j / per_frame)] * sample_w[static_cast<size_t>(j)];
+            phase_of_sample[static_cast<size_t>(j)] * sample_w[static_cast<size_t>(j)];
+      }
       block(x, e2_bound(k), static_cast<size_t>(k * terms()), result, grad, [&] {
-        const double e1 = e1_squared_gradient(metric.filter(), p, w, dp, dw);
-        for (int j = 0; j < samples; ++j)  // through w_j = u_f sample_w_j
-          dq[static_cast<size_t>(j)] =
-              u[static_cast<size_t>(j / per_frame)] * dw[static_cast<size_t>(j)];
+        const double e1 =
+            e1_squared_gradient(metric.filter().half_mean_distance(), held(), w, dp, dw);
+        for (size_t j = 0; j < dq.size(); ++j)  // through w_j = u_f sample_w_j
+          dq[j] = phase_of_sample[j] * dw[j];
         return e1;
       });
     }
