@@ -58,10 +58,23 @@ namespace aapat {
 
 HWY_EXPORT(GramTimes);
 
+namespace {
+constexpr size_t kSmall = 8;  // fewer terms than this: G lambda without the SIMD call
+}  // namespace
+
 std::vector<double> min_norm_combination(std::span<const double> gram, size_t m, int iterations) {
   std::vector<double> lambda(m, m ? 1.0 / m : 0.0), q(m);
   for (int it = 0; it < iterations && m > 1; ++it) {
-    HWY_DYNAMIC_DISPATCH(GramTimes)(gram.data(), lambda.data(), m, q.data());
+    if (m < kSmall) {
+      // A few terms (a table of four angles): the same sums without the dispatch.
+      for (size_t i = 0; i < m; ++i) {
+        double sum = 0;
+        for (size_t j = 0; j < m; ++j) sum += gram[j * m + i] * lambda[j];
+        q[i] = sum;
+      }
+    } else {
+      HWY_DYNAMIC_DISPATCH(GramTimes)(gram.data(), lambda.data(), m, q.data());
+    }
     const size_t best = std::min_element(q.begin(), q.end()) - q.begin();
     double lq = 0;  // |x|^2 for x = G lambda
     for (size_t i = 0; i < m; ++i) lq += lambda[i] * q[i];
@@ -69,6 +82,9 @@ std::vector<double> min_norm_combination(std::span<const double> gram, size_t m,
     const double num = lq - q[best], den = lq - 2 * q[best] + gram[best * m + best];
     if (num <= 1e-18 * std::max(1.0, lq) || den <= 0) break;
     const double gamma = std::min(1.0, num / den);
+    // A step too small to change lambda leaves every later step the same
+    // (each is a function of lambda alone): the rest would change nothing.
+    if (1 - gamma == 1.0 && lambda[best] + gamma == lambda[best]) break;
     for (double& l : lambda) l *= 1 - gamma;
     lambda[best] += gamma;
   }
