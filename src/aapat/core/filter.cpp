@@ -16,18 +16,6 @@ double sinc(double x) {
   return std::sin(kPi * x) / (kPi * x);
 }
 
-// Mitchell & Netravali 1988, Eq. 8: the (B, C) family of cubics on |x| < 2.
-double mitchell(double b, double c, double x) {
-  x = std::abs(x);
-  if (x < 1)
-    return ((12 - 9 * b - 6 * c) * x * x * x + (-18 + 12 * b + 6 * c) * x * x + (6 - 2 * b)) / 6;
-  if (x < 2)
-    return ((-b - 6 * c) * x * x * x + (6 * b + 30 * c) * x * x + (-12 * b - 48 * c) * x +
-            (8 * b + 24 * c)) /
-           6;
-  return 0;
-}
-
 // Pieces on [0, radius]: the breakpoints of a piecewise polynomial, or 1/16
 // pixel for the smooth filters that are interpolated.
 bool is_piecewise_polynomial(const FilterShape& shape) {
@@ -66,7 +54,7 @@ double shape_value(const FilterShape& shape, double x) {
           [&](const GaussianShape& s) {
             return ax <= s.radius ? std::exp(-x * x / (2 * s.sigma * s.sigma)) : 0.0;
           },
-          [&](const MitchellShape& s) { return mitchell(s.b, s.c, x); },
+          [&](const MitchellShape& s) { return MitchellCubic(s.b, s.c)(x); },
           [&](const LanczosShape& s) { return ax < s.lobes ? sinc(x) * sinc(x / s.lobes) : 0.0; },
           [&](const LanczosGaussianShape& s) {
             return ax < s.lobes ? std::exp(-x * x / (2 * s.sigma * s.sigma)) * sinc(x / s.lobes)
@@ -78,6 +66,7 @@ double shape_value(const FilterShape& shape, double x) {
 
 Filter::Filter(FilterShape shape, std::string name)
     : shape_(shape), name_(std::move(name)), radius_(shape_radius(shape)) {
+  if (const auto* m = std::get_if<MitchellShape>(&shape_)) mitchell_ = MitchellCubic(m->b, m->c);
   int segments = segment_count(shape_, radius_);
   tabulate(segments);
   if (is_piecewise_polynomial(shape_)) return;  // exact
@@ -166,8 +155,8 @@ int Filter::locate(double x, double* t) const {
   return k;
 }
 
-double Filter::value(double x) const {
-  return std::abs(x) > radius_ ? 0.0 : scale_ * shape_value(shape_, x);
+double Filter::shape_value_at(double x) const {
+  return shape_value(shape_, x);
 }
 
 double Filter::step_response(double a) const {

@@ -9,6 +9,8 @@
 // exact antiderivatives of those pieces.
 #pragma once
 
+#include <cmath>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -43,6 +45,29 @@ struct BlinnNiceShape {};  // sinc(x / 2) sinc(x / 4) on |x| < 4 (Goss-Wu Table 
 using FilterShape = std::variant<BoxShape, TentShape, GaussianShape, MitchellShape, LanczosShape,
                                  LanczosGaussianShape, BlinnNiceShape>;
 
+// Mitchell & Netravali 1988, Eq. 8: the (B, C) family of cubics on |x| < 2,
+// its coefficients computed once (a reference evaluates it billions of times).
+class MitchellCubic {
+ public:
+  MitchellCubic(double b, double c)
+      : a3_(12 - 9 * b - 6 * c),
+        a2_(-18 + 12 * b + 6 * c),
+        a0_(6 - 2 * b),
+        b3_(-b - 6 * c),
+        b2_(6 * b + 30 * c),
+        b1_(-12 * b - 48 * c),
+        b0_(8 * b + 24 * c) {}
+  double operator()(double x) const {
+    x = std::abs(x);
+    if (x < 1) return (a3_ * x * x * x + a2_ * x * x + a0_) / 6;
+    if (x < 2) return (b3_ * x * x * x + b2_ * x * x + b1_ * x + b0_) / 6;
+    return 0;
+  }
+
+ private:
+  double a3_, a2_, a0_, b3_, b2_, b1_, b0_;
+};
+
 double shape_radius(const FilterShape& shape);
 // The unnormalized impulse response.
 double shape_value(const FilterShape& shape, double x);
@@ -57,7 +82,10 @@ class Filter {
   double radius() const { return radius_; }
 
   // The normalized impulse response h(x).
-  double value(double x) const;
+  double value(double x) const {
+    if (std::abs(x) > radius_) return 0.0;
+    return scale_ * (mitchell_ ? (*mitchell_)(x) : shape_value_at(x));
+  }
   // g0(a) = integral of h from -a to infinity (= from -infinity to a, h even).
   double step_response(double a) const;
   // Integral of g0 from -infinity to a.
@@ -107,11 +135,13 @@ class Filter {
     double q0 = 0, s0 = 0;  // integrals of (1-g)^2 and g^2 from 0 to the segment start
   };
   int locate(double x, double* t) const;
+  double shape_value_at(double x) const;
   void tabulate(int segments);
   // The largest difference between the pieces and the filter, relative to its peak.
   double tabulation_error() const;
 
   FilterShape shape_;
+  std::optional<MitchellCubic> mitchell_;  // the shape's cubic, when it is one
   std::string name_;
   double radius_ = 0;
   double scale_ = 1;  // normalization of shape_value

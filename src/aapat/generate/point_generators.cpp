@@ -241,6 +241,7 @@ const std::vector<Entry>& entries() {
          const int k = square_side(n, "jittered");
          std::uniform_real_distribution<double> u(0, 1);
          std::vector<Vec2> p;
+         p.reserve(static_cast<size_t>(n));  // a reference draws 1024 per pixel
          for (int j = 0; j < k; ++j)
            for (int i = 0; i < k; ++i) p.push_back({(i + u(rng)) / k, (j + u(rng)) / k});
          return p;
