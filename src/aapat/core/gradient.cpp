@@ -24,7 +24,7 @@ double e1_squared_gradient(const Filter& filter, std::span<const double> p,
   thread_local std::vector<size_t> order;
   const size_t n = p.size();
   moment.resize(n);
-  for (size_t j = 0; j < n; ++j) moment[j] = filter.abs_moment(p[j]);
+  abs_moments(filter.abs_moment_table(), p.data(), n, moment.data());  // abs_moment's bits
   step.resize(dp.empty() ? 0 : n);
   for (size_t j = 0; j < step.size(); ++j) step[j] = filter.step_response(p[j]);
   if (n > kPairwiseLimit) sort_samples(p, order);
