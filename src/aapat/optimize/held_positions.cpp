@@ -19,6 +19,8 @@ namespace aapat {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 using D = hn::ScalableTag<double>;
+// The tables' rows are padded to HeldPositions::stride(), whole vectors of 8.
+static_assert(8 % HWY_LANES(double) == 0, "a vector of doubles divides 8");
 
 // Metric::kernel_terms's pair form (PairwiseBlock in core/metric_simd.cpp),
 // one angle per lane: moment = sum_s w_s J_s, spread = sum_s w_s (sum_{q>s}
