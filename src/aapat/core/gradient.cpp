@@ -11,6 +11,12 @@
 
 namespace aapat {
 
+void filter_values_at(const Filter& filter, std::span<const double> p, std::span<double> moment,
+                      std::span<double> step) {
+  abs_moments(filter.abs_moment_table(), p.data(), p.size(), moment.data());
+  for (size_t j = 0; j < step.size(); ++j) step[j] = filter.step_response(p[j]);
+}
+
 void sort_samples(std::span<const double> p, std::vector<size_t>& order) {
   order.resize(p.size());
   std::iota(order.begin(), order.end(), 0);
@@ -24,9 +30,8 @@ double e1_squared_gradient(const Filter& filter, std::span<const double> p,
   thread_local std::vector<size_t> order;
   const size_t n = p.size();
   moment.resize(n);
-  abs_moments(filter.abs_moment_table(), p.data(), n, moment.data());  // abs_moment's bits
   step.resize(dp.empty() ? 0 : n);
-  for (size_t j = 0; j < step.size(); ++j) step[j] = filter.step_response(p[j]);
+  filter_values_at(filter, p, moment, step);
   if (n > kPairwiseLimit) sort_samples(p, order);
   const std::span<const size_t> sorted =
       n > kPairwiseLimit ? std::span<const size_t>(order) : std::span<const size_t>();

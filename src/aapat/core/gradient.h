@@ -35,6 +35,10 @@ struct HeldSamples {
 };
 double e1_squared_gradient(double half_mean_distance, const HeldSamples& at,
                            std::span<const double> w, std::span<double> dp, std::span<double> dw);
+// The filter's values a HeldSamples carries: J(p_j) into moment (on SIMD
+// lanes, Filter::abs_moment's bits) and, unless step is empty, g0(p_j) into step.
+void filter_values_at(const Filter& filter, std::span<const double> p, std::span<double> moment,
+                      std::span<double> step);
 // Fills `order` with 0..n-1 sorted by p, as the gradient's sorted path needs.
 void sort_samples(std::span<const double> p, std::vector<size_t>& order);
 

@@ -111,16 +111,16 @@ class Metric {
   // The angle of the largest term (ties, as in symmetric patterns: the first).
   static int worst_term(std::span<const double> values);
 
+  // The kernel's samples projected on the normal of `angle`, into proj (room
+  // for the kernel's samples): c y - s x, the one projection every path uses.
+  std::span<const double> project(const Kernel& k, int angle, double* proj) const;
+
   // The per-angle profile W(theta) E1(theta).
   std::vector<double> profile(const Kernel& k) const;
   KernelError kernel_error(const Kernel& k) const;
   PatternError evaluate(const Pattern& p) const;
 
  private:
-  // The kernel's samples projected on the normal of `angle`, into proj (room
-  // for the kernel's samples).
-  std::span<const double> project(const Kernel& k, int angle, double* proj) const;
-
   Filter filter_;
   AcuityTable acuity_;
   double norm_;

@@ -96,7 +96,6 @@ void HeldPositions::hold(const Metric& metric, std::span<const Kernel> kernels) 
   weight_sq_.assign(stride, 0.0);
   for (size_t a = 0; a < angles_; ++a) weight_sq_[a] = metric.weight_sq(static_cast<int>(a));
   values_.resize(stride);
-  e1sq_.resize(stride);
   const Filter::AbsMomentTable table = metric.filter().abs_moment_table();
   std::vector<double> p, j;
   kernels_.resize(kernels.size());
@@ -111,9 +110,7 @@ void HeldPositions::hold(const Metric& metric, std::span<const Kernel> kernels) 
     p.resize(n);
     j.resize(n);
     for (size_t a = 0; a < angles_; ++a) {
-      // The projection as Metric::project and the SIMD pair form compute it.
-      const double c = metric.cos(static_cast<int>(a)), s = metric.sin(static_cast<int>(a));
-      for (size_t i = 0; i < n; ++i) p[i] = c * kernel.y[i] - s * kernel.x[i];
+      metric.project(kernel, static_cast<int>(a), p.data());
       abs_moments(table, p.data(), n, j.data());  // Filter::abs_moment's bits
       for (size_t i = 0; i < n; ++i) {
         t.moment[i * stride + a] = j[i];
@@ -137,15 +134,15 @@ void HeldPositions::weighted_e1_squared(size_t k, std::span<const double> w,
 }
 
 void HeldPositions::e1_squared_weight_gradient(size_t k, std::span<const double> w,
-                                               std::span<double> e1sq,
+                                               std::vector<double>& e1sq,
                                                std::vector<double>& dw) const {
   const Tables& t = kernels_[k];
   const size_t stride = this->stride();
+  e1sq.resize(stride);
   dw.resize(w.size() * stride);
   HWY_DYNAMIC_DISPATCH(HeldWeightGradient)
-  (t.moment.data(), t.distance.data(), w.size(), stride, w.data(), half_mean_distance_,
-   e1sq_.data(), dw.data());
-  std::memcpy(e1sq.data(), e1sq_.data(), angles_ * sizeof(double));
+  (t.moment.data(), t.distance.data(), w.size(), stride, w.data(), half_mean_distance_, e1sq.data(),
+   dw.data());
 }
 
 }  // namespace aapat

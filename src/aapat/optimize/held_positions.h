@@ -36,9 +36,10 @@ class HeldPositions {
   // W^2 E1^2 at every angle for kernel k with its weights w, as
   // Metric::kernel_terms computes them.
   void weighted_e1_squared(size_t k, std::span<const double> w, std::span<double> values) const;
-  // E1^2 at every angle into e1sq and its weight gradient into dw (sample j
-  // at angle a: dw[j * stride() + a]), as e1_squared_gradient computes them.
-  void e1_squared_weight_gradient(size_t k, std::span<const double> w, std::span<double> e1sq,
+  // E1^2 at every angle into e1sq (angle a: e1sq[a]) and its weight gradient
+  // into dw (sample j at angle a: dw[j * stride() + a]), both padded to
+  // stride(), as e1_squared_gradient computes them.
+  void e1_squared_weight_gradient(size_t k, std::span<const double> w, std::vector<double>& e1sq,
                                   std::vector<double>& dw) const;
 
  private:
@@ -51,7 +52,7 @@ class HeldPositions {
   double half_mean_distance_ = 0;
   std::vector<double> weight_sq_;
   std::vector<Tables> kernels_;
-  mutable std::vector<double> values_, e1sq_;  // padded outputs
+  mutable std::vector<double> values_;  // the padded output of weighted_e1_squared
 };
 
 }  // namespace aapat

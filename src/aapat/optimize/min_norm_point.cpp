@@ -9,6 +9,22 @@
 
 #include "aapat/optimize/min_norm_point.h"
 
+// Outside the per-target code, defined once.
+#ifndef AAPAT_MIN_NORM_POINT_ROWS
+#define AAPAT_MIN_NORM_POINT_ROWS
+namespace aapat {
+// Rows [first, m) of q = G lambda, one at a time, each summed over j in order.
+inline void gram_times_rows(const double* gram, const double* lambda, size_t m, size_t first,
+                            double* q) {
+  for (size_t i = first; i < m; ++i) {
+    double sum = 0;
+    for (size_t j = 0; j < m; ++j) sum += gram[j * m + i] * lambda[j];
+    q[i] = sum;
+  }
+}
+}  // namespace aapat
+#endif
+
 HWY_BEFORE_NAMESPACE();
 namespace aapat {
 namespace HWY_NAMESPACE {
@@ -42,11 +58,7 @@ void GramTimes(const double* gram, const double* lambda, size_t m, double* q) {
       sum = hn::Add(sum, hn::Mul(hn::LoadU(d, gram + j * m + i), hn::Set(d, lambda[j])));
     hn::StoreU(sum, d, q + i);
   }
-  for (; i < m; ++i) {
-    double sum = 0;
-    for (size_t j = 0; j < m; ++j) sum += gram[j * m + i] * lambda[j];
-    q[i] = sum;
-  }
+  gram_times_rows(gram, lambda, m, i, q);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -65,16 +77,10 @@ constexpr size_t kSmall = 8;  // fewer terms than this: G lambda without the SIM
 std::vector<double> min_norm_combination(std::span<const double> gram, size_t m, int iterations) {
   std::vector<double> lambda(m, m ? 1.0 / m : 0.0), q(m);
   for (int it = 0; it < iterations && m > 1; ++it) {
-    if (m < kSmall) {
-      // A few terms (a table of four angles): the same sums without the dispatch.
-      for (size_t i = 0; i < m; ++i) {
-        double sum = 0;
-        for (size_t j = 0; j < m; ++j) sum += gram[j * m + i] * lambda[j];
-        q[i] = sum;
-      }
-    } else {
+    if (m < kSmall)  // a few terms (a table of four angles): the same sums without the dispatch
+      gram_times_rows(gram.data(), lambda.data(), m, 0, q.data());
+    else
       HWY_DYNAMIC_DISPATCH(GramTimes)(gram.data(), lambda.data(), m, q.data());
-    }
     const size_t best = std::min_element(q.begin(), q.end()) - q.begin();
     double lq = 0;  // |x|^2 for x = G lambda
     for (size_t i = 0; i < m; ++i) lq += lambda[i] * q[i];

@@ -61,18 +61,30 @@ void ProblemE2::add_term_gradient(const Problem& pr, Workspace& ws, int k, int a
                                   Direction& dir, bool positions) const {
   const Kernel& ker = ws.kernels[k];
   const size_t n = ker.w.size();
+  // E1^2 and dE1^2/dw of sample j at dw[j * dw_stride]: from the held
+  // positions' tables (every angle of kernel k at once, kept until the
+  // weights change), or computed here.
+  double e1sq;
+  const double* dw = ws.dw.data();
+  size_t dw_stride = 1;
   if (!positions && ws.held_now[k]) {
-    add_held_weight_gradient(pr, ws, k, a, scale, dir);
-    return;
+    if (ws.held_kernel != k) {
+      ws.held.e1_squared_weight_gradient(static_cast<size_t>(k), ker.w, ws.held_e1sq, ws.held_dw);
+      ws.held_kernel = k;
+    }
+    e1sq = ws.held_e1sq[a];
+    dw = ws.held_dw.data() + a;
+    dw_stride = ws.held.stride();
+  } else {
+    const std::span<const double> p = metric_.project(ker, a, ws.proj.data());
+    e1sq = e1_squared_gradient(metric_.filter(), p, ker.w,
+                               positions ? std::span<double>(ws.dp.data(), n) : std::span<double>(),
+                               {ws.dw.data(), n});
   }
-  const double c = metric_.cos(a), s = metric_.sin(a);
-  for (size_t j = 0; j < n; ++j) ws.proj[j] = c * ker.y[j] - s * ker.x[j];
-  const double e1sq = e1_squared_gradient(
-      metric_.filter(), {ws.proj.data(), n}, ker.w,
-      positions ? std::span<double>(ws.dp.data(), n) : std::span<double>(), {ws.dw.data(), n});
   if (e1sq <= 0) return;
   // d(W E1) = W dE1^2 / (2 E1)
   const double f = scale * metric_.acuity().weights[a] / (2 * std::sqrt(e1sq));
+  const double c = metric_.cos(a), s = metric_.sin(a);
   const auto& reads = pr.kernels[k];
   for (size_t j = 0; j < n; ++j) {
     if (positions) {
@@ -80,27 +92,8 @@ void ProblemE2::add_term_gradient(const Problem& pr, Workspace& ws, int k, int a
       dir.pos[pl.generator].x += f * pl.sx * (-s * ws.dp[j]);
       dir.pos[pl.generator].y += f * pl.sy * (c * ws.dp[j]);
     }
-    dir.w[reads[j].weight] += f * ws.dw[j];
+    dir.w[reads[j].weight] += f * dw[j * dw_stride];
   }
-}
-
-void ProblemE2::add_held_weight_gradient(const Problem& pr, Workspace& ws, int k, int a,
-                                         double scale, Direction& dir) const {
-  // Every angle of kernel k at once, then this angle's share, added as
-  // add_term_gradient adds it.
-  const size_t angles = static_cast<size_t>(metric_.angle_count());
-  if (ws.held_kernel != k) {
-    ws.held_e1sq.resize(angles);
-    ws.held.e1_squared_weight_gradient(static_cast<size_t>(k), ws.kernels[k].w, ws.held_e1sq,
-                                       ws.held_dw);
-    ws.held_kernel = k;
-  }
-  const double e1sq = ws.held_e1sq[a];
-  if (e1sq <= 0) return;
-  const double f = scale * metric_.acuity().weights[a] / (2 * std::sqrt(e1sq));
-  const auto& reads = pr.kernels[k];
-  for (size_t j = 0; j < reads.size(); ++j)
-    dir.w[reads[j].weight] += f * ws.held_dw[j * ws.held.stride() + static_cast<size_t>(a)];
 }
 
 void ProblemE2::term_gradient(const Problem& pr, Workspace& ws, int kernel, int angle,

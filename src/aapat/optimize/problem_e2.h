@@ -66,9 +66,6 @@ class ProblemE2 {
 
  private:
   void fill_kernels(const Problem& pr, Workspace& ws) const;
-  // add_term_gradient's weights from the held positions' tables.
-  void add_held_weight_gradient(const Problem& pr, Workspace& ws, int k, int a, double scale,
-                                Direction& dir) const;
   void constrain(const Problem& pr, bool move_positions, Direction& dir) const;
 
   const Metric& metric_;

@@ -40,7 +40,8 @@ struct Epigraph {
   std::vector<std::vector<double>> phase;  // phase[k][f]: frame f's weight at steady frame k
   double lambda;
   // Scratch.
-  std::vector<double> p, w, dp, dw, dq, values;
+  std::span<const double> p;  // the projections at the current angle (project())
+  std::vector<double> w, dp, dw, dq, values;
   std::vector<double> sample_w;          // each sample's weight within its frame (sum 1 per frame)
   std::vector<std::vector<double>> dv;   // per angle, d(term)/dp per sample
   std::vector<std::vector<double>> dvw;  // per angle, d(term)/d(sample weight)
@@ -64,7 +65,7 @@ struct Epigraph {
         lambda(s.flicker_weight) {
     for (int k = 0; k < frames; ++k) phase.push_back(phase_weights(s.model, frames, k, true));
     const size_t n = static_cast<size_t>(samples), angles = static_cast<size_t>(m.angle_count());
-    p.resize(n), w.resize(n), dp.resize(n), dw.resize(n), dq.resize(n), gx.resize(n), gy.resize(n);
+    w.resize(n), dp.resize(n), dw.resize(n), dq.resize(n), gx.resize(n), gy.resize(n);
     phase_of_sample.resize(n);
     sample_w.assign(n, 1.0 / per_frame);
     values.resize(angles);
@@ -111,18 +112,17 @@ struct Epigraph {
     for (int a = 0; a < angles(); ++a) {
       const double nx = -metric.sin(a), ny = metric.cos(a);
       double* pa = projected.data() + static_cast<size_t>(a) * n;
-      for (size_t j = 0; j < n; ++j) {
-        pa[j] = x[2 * j] * nx + x[2 * j + 1] * ny;
-        moment[static_cast<size_t>(a) * n + j] = metric.filter().abs_moment(pa[j]);
-        step[static_cast<size_t>(a) * n + j] = metric.filter().step_response(pa[j]);
-      }
+      for (size_t j = 0; j < n; ++j) pa[j] = x[2 * j] * nx + x[2 * j + 1] * ny;
+      const size_t at = static_cast<size_t>(a) * n;
+      filter_values_at(metric.filter(), {pa, n}, {moment.data() + at, n}, {step.data() + at, n});
       sort_samples({pa, n}, sorted[static_cast<size_t>(a)]);
     }
   }
+  // Chooses angle a: p becomes its held projections.
   void project(int a) {
     angle = a;
     const size_t n = static_cast<size_t>(samples);
-    std::copy_n(projected.data() + static_cast<size_t>(a) * n, n, p.data());
+    p = {projected.data() + static_cast<size_t>(a) * n, n};
   }
   // The held samples at the current angle, for e1_squared_gradient.
   HeldSamples held() const {
