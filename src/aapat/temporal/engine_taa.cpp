@@ -26,10 +26,6 @@ struct RenderSamples {
   }
 };
 
-// Render coordinate of display coordinate d (centres on integers both).
-double to_render(double d, double ratio) {
-  return (d - (ratio - 1) / 2) / ratio;
-}
 double to_display(double r, double ratio) {
   return r * ratio + (ratio - 1) / 2;
 }
@@ -160,7 +156,7 @@ void blend(const Plane& current, const Plane& history, const std::vector<int>& c
       const int qi = std::clamp(static_cast<int>(std::lround(q.x)), 0, w - 1),
                 qj = std::clamp(static_cast<int>(std::lround(q.y)), 0, h - 1);
       const int n = std::min(count[static_cast<size_t>(qj) * w + qi], cap);
-      const double alpha = std::clamp(1 / (1 + t.count_step * n), t.alpha_min, t.alpha_max);
+      const double alpha = blend_alpha(t, n);
       for (int k = 0; k < ch; ++k) o[k] = std::clamp(hist[k] + alpha * (c[k] - hist[k]), 0.0, 1.0);
       out_count[at] = std::min(n + 1, std::max(cap, 1));
     }

@@ -15,6 +15,8 @@
 //                      scene moves); a pixel without history takes alpha 1.
 #pragma once
 
+#include <algorithm>
+
 #include <string>
 #include <string_view>
 #include <utility>
@@ -50,6 +52,22 @@ struct EnginePresetInfo {
 };
 // ue4, fsr2, godot, bevy.
 const std::vector<EnginePresetInfo>& engine_presets();
+
+// The blend's current-frame weight for a pixel whose history holds n frames:
+// clamp(1 / (1 + count_step n), alpha_min, alpha_max).
+inline double blend_alpha(const EngineTaa& t, int n) {
+  return std::clamp(1 / (1 + t.count_step * n), t.alpha_min, t.alpha_max);
+}
+// The weight once every pixel's history is full (n at its cap), still or moving.
+inline double steady_alpha(const EngineTaa& t, bool moving) {
+  return blend_alpha(t, moving ? t.count_max_motion : t.count_max);
+}
+
+// The render coordinate of display coordinate x at a ratio (pixel centres
+// on integers in both): display pixel x's centre on the render grid.
+inline double to_render(double x, double ratio) {
+  return (x - (ratio - 1) / 2) / ratio;
+}
 
 // Checks the ratio (finite, in [1, kMaxUpscaleRatio]); throws ParameterError
 // naming it. Every face checks it this one way.

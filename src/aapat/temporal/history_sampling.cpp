@@ -48,6 +48,16 @@ double lanczos2_weight(double x) {
   return 2 * std::sin(a) * std::sin(a / 2) / (a * a);
 }
 
+// Lanczos-2 weights of the texels at offsets -1, 0, 1, 2 from floor(p),
+// normalized, f the fraction.
+std::array<double, 4> lanczos2(double f) {
+  std::array<double, 4> w{};
+  double sum = 0;
+  for (int k = 0; k < 4; ++k) sum += w[static_cast<size_t>(k)] = lanczos2_weight(f - (k - 1));
+  for (double& x : w) x /= sum;
+  return w;
+}
+
 // Separable 4x4 weights wx, wy over texels floor(p) - 1 .. floor(p) + 2.
 void separable4(const Plane& h, Vec2 p, const std::array<double, 4>& wx,
                 const std::array<double, 4>& wy, double* out) {
@@ -81,6 +91,30 @@ std::string history_sampler_names() {
   return all;
 }
 
+std::array<double, 16> history_taps(HistorySampler sampler, Vec2 f) {
+  std::array<double, 4> wx{}, wy{};
+  switch (sampler) {
+    case HistorySampler::bilinear:
+      wx = {0, 1 - f.x, f.x, 0};
+      wy = {0, 1 - f.y, f.y, 0};
+      break;
+    case HistorySampler::catmull_rom_9:
+    case HistorySampler::catmull_rom_5:
+      wx = catmull_rom(f.x);
+      wy = catmull_rom(f.y);
+      break;
+    case HistorySampler::lanczos2:
+      wx = lanczos2(f.x);
+      wy = lanczos2(f.y);
+      break;
+  }
+  std::array<double, 16> w{};
+  for (size_t b = 0; b < 4; ++b)
+    for (size_t a = 0; a < 4; ++a) w[b * 4 + a] = wx[a] * wy[b];
+  if (sampler == HistorySampler::catmull_rom_5) w[0] = w[3] = w[12] = w[15] = 0;
+  return w;
+}
+
 void sample_history(const Plane& h, Vec2 p, HistorySampler sampler, double* out) {
   for (int c = 0; c < h.channels; ++c) out[c] = 0;
   const double fx = p.x - std::floor(p.x), fy = p.y - std::floor(p.y);
@@ -105,22 +139,9 @@ void sample_history(const Plane& h, Vec2 p, HistorySampler sampler, double* out)
       bilinear(h, {c12.x, y0 + 2}, w12x * wy[3], out);
       return;
     }
-    case HistorySampler::lanczos2: {
-      std::array<double, 4> wx{}, wy{};
-      double sx = 0, sy = 0;
-      for (int k = 0; k < 4; ++k) {
-        wx[static_cast<size_t>(k)] = lanczos2_weight(fx - (k - 1));
-        wy[static_cast<size_t>(k)] = lanczos2_weight(fy - (k - 1));
-        sx += wx[static_cast<size_t>(k)];
-        sy += wy[static_cast<size_t>(k)];
-      }
-      for (int k = 0; k < 4; ++k) {
-        wx[static_cast<size_t>(k)] /= sx;
-        wy[static_cast<size_t>(k)] /= sy;
-      }
-      separable4(h, p, wx, wy, out);
+    case HistorySampler::lanczos2:
+      separable4(h, p, lanczos2(fx), lanczos2(fy), out);
       return;
-    }
   }
 }
 

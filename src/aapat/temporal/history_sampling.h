@@ -11,6 +11,7 @@
 // Catmull-Rom and Lanczos overshoot: their results are not clamped here.
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,6 +35,13 @@ struct Plane {
     return &values[(static_cast<size_t>(j) * width + i) * static_cast<size_t>(channels)];
   }
 };
+
+// The weight each sampler gives the 4x4 texels floor(p) - 1 .. floor(p) + 2
+// (x inner, y outer) at the fraction p - floor(p): the linear map that
+// sample_history evaluates with its fetches (Catmull-Rom 5 is the 4x4 spline
+// without its corners; bilinear uses the middle 2x2). The linear model of TAA
+// under a pan (pan_model.h) composes it frame after frame.
+std::array<double, 16> history_taps(HistorySampler sampler, Vec2 fraction);
 
 // The history at p into out[0..channels).
 void sample_history(const Plane& history, Vec2 p, HistorySampler sampler, double* out);

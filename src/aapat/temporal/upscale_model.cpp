@@ -15,7 +15,7 @@ std::vector<double> upscale_phases(double ratio) {
   std::set<long long> seen;
   std::vector<double> phases;
   for (int x = 0; x < 64; ++x) {
-    const double u = (x - (ratio - 1) / 2) / ratio;
+    const double u = to_render(x, ratio);
     double f = u - std::floor(u);
     if (f > 1 - 1e-9) f = 0;
     if (seen.insert(std::llround(f * 1e9)).second) phases.push_back(f);
