@@ -4,6 +4,8 @@
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/hardware_layout.h"
+#include "aapat/temporal/engine_taa_settings.h"
+#include "aapat/temporal/pan_model.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/sequence_optimizer.h"
@@ -137,6 +139,42 @@ keys of `aapat optimize --sequence --json` (j, worst_e2, mean_e2, flicker,
 halton_j, ...), its "result" the aapat.Sequence found. ratio: optimize the
 jitter of an upscale (`--ratio`), each display pixel reconstructed by
 `reconstruct` from the render pixels around it.)doc");
+
+  m.def(
+      "sequence_pan",
+      [](const std::vector<py::object>& sequences, const std::string& taa, double ratio,
+         const std::optional<std::vector<std::pair<double, double>>>& velocities,
+         const py::object& objective, const py::object& filter, const py::object& acuity,
+         const py::object& norm) {
+        const EngineTaa t = make_engine_taa(taa, ratio, {});
+        std::vector<Sequence> seqs;
+        for (const py::object& q : sequences)
+          seqs.push_back(py::isinstance<Sequence>(q)
+                             ? q.cast<Sequence>()
+                             : resolve_sequence_for_ratio(q.cast<std::string>(), ratio, nullptr));
+        std::vector<Vec2> vs;
+        if (!velocities) {
+          for (const std::string_view v : kPanVelocities) vs.push_back(parse_velocity(v));
+        } else {
+          for (const auto& [dx, dy] : *velocities) vs.push_back({dx, dy});
+        }
+        const Metric metric = make_metric(objective, filter, acuity, norm);
+        const auto rows = interruptible([&] { return evaluate_pans(seqs, t, vs, metric); });
+        py::list out;
+        for (size_t i = 0; i < seqs.size(); ++i)
+          out.append(to_python(pan_row_json(seqs[i], vs, rows[i])));
+        return out;
+      },
+      py::arg("sequences"), py::kw_only(), py::arg("taa"), py::arg("ratio") = 1.0,
+      py::arg("velocities") = py::none(), AAPAT_OBJECTIVE_ARGS,
+      with_metric_args(R"doc(aapat sequence pan: the steady mean E2 and flicker of each sequence (a
+Sequence or a spec; a generator without frames= takes the upscaler's phases
+for ratio) under an engine preset's reconstruction, history sampler and blend
+while the scene pans at each velocity ((dx, dy) display pixels per frame;
+(0, 0): still; default the command line's), by the linear model before
+rectification (docs/temporal.md). A list with one dict per sequence, the rows
+of `aapat sequence pan --json`: sequence, phases, mean_e2, flicker (the means
+over the velocities), velocities [{velocity, mean_e2, flicker}].)doc"));
 }
 
 }  // namespace aapat::python

@@ -89,6 +89,9 @@ def calls(files):
         "sequence": (aapat.sequence, ["halton:frames=4"], {}),
         "Sequence.save": (seq.save, [os.path.join(tmp, "q.json")], {}),
         "sequence_eval": (aapat.sequence_eval, [seq], {"alpha": 0.2, "window": 0}),
+        "sequence_pan": (aapat.sequence_pan, [["halton:frames=4"]],
+                         {"taa": "ue4", "ratio": 1.0, "velocities": [(0.3, 0.2)],
+                          "acuity": "uniform:step=30"}),
         "spectrum": (aapat.spectrum, ["halton"], {"n": 16, "size": 8}),
         "spectrum_1d": (aapat.spectrum_1d, [["jittered"]], {"n": 16, "frequencies": 16}),
         "table2": (aapat.table2, [], {"size": 8, "frames": 1}),
@@ -131,7 +134,7 @@ def test_every_callable_has_a_bad_argument_case(files):
      "engine_taa", "enumerate", "eval", "eval_report", "figure10", "generate", "hardware_table",
      "load_pattern", "optimize", "optimize_sequence", "pattern", "Pattern", "Pattern.from_json",
      "Pattern.save", "profile", "read_points", "registry", "limits", "render", "save_pattern", "sequence",
-     "Sequence.save", "sequence_eval", "spectrum", "spectrum_1d", "table2", "table3",
+     "Sequence.save", "sequence_eval", "sequence_pan", "spectrum", "spectrum_1d", "table2", "table3",
      "write_points"]))
 def test_random_bad_arguments_raise_only_aapat_error(name, files, monkeypatch):
     # A bad value may be a valid relative path ("nan"): whatever a case

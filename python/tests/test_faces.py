@@ -53,6 +53,18 @@ def test_sequence_eval_row_is_the_cli_row(aapat_cli):
     assert py["flicker"] <= py["worst_flicker"]  # the mean, and the largest
 
 
+def test_sequence_pan_rows_are_the_cli_rows(aapat_cli):
+    """One evaluation on both faces: the same rows, the default velocities too."""
+    args = ["aapat-taa-8", "halton:frames=8", "--taa", "ue4", "--acuity", "uniform:step=30"]
+    cli = cli_json(aapat_cli, "sequence", "pan", *args)
+    py = aapat.sequence_pan(["aapat-taa-8", "halton:frames=8"], taa="ue4",
+                            acuity="uniform:step=30")
+    assert py == cli["rows"]
+    assert [v["velocity"] for v in py[0]["velocities"]][0] == [0.0, 0.0]
+    with pytest.raises(aapat.Error, match="velocity"):
+        aapat.sequence_pan(["r2"], taa="fsr2", velocities=[(float("nan"), 0.0)])
+
+
 def test_optimize_sequence_at_8_frames_and_8_starts_equals_the_cli(aapat_cli, tmp_path):
     out = str(tmp_path / "seq.json")
     cli = cli_json(aapat_cli, "optimize", "--sequence", "8", "--starts", "8", "-o", out)

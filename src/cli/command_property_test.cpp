@@ -193,7 +193,7 @@ std::vector<std::string> metric_args(std::vector<std::string> args) {
 
 // A random command line of one of the commands, small enough to run fast.
 std::vector<std::string> random_command() {
-  const int which = uniform(0, 17);
+  const int which = uniform(0, 18);
   std::vector<std::string> a;
   switch (which) {
     case 0:
@@ -339,6 +339,18 @@ std::vector<std::string> random_command() {
       maybe(a, "--frames-dir", {"frames", "good.json"});
       maybe(a, "--csv", {"rows.csv"});
       maybe_flag(a, "--cut");
+      maybe_flag(a, "--json");
+      break;
+    case 17:  // jitters under a preset's history while panning
+      a = {"sequence",
+           "pan",
+           *one_of({"halton:frames=2", "aapat-taa-8", "r2", "msaa-alternating", "nosuch"}),
+           "--taa",
+           *one_of({"ue4", "fsr2", "godot", "bevy", "nosuch"}),
+           "--acuity",
+           *one_of({"uniform:step=30", "uniform:step=0"})};
+      maybe(a, "--ratio", {"1", "1.5", "0.5", "nan"});
+      maybe(a, "--velocity", {"0,0", "0.37,0.21", "1e9,0", "nan,1", "1", "a,b"});
       maybe_flag(a, "--json");
       break;
   }

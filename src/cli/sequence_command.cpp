@@ -12,12 +12,15 @@
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/point_set_file.h"
+#include "aapat/temporal/engine_taa_settings.h"
+#include "aapat/temporal/pan_model.h"
 #include "aapat/temporal/sequence_export.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/sequence_svg.h"
 #include "aapat/temporal/temporal_json.h"
 #include "aapat/temporal/temporal_metrics.h"
+#include "cli/app.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/sequence_options.h"
@@ -157,6 +160,83 @@ void add_phases(CLI::App* parent, std::function<void(std::ostream&)>& action) {
   };
 }
 
+void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
+  auto* cmd = parent->add_subcommand(
+      "pan",
+      "steady E2 and flicker of jitters under an engine preset's history while the scene pans "
+      "(the linear model before rectification, docs/temporal.md)");
+  struct Options {
+    std::vector<std::string> sequences, velocities{kPanVelocities.begin(), kPanVelocities.end()};
+    std::string taa;
+    double ratio = 1;
+    MetricOptions metric;
+    bool json = false;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("sequences", o->sequences,
+                  "sequence files or generator specs (a generator without frames= takes the "
+                  "upscaler's phases for --ratio)")
+      ->required();
+  cmd->add_option("--taa", o->taa,
+                  "the engine preset: its reconstruction, history sampler and blend")
+      ->required();
+  auto* ratio = cmd->add_option("--ratio", o->ratio, "display / render resolution (>= 1)")
+                    ->capture_default_str();
+  cmd->add_option(
+         "--velocity", o->velocities,
+         "DX,DY display pixels per frame, repeatable (0,0: still, the preset's still blend)")
+      ->capture_default_str();
+  o->metric.add_to(cmd);
+  cmd->add_flag("--json", o->json, "print JSON");
+  action = [o, cmd, ratio](std::ostream& out) {
+    if (!cmd->parsed()) return;
+    const Objective objective = o->metric.resolve();
+    const Metric metric = objective.metric();
+    const EngineTaa taa = make_engine_taa(o->taa, o->ratio, {});
+    std::vector<Vec2> velocities;
+    for (const std::string& v : o->velocities) velocities.push_back(parse_velocity(v));
+    std::vector<Sequence> sequences;
+    for (const std::string& spec : o->sequences) {
+      std::string warning;
+      sequences.push_back(
+          resolve_sequence_for_ratio(spec, o->ratio, ratio->count() ? &warning : nullptr));
+      if (!warning.empty()) warnings() << "aapat: warning: " << warning << "\n";
+    }
+    const auto rows = evaluate_pans(sequences, taa, velocities, metric);
+    if (o->json) {
+      JsonObject js = json_report("sequence pan");
+      js.update(objective_json(objective));
+      js["taa"] = o->taa;
+      js["ratio"] = o->ratio;
+      JsonObject::array_t list;
+      for (size_t i = 0; i < sequences.size(); ++i)
+        list.push_back(pan_row_json(sequences[i], velocities, rows[i]));
+      js["rows"] = list;
+      out << json_text(js);
+      return;
+    }
+    out << fmt::format(
+        "{} at {:g}x, panning: steady mean E2 / mean flicker per velocity (px/frame); {}\n", o->taa,
+        o->ratio, objective.caption());
+    size_t width = 8;
+    for (const Sequence& s : sequences) width = std::max(width, s.name.size());
+    out << fmt::format("{:<{}}", "sequence", width);
+    for (const Vec2 v : velocities)
+      out << fmt::format(" {:>15}", fmt::format("{:g},{:g}", v.x, v.y));
+    out << fmt::format(" {:>15}\n", "mean");
+    for (size_t i = 0; i < sequences.size(); ++i) {
+      out << fmt::format("{:<{}}", sequences[i].name, width);
+      double e2 = 0, flicker = 0;
+      for (const PanReport& r : rows[i]) {
+        out << fmt::format(" {:>7.4f}/{:<7.4f}", r.mean_e2, r.flicker);
+        e2 += r.mean_e2 / static_cast<double>(rows[i].size());
+        flicker += r.flicker / static_cast<double>(rows[i].size());
+      }
+      out << fmt::format(" {:>7.4f}/{:<7.4f}\n", e2, flicker);
+    }
+  };
+}
+
 void add_show(CLI::App* parent, std::function<void(std::ostream&)>& action) {
   auto* cmd = parent->add_subcommand(
       "show", "draw every frame's samples numbered in time order, and the convergence curve");
@@ -266,14 +346,15 @@ void add_export(CLI::App* parent, std::function<void(std::ostream&)>& action) {
 Action add_sequence_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("sequence",
                                  "patterns over time: TAA and upscaler jitter, alternating MSAA: "
-                                 "generate, eval, show, export, phases (docs/temporal.md)");
+                                 "generate, eval, show, export, phases, pan (docs/temporal.md)");
   cmd->require_subcommand(1);
-  auto actions = std::make_shared<std::vector<std::function<void(std::ostream&)>>>(5);
+  auto actions = std::make_shared<std::vector<std::function<void(std::ostream&)>>>(6);
   add_generate(cmd, (*actions)[0]);
   add_eval(cmd, (*actions)[1]);
   add_show(cmd, (*actions)[2]);
   add_export(cmd, (*actions)[3]);
   add_phases(cmd, (*actions)[4]);
+  add_pan(cmd, (*actions)[5]);
   return [actions](std::ostream& out) {
     for (auto& a : *actions) a(out);
   };

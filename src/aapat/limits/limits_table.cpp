@@ -30,6 +30,7 @@
 #include "aapat/temporal/accumulation.h"
 #include "aapat/temporal/engine_taa.h"
 #include "aapat/temporal/engine_taa_settings.h"
+#include "aapat/temporal/pan_model.h"
 #include "aapat/temporal/sequence.h"
 #include "aapat/work/work_items.h"
 
@@ -212,6 +213,11 @@ std::vector<Limit> make_table() {
                    number(kMaxMotionPerFrame)),
        "`kMaxUpscaleRatio`, `kMaxWarmupFrames`, `kMaxEngineFrames` in `temporal/engine_taa*.h`; "
        "`kMaxMotionPerFrame`, `render/motion.h`"},
+      {"`sequence pan` (`sequence_pan`)",
+       fmt::format("ratio finite in [1, {}]; velocities finite, within {} pixels per frame per "
+                   "axis; 1 to {} frames",
+                   number(kMaxUpscaleRatio), number(kMaxPanSpeed), kMaxPanFrames),
+       "`kMaxPanSpeed`, `kMaxPanFrames`, `temporal/pan_model.h`"},
       {"upscaler phases (`sequence phases --ratio`)", "ratio 1 to 16", "`upscaler_phase_count`"},
   };
 }

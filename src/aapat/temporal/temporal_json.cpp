@@ -89,4 +89,23 @@ JsonObject engine_taa_json(std::string_view scene, const EngineRun& run, const S
   return doc;
 }
 
+JsonObject pan_row_json(const Sequence& s, const std::vector<Vec2>& velocities,
+                        const std::vector<PanReport>& reports) {
+  JsonObject::array_t per;
+  double e2 = 0, flicker = 0;
+  const auto n = static_cast<double>(velocities.size());
+  for (size_t k = 0; k < velocities.size(); ++k) {
+    per.push_back({{"velocity", {velocities[k].x, velocities[k].y}},
+                   {"mean_e2", reports[k].mean_e2},
+                   {"flicker", reports[k].flicker}});
+    e2 += reports[k].mean_e2 / n;
+    flicker += reports[k].flicker / n;
+  }
+  return {{"sequence", s.name},
+          {"phases", s.period()},
+          {"mean_e2", e2},
+          {"flicker", flicker},
+          {"velocities", per}};
+}
+
 }  // namespace aapat

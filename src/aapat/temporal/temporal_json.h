@@ -7,6 +7,7 @@
 
 #include "aapat/io/json_report.h"
 #include "aapat/temporal/engine_taa.h"
+#include "aapat/temporal/pan_model.h"
 #include "aapat/temporal/sequence.h"
 #include "aapat/temporal/sequence_optimizer.h"
 #include "aapat/temporal/temporal_metrics.h"
@@ -28,5 +29,11 @@ JsonObject sequence_search_json(const SequenceSearch& search, std::string_view m
 // engine_taa.h), with a row per frame.
 JsonObject engine_taa_json(std::string_view scene, const EngineRun& run, const Sequence& s,
                            const EngineTaa& taa, const EngineResult& r);
+
+// One row of `aapat sequence pan --json` (Python's sequence_pan returns the
+// list): sequence, phases, mean_e2 and flicker (the means over the
+// velocities), velocities: [{velocity [dx, dy], mean_e2, flicker}].
+JsonObject pan_row_json(const Sequence& s, const std::vector<Vec2>& velocities,
+                        const std::vector<PanReport>& reports);
 
 }  // namespace aapat

@@ -1,0 +1,304 @@
+#include "aapat/temporal/pan_model.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+
+#include <tbb/parallel_for.h>
+
+#include "aapat/temporal/engine_taa_settings.h"
+#include "aapat/temporal/upscale_model.h"
+
+namespace aapat {
+
+std::vector<double> ema_age_weights(double alpha, int period, double cut) {
+  if (!(alpha > 0 && alpha <= 1))
+    throw ParameterError("alpha", fmt::format(" {}: outside (0, 1]", alpha));
+  if (period < 1) throw ParameterError("period", fmt::format(" {}: at least 1", period));
+  int kept = 0;
+  for (double a = alpha; a >= cut * alpha && kept < 1000000; a *= 1 - alpha) ++kept;
+  // The series from age `kept` on shows frame k - d, which repeats with the
+  // period: its sum over the repeats goes to the first period of it.
+  const double repeats = 1 / (1 - std::pow(1 - alpha, period));
+  std::vector<double> w;
+  double a = alpha;
+  for (int d = 0; d < kept + period; ++d, a *= 1 - alpha) w.push_back(d < kept ? a : a * repeats);
+  return w;
+}
+
+namespace {
+
+// Whole-pixel offsets from the pixel and their weights after d tap steps.
+using Chain = std::map<std::array<int, 2>, double>;
+
+// One more frame of history: every offset's weight through the taps. Weights
+// below `cut` are dropped and the rest scaled to keep the chain's sum (the
+// taps' sum to the power of the steps).
+Chain step(const Chain& chain, const std::array<double, 16>& taps, std::array<int, 2> floor_v,
+           double cut) {
+  Chain next;
+  for (const auto& [at, c] : chain)
+    for (int b = 0; b < 4; ++b)
+      for (int a = 0; a < 4; ++a) {
+        const double w = c * taps[static_cast<size_t>(b * 4 + a)];
+        if (w != 0) next[{at[0] + floor_v[0] + a - 1, at[1] + floor_v[1] + b - 1}] += w;
+      }
+  double before = 0, after = 0;
+  for (const auto& [at, c] : next) before += c;
+  std::erase_if(next, [cut](const auto& e) { return std::abs(e.second) < cut; });
+  for (const auto& [at, c] : next) after += c;
+  if (after != before && after != 0)
+    for (auto& [at, c] : next) c *= before / after;
+  return next;
+}
+
+}  // namespace
+
+Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double>& age_weights,
+                  int k, std::array<int, 2> pixel) {
+  check_ratio(m.ratio);
+  validate(s);
+  if (s.frames[0].footprint.size != 1 || s.frames[0].set_count() != 1)
+    throw Error(fmt::format("sequence {}: a pan model jitters one-pixel frames", s.name));
+  if (!std::isfinite(m.velocity.x) || !std::isfinite(m.velocity.y))
+    throw ParameterError("velocity", ": not finite");
+  // The point a pixel came from is x - v: its texels start at x + floor(-v).
+  const std::array<int, 2> floor_v{static_cast<int>(std::floor(-m.velocity.x)),
+                                   static_cast<int>(std::floor(-m.velocity.y))};
+  const Vec2 fraction{-m.velocity.x - floor_v[0], -m.velocity.y - floor_v[1]};
+  const std::array<double, 16> taps = history_taps(m.history, fraction);
+  const Filter& h = m.reconstruction;
+  const int period = s.period();
+  Kernel out;
+  Chain chain{{{0, 0}, 1.0}};
+  for (size_t d = 0; d < age_weights.size(); ++d) {
+    const int f = ((k - static_cast<int>(d)) % period + period) % period;
+    const auto& jitter = s.frames[static_cast<size_t>(f)].sets[0];
+    const Vec2 moved{static_cast<double>(d) * m.velocity.x, static_cast<double>(d) * m.velocity.y};
+    for (const auto& [at, c] : chain) {
+      // The frame's reconstruction at display pixel y = pixel + at, as
+      // engine_taa.cpp's: every render pixel's sample within the filter's
+      // radius, weights normalized.
+      const double ux = to_render(pixel[0] + at[0], m.ratio),
+                   uy = to_render(pixel[1] + at[1], m.ratio);
+      const size_t first = out.w.size();
+      double total = 0;
+      for (const Vec2 j : jitter)
+        for (int b = static_cast<int>(std::floor(uy - h.radius() - 1));
+             b <= static_cast<int>(std::ceil(uy + h.radius() + 1)); ++b)
+          for (int a = static_cast<int>(std::floor(ux - h.radius() - 1));
+               a <= static_cast<int>(std::ceil(ux + h.radius() + 1)); ++a) {
+            const double dx = a + j.x - ux, dy = b + j.y - uy;
+            if (std::abs(dx) > h.radius() || std::abs(dy) > h.radius()) continue;
+            const double w = h.value(dx) * h.value(dy);
+            if (w == 0) continue;
+            out.x.push_back(m.ratio * dx + at[0] + moved.x);
+            out.y.push_back(m.ratio * dy + at[1] + moved.y);
+            out.w.push_back(w);
+            total += w;
+          }
+      if (!(std::abs(total) > 1e-9))
+        throw Error(fmt::format("the reconstruction filter {} gives frame {} of {} no weight",
+                                h.name(), f, s.name));
+      for (size_t i = first; i < out.w.size(); ++i) out.w[i] *= age_weights[d] * c / total;
+    }
+    chain = step(chain, taps, floor_v, m.chain_cut);
+  }
+  return out;
+}
+
+namespace {
+
+// A pixel whose render-grid phase is each of upscale_phases' (one axis).
+std::vector<int> phase_pixels(double ratio) {
+  std::vector<int> pixels;
+  for (const double phase : upscale_phases(ratio))
+    for (int x = 0; x < 64; ++x) {
+      const double u = to_render(x, ratio), f = u - std::floor(u);
+      if (std::abs(f - phase) < 1e-9 || std::abs(f - 1 - phase) < 1e-9) {
+        pixels.push_back(x);
+        break;
+      }
+    }
+  return pixels;
+}
+
+// One kernel's weights binned along the normal of one angle on the grid of
+// multiples of kPanBin: bin first + i holds the weight projected into
+// [(first + i) kPanBin, (first + i + 1) kPanBin) at its weighted mean
+// position (the bin's centre when its weights cancel), so that only the
+// spread within a bin is lost.
+struct Binned {
+  long first = 0;
+  std::vector<double> w, p;
+  double weight(long i) const {
+    return i >= first && i < first + static_cast<long>(w.size()) ? w[static_cast<size_t>(i - first)]
+                                                                 : 0.0;
+  }
+  double at(long i) const { return p[static_cast<size_t>(i - first)]; }
+};
+std::vector<Binned> bin_kernel(const Kernel& k, const Metric& metric) {
+  std::vector<Binned> out(static_cast<size_t>(metric.angle_count()));
+  double total = 0;
+  for (const double w : k.w) total += w;
+  std::vector<double> proj(k.w.size());
+  for (int a = 0; a < metric.angle_count(); ++a) {
+    Binned& b = out[static_cast<size_t>(a)];
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (size_t i = 0; i < k.w.size(); ++i) {
+      proj[i] = metric.cos(a) * k.y[i] - metric.sin(a) * k.x[i];
+      lo = std::min(lo, proj[i]);
+      hi = std::max(hi, proj[i]);
+    }
+    b.first = static_cast<long>(std::floor(lo / kPanBin));
+    const auto count =
+        static_cast<size_t>(static_cast<long>(std::floor(hi / kPanBin)) - b.first + 1);
+    b.w.assign(count, 0.0);
+    b.p.assign(count, 0.0);
+    for (size_t i = 0; i < k.w.size(); ++i) {
+      const auto at =
+          static_cast<size_t>(std::clamp(static_cast<long>(std::floor(proj[i] / kPanBin)) - b.first,
+                                         0L, static_cast<long>(count) - 1));
+      const double w = k.w[i] / total;  // the metric's kernels sum to 1
+      b.w[at] += w;
+      b.p[at] += w * proj[i];
+    }
+    for (size_t i = 0; i < count; ++i) {
+      const double edge = static_cast<double>(b.first + static_cast<long>(i)) * kPanBin;
+      b.p[i] = std::abs(b.w[i]) > 1e-12 ? std::clamp(b.p[i] / b.w[i], edge, edge + kPanBin)
+                                        : edge + kPanBin / 2;
+    }
+  }
+  return out;
+}
+
+// E1^2 of binned weights by the closed form (metric.h).
+double binned_e1_squared(const Binned& b, const Filter& f) {
+  double moment = 0, spread = 0, before = 0, before_p = 0;
+  for (size_t i = 0; i < b.w.size(); ++i) {
+    if (b.w[i] == 0) continue;
+    const double p = b.p[i];
+    moment += b.w[i] * f.abs_moment(p);
+    spread += b.w[i] * (before * p - before_p);
+    before += b.w[i];
+    before_p += b.w[i] * p;
+  }
+  return std::max(0.0, moment - spread - f.half_mean_distance());
+}
+
+// F: the integral of |the change of the step response| from one frame's
+// binned weights to the next's, over both frames' points in order.
+double binned_flicker(const Binned& from, const Binned& to) {
+  double running = 0, f = 0, last = 0;
+  bool started = false;
+  const auto step = [&](double p, double dw) {
+    if (started) f += std::abs(running) * (p - last);
+    running += dw;
+    last = p;
+    started = true;
+  };
+  const long lo = std::min(from.first, to.first),
+             hi = std::max(from.first + static_cast<long>(from.w.size()),
+                           to.first + static_cast<long>(to.w.size()));
+  for (long i = lo; i < hi; ++i) {
+    const double wa = from.weight(i), wb = to.weight(i);
+    const bool a = wa != 0, b = wb != 0;
+    if (a && b && to.at(i) < from.at(i)) {
+      step(to.at(i), wb);
+      step(from.at(i), -wa);
+      continue;
+    }
+    if (a) step(from.at(i), -wa);
+    if (b) step(to.at(i), wb);
+  }
+  return f;
+}
+
+}  // namespace
+
+PanReport evaluate_pan(const Sequence& s, PanModel m, double alpha, const Metric& metric) {
+  validate(s);
+  if (s.period() > kMaxPanFrames)
+    throw Error(fmt::format("sequence {}: {} frames; a pan's evaluation takes at most {}", s.name,
+                            s.period(), kMaxPanFrames));
+  m.chain_cut = std::max(m.chain_cut, kPanEvaluationChainCut);
+  const std::vector<double> ages = ema_age_weights(alpha, s.period(), kPanAgeCut);
+  const std::vector<int> pixels = phase_pixels(m.ratio);
+  const int period = s.period();
+  const size_t count = pixels.size() * pixels.size();
+  std::vector<double> e2(count), flicker(count);
+  tbb::parallel_for(size_t{0}, count, [&](size_t i) {
+    const std::array<int, 2> pixel{pixels[i / pixels.size()], pixels[i % pixels.size()]};
+    // One frame's bins at a time, and the first's for the last transition.
+    std::vector<double> values(static_cast<size_t>(metric.angle_count()));
+    const auto add_frame = [&](const std::vector<Binned>& now, const std::vector<Binned>& before) {
+      for (size_t a = 0; a < values.size(); ++a)
+        values[a] =
+            metric.weight_sq(static_cast<int>(a)) * binned_e1_squared(now[a], metric.filter());
+      e2[i] += combine_over_angles(values, metric.norm()) / period;
+      for (size_t a = 0; a < values.size(); ++a) {
+        const double f = binned_flicker(before[a], now[a]);
+        values[a] = metric.weight_sq(static_cast<int>(a)) * f * f;
+      }
+      flicker[i] += combine_over_angles(values, metric.norm()) / period;
+    };
+    const std::vector<Binned> first = bin_kernel(pan_kernel(s, m, ages, 0, pixel), metric);
+    std::vector<Binned> before = first;
+    for (int k = 1; k < period; ++k) {
+      std::vector<Binned> now = bin_kernel(pan_kernel(s, m, ages, k, pixel), metric);
+      add_frame(now, before);
+      before = std::move(now);
+    }
+    add_frame(first, before);
+  });
+  PanReport r;
+  for (size_t i = 0; i < count; ++i) {
+    r.mean_e2 += e2[i] / static_cast<double>(count);
+    r.flicker += flicker[i] / static_cast<double>(count);
+  }
+  return r;
+}
+
+Vec2 parse_velocity(std::string_view text) {
+  const size_t comma = text.find(',');
+  double v[2] = {0, 0};
+  bool ok = comma != std::string_view::npos;
+  for (int i = 0; ok && i < 2; ++i) {
+    const std::string part(i == 0 ? text.substr(0, comma) : text.substr(comma + 1));
+    size_t used = 0;
+    try {
+      v[i] = std::stod(part, &used);
+    } catch (const std::exception&) {
+      ok = false;
+    }
+    ok = ok && used == part.size() && std::abs(v[i]) <= kMaxPanSpeed;  // NaN fails too
+  }
+  if (!ok)
+    throw ParameterError("velocity", fmt::format(" '{}': give DX,DY, each finite and within "
+                                                 "+-{:g} pixels per frame",
+                                                 text, kMaxPanSpeed));
+  return {v[0], v[1]};
+}
+
+std::vector<std::vector<PanReport>> evaluate_pans(const std::vector<Sequence>& sequences,
+                                                  const EngineTaa& taa,
+                                                  const std::vector<Vec2>& velocities,
+                                                  const Metric& metric) {
+  for (const Vec2 v : velocities)
+    if (!(std::abs(v.x) <= kMaxPanSpeed && std::abs(v.y) <= kMaxPanSpeed))
+      throw ParameterError("velocity", fmt::format(" {},{}: each within +-{:g} pixels per frame",
+                                                   v.x, v.y, kMaxPanSpeed));
+  std::vector<std::vector<PanReport>> rows(sequences.size(),
+                                           std::vector<PanReport>(velocities.size()));
+  tbb::parallel_for(size_t{0}, rows.size() * velocities.size(), [&](size_t at) {
+    const size_t i = at / velocities.size(), k = at % velocities.size();
+    const Vec2 v = velocities[k];
+    const PanModel m{taa.ratio, taa.reconstruction, taa.history, v};
+    rows[i][k] = evaluate_pan(sequences[i], m, steady_alpha(taa, v.x != 0 || v.y != 0), metric);
+  });
+  return rows;
+}
+
+}  // namespace aapat
