@@ -190,10 +190,7 @@ width), top row first, values in [0, 1]), reference_image, refinement_map
         const auto [w, h] = size;
         if (!(w >= 8 && h >= 8 && w <= 4096 && h <= 4096))
           throw Error(fmt::format("engine_taa: size {}x{} is out of range 8..4096", w, h));
-        std::vector<std::pair<std::string, std::string>> overrides;
-        for (const auto& [key, value] : settings)
-          overrides.emplace_back(key.cast<std::string>(), py::str(value).cast<std::string>());
-        const EngineTaa t = make_engine_taa(taa, ratio, overrides);
+        const EngineTaa t = make_engine_taa(taa, ratio, taa_overrides_of(settings));
         const Sequence s =
             sequence.is_none() ? resolve_sequence(t.jitter)
             : py::isinstance<Sequence>(sequence)

@@ -143,10 +143,11 @@ jitter of an upscale (`--ratio`), each display pixel reconstructed by
   m.def(
       "sequence_pan",
       [](const std::vector<py::object>& sequences, const std::string& taa, double ratio,
+         const py::dict& settings,
          const std::optional<std::vector<std::pair<double, double>>>& velocities,
          const py::object& objective, const py::object& filter, const py::object& acuity,
          const py::object& norm) {
-        const EngineTaa t = make_engine_taa(taa, ratio, {});
+        const EngineTaa t = make_engine_taa(taa, ratio, taa_overrides_of(settings));
         std::vector<Sequence> seqs;
         for (const py::object& q : sequences)
           seqs.push_back(py::isinstance<Sequence>(q)
@@ -166,10 +167,11 @@ jitter of an upscale (`--ratio`), each display pixel reconstructed by
         return out;
       },
       py::arg("sequences"), py::kw_only(), py::arg("taa"), py::arg("ratio") = 1.0,
-      py::arg("velocities") = py::none(), AAPAT_OBJECTIVE_ARGS,
+      py::arg("settings") = py::dict(), py::arg("velocities") = py::none(), AAPAT_OBJECTIVE_ARGS,
       with_metric_args(R"doc(aapat sequence pan: the steady mean E2 and flicker of each sequence (a
 Sequence or a spec; a generator without frames= takes the upscaler's phases
 for ratio) under an engine preset's reconstruction, history sampler and blend
+(settings: overrides by key, as engine_taa's; rectification is not in the model)
 while the scene pans at each velocity ((dx, dy) display pixels per frame;
 (0, 0): still; default the command line's), by the linear model before
 rectification (docs/temporal.md). A list with one dict per sequence, the rows

@@ -65,6 +65,15 @@ py::object to_python(const JsonObject& json);
 
 // A library document's rows (a list of dicts with the CLI's keys), or its
 // values without "command" and "schema".
+// An engine preset's overrides from a dict {key: value} (values as text,
+// as `--taa-set KEY=VALUE` gives them).
+inline std::vector<std::pair<std::string, std::string>> taa_overrides_of(const py::dict& settings) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& [key, value] : settings)
+    out.emplace_back(key.cast<std::string>(), py::str(value).cast<std::string>());
+  return out;
+}
+
 inline py::object rows_of(const JsonObject& doc) {
   return to_python(doc.at("rows"));
 }

@@ -102,18 +102,6 @@ void resolve_moving_scene(AnimateOptions& o, AnimationSettings& a) {
       make_motion(o.still ? "static" : (o.motion.empty() ? "pan" : o.motion), a.width, a.height);
 }
 
-std::vector<std::pair<std::string, std::string>> taa_overrides(
-    const std::vector<std::string>& items) {
-  std::vector<std::pair<std::string, std::string>> out;
-  for (const std::string& item : items) {
-    const size_t eq = item.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw Error(fmt::format("--taa-set '{}': give KEY=VALUE (e.g. history=catmull-rom-9)", item));
-    out.emplace_back(item.substr(0, eq), item.substr(eq + 1));
-  }
-  return out;
-}
-
 std::string engine_csv(const EngineResult& r) {
   std::string csv = "frame,rmse,max_deviation,flip,flicker,ghosting,sharpness\n";
   for (size_t f = 0; f < r.frames.size(); ++f)
@@ -221,7 +209,7 @@ void run_animate(AnimateOptions& o, std::ostream& out, bool ratio_given) {
   std::optional<Accumulation> model;
   std::optional<EngineTaa> taa;
   if (engine) {
-    taa = make_engine_taa(o.taa, o.ratio, taa_overrides(o.taa_set));
+    taa = make_engine_taa(o.taa, o.ratio, parse_taa_overrides(o.taa_set));
     std::string warning;
     sequence = resolve_sequence_for_ratio(o.sequence.empty() ? taa->jitter : o.sequence, o.ratio,
                                           ratio_given ? &warning : nullptr);

@@ -354,6 +354,8 @@ std::vector<std::string> random_command() {
            "--velocity",
            *one_of({"0,0", "0.37,0.21", "1e9,0", "nan,1", "1", "a,b"})};
       maybe(a, "--ratio", {"1", "1.5", "0.5", "nan"});
+      maybe(a, "--taa-set",
+            {"history=catmull-rom-5", "alpha=0.2", "alpha=0", "bogus=1", "history"});
       maybe_flag(a, "--json");
       break;
   }

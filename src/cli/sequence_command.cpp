@@ -168,6 +168,7 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
   struct Options {
     std::vector<std::string> sequences, velocities{kPanVelocities.begin(), kPanVelocities.end()};
     std::string taa;
+    std::vector<std::string> taa_set;
     double ratio = 1;
     MetricOptions metric;
     bool json = false;
@@ -180,6 +181,10 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
   cmd->add_option("--taa", o->taa,
                   "the engine preset: its reconstruction, history sampler and blend")
       ->required();
+  cmd->add_option("--taa-set", o->taa_set,
+                  "KEY=VALUE: override one of the preset's settings, as `animate --taa-set` does "
+                  "(the model takes reconstruct, history and the blend's; rectification is not "
+                  "in it)");
   auto* ratio = cmd->add_option("--ratio", o->ratio, "display / render resolution (>= 1)")
                     ->capture_default_str();
   cmd->add_option(
@@ -192,7 +197,7 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
     if (!cmd->parsed()) return;
     const Objective objective = o->metric.resolve();
     const Metric metric = objective.metric();
-    const EngineTaa taa = make_engine_taa(o->taa, o->ratio, {});
+    const EngineTaa taa = make_engine_taa(o->taa, o->ratio, parse_taa_overrides(o->taa_set));
     std::vector<Vec2> velocities;
     for (const std::string& v : o->velocities) velocities.push_back(parse_velocity(v));
     std::vector<Sequence> sequences;

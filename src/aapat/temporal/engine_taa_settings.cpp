@@ -96,6 +96,19 @@ void apply(EngineTaa& t, const std::string& key, const std::string& value) {
 
 }  // namespace
 
+std::vector<std::pair<std::string, std::string>> parse_taa_overrides(
+    const std::vector<std::string>& items) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& item : items) {
+    const size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw ParameterError("taa-set",
+                           fmt::format(" '{}': give KEY=VALUE (e.g. history=catmull-rom-9)", item));
+    out.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+  }
+  return out;
+}
+
 EngineTaa make_engine_taa(std::string_view preset, double ratio,
                           const std::vector<std::pair<std::string, std::string>>& overrides) {
   check_ratio(ratio);

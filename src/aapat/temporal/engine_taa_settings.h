@@ -73,6 +73,11 @@ inline double to_render(double x, double ratio) {
 // naming it. Every face checks it this one way.
 void check_ratio(double ratio);
 
+// "KEY=VALUE" items (`--taa-set`) as make_engine_taa's overrides; throws
+// ParameterError naming taa-set for an item without a key and an '='.
+std::vector<std::pair<std::string, std::string>> parse_taa_overrides(
+    const std::vector<std::string>& items);
+
 // A preset at a ratio, with overrides (key, value text) applied in order.
 // Throws Error naming the unknown preset or key, or the value out of range.
 EngineTaa make_engine_taa(std::string_view preset, double ratio,
