@@ -212,6 +212,7 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
       JsonObject js = json_report("sequence pan");
       js.update(objective_json(objective));
       js["taa"] = o->taa;
+      js["taa_settings"] = engine_taa_text(taa);
       js["ratio"] = o->ratio;
       JsonObject::array_t list;
       for (size_t i = 0; i < sequences.size(); ++i)
@@ -220,9 +221,8 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
       out << json_text(js);
       return;
     }
-    out << fmt::format(
-        "{} at {:g}x, panning: steady mean E2 / mean flicker per velocity (px/frame); {}\n", o->taa,
-        o->ratio, objective.caption());
+    out << fmt::format("{}, panning: steady mean E2 / mean flicker per velocity (px/frame); {}\n",
+                       engine_taa_text(taa), objective.caption());
     size_t width = 8;
     for (const Sequence& s : sequences) width = std::max(width, s.name.size());
     out << fmt::format("{:<{}}", "sequence", width);
