@@ -63,8 +63,6 @@ inline Metric make_metric(const py::object& objective, const py::object& filter,
 // the same keys as the command line's --json.
 py::object to_python(const JsonObject& json);
 
-// A library document's rows (a list of dicts with the CLI's keys), or its
-// values without "command" and "schema".
 // An engine preset's overrides from a dict {key: value} (values as text,
 // as `--taa-set KEY=VALUE` gives them).
 inline std::vector<std::pair<std::string, std::string>> taa_overrides_of(const py::dict& settings) {
@@ -74,6 +72,8 @@ inline std::vector<std::pair<std::string, std::string>> taa_overrides_of(const p
   return out;
 }
 
+// A library document's rows (a list of dicts with the CLI's keys), or its
+// values without "command" and "schema".
 inline py::object rows_of(const JsonObject& doc) {
   return to_python(doc.at("rows"));
 }

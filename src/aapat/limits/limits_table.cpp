@@ -215,9 +215,11 @@ std::vector<Limit> make_table() {
        "`kMaxMotionPerFrame`, `render/motion.h`"},
       {"`sequence pan` (`sequence_pan`)",
        fmt::format("ratio finite in [1, {}]; velocities finite, within {} pixels per frame per "
-                   "axis; 1 to {} frames",
-                   number(kMaxUpscaleRatio), number(kMaxPanSpeed), kMaxPanFrames),
-       "`kMaxPanSpeed`, `kMaxPanFrames`, `temporal/pan_model.h`"},
+                   "axis; 1 to {} frames; at most {} samples in one pixel's kernel (a small "
+                   "alpha under a blurring history)",
+                   number(kMaxUpscaleRatio), number(kMaxPanSpeed), kMaxPanFrames,
+                   grouped(static_cast<uint64_t>(kMaxPanKernelSamples))),
+       "`kMaxPanSpeed`, `kMaxPanFrames`, `kMaxPanKernelSamples`, `temporal/pan_model.h`"},
       {"upscaler phases (`sequence phases --ratio`)", "ratio 1 to 16", "`upscaler_phase_count`"},
   };
 }

@@ -62,8 +62,7 @@ Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double
   validate(s);
   if (s.frames[0].footprint.size != 1 || s.frames[0].set_count() != 1)
     throw Error(fmt::format("sequence {}: a pan model jitters one-pixel frames", s.name));
-  if (!std::isfinite(m.velocity.x) || !std::isfinite(m.velocity.y))
-    throw ParameterError("velocity", ": not finite");
+  check_velocity(m.velocity);
   // The point a pixel came from is x - v: its texels start at x + floor(-v).
   const std::array<int, 2> floor_v{static_cast<int>(std::floor(-m.velocity.x)),
                                    static_cast<int>(std::floor(-m.velocity.y))};
@@ -72,37 +71,31 @@ Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double
   const Filter& h = m.reconstruction;
   const int period = s.period();
   Kernel out;
+  UpscaledSamples frame;  // one frame's reconstruction at one display pixel
   Chain chain{{{0, 0}, 1.0}};
   for (size_t d = 0; d < age_weights.size(); ++d) {
     const int f = ((k - static_cast<int>(d)) % period + period) % period;
     const auto& jitter = s.frames[static_cast<size_t>(f)].sets[0];
     const Vec2 moved{static_cast<double>(d) * m.velocity.x, static_cast<double>(d) * m.velocity.y};
     for (const auto& [at, c] : chain) {
-      // The frame's reconstruction at display pixel y = pixel + at, as
-      // engine_taa.cpp's: every render pixel's sample within the filter's
-      // radius, weights normalized.
-      const double ux = to_render(pixel[0] + at[0], m.ratio),
-                   uy = to_render(pixel[1] + at[1], m.ratio);
-      const size_t first = out.w.size();
-      double total = 0;
-      for (const Vec2 j : jitter)
-        for (int b = static_cast<int>(std::floor(uy - h.radius() - 1));
-             b <= static_cast<int>(std::ceil(uy + h.radius() + 1)); ++b)
-          for (int a = static_cast<int>(std::floor(ux - h.radius() - 1));
-               a <= static_cast<int>(std::ceil(ux + h.radius() + 1)); ++a) {
-            const double dx = a + j.x - ux, dy = b + j.y - uy;
-            if (std::abs(dx) > h.radius() || std::abs(dy) > h.radius()) continue;
-            const double w = h.value(dx) * h.value(dy);
-            if (w == 0) continue;
-            out.x.push_back(m.ratio * dx + at[0] + moved.x);
-            out.y.push_back(m.ratio * dy + at[1] + moved.y);
-            out.w.push_back(w);
-            total += w;
-          }
-      if (!(std::abs(total) > 1e-9))
+      // The frame's reconstruction at display pixel pixel + at.
+      frame.x.clear(), frame.y.clear(), frame.w.clear(), frame.frame.clear();
+      const double total = reconstruction_samples(
+          jitter, m.ratio, h,
+          {to_render(pixel[0] + at[0], m.ratio), to_render(pixel[1] + at[1], m.ratio)}, f, frame);
+      if (!(std::abs(total) > 1e-9))  // where the engine falls back to one sample
         throw Error(fmt::format("the reconstruction filter {} gives frame {} of {} no weight",
                                 h.name(), f, s.name));
-      for (size_t i = first; i < out.w.size(); ++i) out.w[i] *= age_weights[d] * c / total;
+      for (size_t i = 0; i < frame.w.size(); ++i) {
+        out.x.push_back(frame.x[i] + at[0] + moved.x);
+        out.y.push_back(frame.y[i] + at[1] + moved.y);
+        out.w.push_back(frame.w[i] * (age_weights[d] * c / total));
+      }
+      if (out.w.size() > kMaxPanKernelSamples)
+        throw Error(fmt::format(
+            "the pan's kernel passes {} samples at {} frames of history: the blend keeps too "
+            "many frames for this history sampler and velocity (raise alpha)",
+            kMaxPanKernelSamples, d + 1));
     }
     chain = step(chain, taps, floor_v, m.chain_cut);
   }
@@ -261,6 +254,13 @@ PanReport evaluate_pan(const Sequence& s, PanModel m, double alpha, const Metric
   return r;
 }
 
+void check_velocity(Vec2 v) {
+  if (!(std::abs(v.x) <= kMaxPanSpeed && std::abs(v.y) <= kMaxPanSpeed))  // NaN fails too
+    throw ParameterError("velocity", fmt::format(" {},{}: each finite and within +-{:g} pixels "
+                                                 "per frame",
+                                                 v.x, v.y, kMaxPanSpeed));
+}
+
 Vec2 parse_velocity(std::string_view text) {
   const size_t comma = text.find(',');
   double v[2] = {0, 0};
@@ -273,12 +273,11 @@ Vec2 parse_velocity(std::string_view text) {
     } catch (const std::exception&) {
       ok = false;
     }
-    ok = ok && used == part.size() && std::abs(v[i]) <= kMaxPanSpeed;  // NaN fails too
+    ok = ok && used == part.size();
   }
   if (!ok)
-    throw ParameterError("velocity", fmt::format(" '{}': give DX,DY, each finite and within "
-                                                 "+-{:g} pixels per frame",
-                                                 text, kMaxPanSpeed));
+    throw ParameterError("velocity", fmt::format(" '{}': give DX,DY in pixels per frame", text));
+  check_velocity({v[0], v[1]});
   return {v[0], v[1]};
 }
 
@@ -286,10 +285,7 @@ std::vector<std::vector<PanReport>> evaluate_pans(const std::vector<Sequence>& s
                                                   const EngineTaa& taa,
                                                   const std::vector<Vec2>& velocities,
                                                   const Metric& metric) {
-  for (const Vec2 v : velocities)
-    if (!(std::abs(v.x) <= kMaxPanSpeed && std::abs(v.y) <= kMaxPanSpeed))
-      throw ParameterError("velocity", fmt::format(" {},{}: each within +-{:g} pixels per frame",
-                                                   v.x, v.y, kMaxPanSpeed));
+  for (const Vec2 v : velocities) check_velocity(v);  // before any work starts
   std::vector<std::vector<PanReport>> rows(sequences.size(),
                                            std::vector<PanReport>(velocities.size()));
   tbb::parallel_for(size_t{0}, rows.size() * velocities.size(), [&](size_t at) {

@@ -28,6 +28,7 @@
 #include "aapat/core/pattern.h"
 #include "aapat/temporal/history_sampling.h"
 #include "aapat/temporal/sequence.h"
+#include "aapat/temporal/upscale_model.h"
 
 namespace aapat {
 
@@ -67,9 +68,16 @@ inline constexpr std::array<std::string_view, 5> kPanVelocities{"0,0", "0.37,0.2
 // is a kernel of up to a few hundred thousand samples per display phase).
 inline constexpr double kMaxPanSpeed = 16;
 inline constexpr int kMaxPanFrames = 128;
+// The most samples one pan kernel may hold (UE4's bilinear history at alpha
+// 0.04 needs about 600,000 at the evaluation's cuts): a small alpha under a
+// blurring history would otherwise grow it without bound.
+inline constexpr size_t kMaxPanKernelSamples = 4'000'000;
 
-// "DX,DY" (display pixels per frame); throws ParameterError naming
-// "velocity" unless both are finite and within kMaxPanSpeed.
+// Throws ParameterError naming "velocity" unless both components are finite
+// and within kMaxPanSpeed.
+void check_velocity(Vec2 v);
+
+// "DX,DY" (display pixels per frame), checked by check_velocity.
 Vec2 parse_velocity(std::string_view text);
 
 // The steady state of a sequence under the pan, as E2 and flicker are

@@ -133,5 +133,15 @@ TEST(PanModel, RefusesWhatItCannotModel) {
       ParameterError);
 }
 
+// A blend that keeps hundreds of frames under a bilinear history spreads
+// each old sample over ever more pixels: the kernel's size is refused, not
+// grown without bound.
+TEST(PanModel, RefusesAKernelPastItsLimit) {
+  const PanModel m{
+      1, make_filter("gaussian:sigma=0.47,radius=1.5"), HistorySampler::bilinear, {0.5, 0.5}};
+  EXPECT_THROW(
+      pan_kernel(make_sequence("halton:frames=4"), m, ema_age_weights(0.001, 4), 0, {0, 0}), Error);
+}
+
 }  // namespace
 }  // namespace aapat

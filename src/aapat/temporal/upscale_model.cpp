@@ -28,29 +28,37 @@ std::vector<double> upscale_phases(double ratio) {
   return spread;
 }
 
+double reconstruction_samples(const std::vector<Vec2>& jitter, double ratio, const Filter& h,
+                              Vec2 u, int frame, UpscaledSamples& out) {
+  double total = 0;
+  for (const Vec2 j : jitter)
+    for (int b = static_cast<int>(std::floor(u.y - h.radius() - 1));
+         b <= static_cast<int>(std::ceil(u.y + h.radius() + 1)); ++b)
+      for (int a = static_cast<int>(std::floor(u.x - h.radius() - 1));
+           a <= static_cast<int>(std::ceil(u.x + h.radius() + 1)); ++a) {
+        const double rx = a + j.x - u.x, ry = b + j.y - u.y;
+        if (std::abs(rx) > h.radius() || std::abs(ry) > h.radius()) continue;
+        const double w = h.value(rx) * h.value(ry);
+        if (w == 0) continue;
+        out.x.push_back(ratio * rx);
+        out.y.push_back(ratio * ry);
+        out.w.push_back(w);
+        out.frame.push_back(frame);
+        total += w;
+      }
+  return total;
+}
+
 UpscaledSamples upscaled_samples(const Sequence& s, double ratio, const Filter& h, Vec2 phase) {
   check_ratio(ratio);
   validate(s);
   if (s.frames[0].footprint.size != 1 || s.frames[0].set_count() != 1)
     throw Error(fmt::format("sequence {}: an upscale jitters one-pixel frames", s.name));
-  const int reach = static_cast<int>(std::ceil(h.radius())) + 1;
   UpscaledSamples out;
   for (int f = 0; f < s.period(); ++f) {
     const size_t first = out.w.size();
-    double total = 0;
-    for (const Vec2 j : s.frames[static_cast<size_t>(f)].sets[0])
-      for (int b = -reach; b <= reach; ++b)
-        for (int a = -reach; a <= reach; ++a) {
-          const double rx = a + j.x - phase.x, ry = b + j.y - phase.y;
-          if (std::abs(rx) > h.radius() || std::abs(ry) > h.radius()) continue;
-          const double w = h.value(rx) * h.value(ry);
-          if (w == 0) continue;
-          out.x.push_back(ratio * rx);
-          out.y.push_back(ratio * ry);
-          out.w.push_back(w);
-          out.frame.push_back(f);
-          total += w;
-        }
+    const double total =
+        reconstruction_samples(s.frames[static_cast<size_t>(f)].sets[0], ratio, h, phase, f, out);
     if (!(std::abs(total) > 1e-12))
       throw Error(
           fmt::format("the reconstruction filter {} gives frame {} of {} no weight at "

@@ -39,6 +39,15 @@ struct UpscaledSamples {
 UpscaledSamples upscaled_samples(const Sequence& s, double ratio, const Filter& reconstruction,
                                  Vec2 phase);
 
+// One frame's reconstruction at render point u (engine_taa.cpp's): each of
+// its jitter samples in every render pixel within the filter's radius of u,
+// appended to `out` as its offset from u in display pixels and its weight
+// h(dx) h(dy), unnormalized, tagged `frame`. Returns the weights' sum, which
+// the caller checks and divides by.
+double reconstruction_samples(const std::vector<Vec2>& jitter, double ratio,
+                              const Filter& reconstruction, Vec2 u, int frame,
+                              UpscaledSamples& out);
+
 // The kernels of the image shown at frame k (steady: frame k of the period
 // in steady state; else frame k after a cut), one per display phase (x
 // phases outer, y inner). The model must have no resolve (the
