@@ -95,11 +95,11 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
 
   m.def(
       "optimize_sequence",
-      [](int frames, int samples_per_frame, double flicker_weight, const std::string& measure,
-         int starts, uint64_t seed, int iterations, bool equal_weights, const std::string& api,
-         const std::string& model, double alpha, int window, const py::object& ratio,
-         const std::string& reconstruct, const py::object& objective, const py::object& filter,
-         const py::object& acuity, const py::object& norm) {
+      [](int frames, int samples_per_frame, double flicker_weight, double jitter_bound,
+         const std::string& measure, int starts, uint64_t seed, int iterations, bool equal_weights,
+         const std::string& api, const std::string& model, double alpha, int window,
+         const py::object& ratio, const std::string& reconstruct, const py::object& objective,
+         const py::object& filter, const py::object& acuity, const py::object& norm) {
         SequenceSearch s;
         if (!ratio.is_none()) {
           s.ratio = ratio.cast<double>();
@@ -108,6 +108,7 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
         s.frames = frames;
         s.samples_per_frame = samples_per_frame;
         s.flicker_weight = flicker_weight;
+        s.jitter_bound = jitter_bound;
         if (measure != "worst" && measure != "mean")
           throw Error("measure '" + measure + "': expected worst or mean");
         s.frame_measure = measure == "mean" ? FrameMeasure::mean : FrameMeasure::worst;
@@ -126,7 +127,8 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
       },
       py::kw_only(), py::arg("frames") = SequenceSearch{}.frames,
       py::arg("samples_per_frame") = SequenceSearch{}.samples_per_frame,
-      py::arg("flicker_weight") = SequenceSearch{}.flicker_weight, py::arg("measure") = "worst",
+      py::arg("flicker_weight") = SequenceSearch{}.flicker_weight,
+      py::arg("jitter_bound") = SequenceSearch{}.jitter_bound, py::arg("measure") = "worst",
       py::arg("starts") = SequenceSearch{}.starts, py::arg("seed") = SequenceSearch{}.seed,
       py::arg("iterations") = SequenceSearch{}.iterations, py::arg("equal_weights") = false,
       py::arg("api") = "", py::arg("model") = "ema", py::arg("alpha") = 0.1, py::arg("window") = 0,

@@ -34,6 +34,18 @@ def test_optimize_equals_the_cli_file(aapat_cli, tmp_path):
     assert r["j"] <= r["halton_j"]
 
 
+def test_a_jitter_bound_is_the_cli_s(aapat_cli, tmp_path):
+    out = str(tmp_path / "bounded.json")
+    aapat_cli("optimize", "--sequence", "4", "--starts", "2", "--jitter-bound", "0.3", "-o", out)
+    r = aapat.optimize_sequence(frames=4, starts=2, jitter_bound=0.3)
+    with open(out) as f:
+        assert r["result"].to_json() == f.read()
+    assert r["jitter_bound"] == 0.3
+    assert np.abs(np.array(json.loads(r["result"].to_json())["jitter"])).max() <= 0.3
+    with pytest.raises(aapat.Error, match="jitter_bound 0.7"):
+        aapat.optimize_sequence(frames=4, starts=1, jitter_bound=0.7)
+
+
 def test_bad_settings_raise_aapat_error():
     with pytest.raises(aapat.Error, match="alpha"):
         aapat.sequence_eval("halton:frames=4", alpha=0)

@@ -193,7 +193,7 @@ std::vector<std::string> metric_args(std::vector<std::string> args) {
 
 // A random command line of one of the commands, small enough to run fast.
 std::vector<std::string> random_command() {
-  const int which = uniform(0, 18);
+  const int which = uniform(0, 19);
   std::vector<std::string> a;
   switch (which) {
     case 0:
@@ -356,6 +356,16 @@ std::vector<std::string> random_command() {
       maybe(a, "--ratio", {"1", "1.5", "0.5", "nan"});
       maybe(a, "--taa-set",
             {"history=catmull-rom-5", "alpha=0.2", "alpha=0", "bogus=1", "history"});
+      maybe_flag(a, "--json");
+      break;
+    case 18:  // the sequence search, tiny
+      a = {"optimize", "--sequence", *one_of({"2", "3", "0"}),
+           "--starts", "1",          "--iterations",
+           "30",       "-o",         *one_of({"seq.json", "seq.txt"})};
+      maybe(a, "--jitter-bound", {"0.3", "0.05", "0.5", "0", "0.7", "nan"});
+      maybe(a, "--flicker-weight", {"1", "-1"});
+      maybe(a, "--api", {"vulkan", "nosuch"});
+      maybe(a, "--ratio", {"1.5", "0.5"});
       maybe_flag(a, "--json");
       break;
   }

@@ -98,6 +98,7 @@ struct OptimizeOptions {
   // --sequence K: a jitter / alternating-MSAA sequence instead of a pattern.
   int sequence = 0, samples_per_frame = 1;
   double flicker_weight = SequenceSearch{}.flicker_weight;
+  double jitter_bound = SequenceSearch{}.jitter_bound;
   std::string frame_measure = "worst";
   bool equal_weights = false;
   ModelOptions model;
@@ -123,6 +124,7 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   s.samples_per_frame = o.samples_per_frame;
   s.model = o.model.make();
   s.flicker_weight = o.flicker_weight;
+  s.jitter_bound = o.jitter_bound;
   s.frame_measure = o.frame_measure == "mean" ? FrameMeasure::mean : FrameMeasure::worst;
   s.optimize_weights = !o.equal_weights;
   s.starts = o.starts;
@@ -291,6 +293,10 @@ Action add_optimize_command(CLI::App& app) {
       ->check(CLI::Range(1, 16));
   cmd->add_option("--flicker-weight", o->flicker_weight,
                   "with --sequence: lambda of J = worst E2 + lambda mean flicker")
+      ->capture_default_str();
+  cmd->add_option("--jitter-bound", o->jitter_bound,
+                  "with --sequence: every jitter coordinate within +-B pixels (below 1/2: lower "
+                  "error on moving content under an engine's clamp, higher when still)")
       ->capture_default_str();
   cmd->add_flag("--equal-weights", o->equal_weights,
                 "with --sequence and several samples per frame: keep each frame's weights equal "

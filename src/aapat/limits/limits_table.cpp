@@ -32,6 +32,7 @@
 #include "aapat/temporal/engine_taa_settings.h"
 #include "aapat/temporal/pan_model.h"
 #include "aapat/temporal/sequence.h"
+#include "aapat/temporal/sequence_optimizer.h"
 #include "aapat/work/work_items.h"
 
 namespace aapat {
@@ -200,9 +201,10 @@ std::vector<Limit> make_table() {
        "`temporal/accumulation.h`"},
       {"`optimize --sequence`",
        fmt::format("1 to {} frames, 1 to 16 samples per frame, 1024 samples in all; "
-                   "`--flicker-weight` 0 to 1000; no `--resolve`; with `--ratio`: one sample per "
+                   "`--flicker-weight` 0 to 1000; `--jitter-bound` {} to 0.5 (with `--api`: at "
+                   "least 1/16); no `--resolve`; with `--ratio`: one sample per "
                    "frame, no `--api`, at most 400 Subplex evaluations per start",
-                   kMaxSequenceFrames),
+                   kMaxSequenceFrames, number(kMinJitterBound)),
        "`temporal/sequence_optimizer.h`"},
       {"engine TAA (`animate --taa`, `engine_taa`)",
        fmt::format("ratio finite in [1, {}]; warm-up 0 to {} frames; 1 to {} frames; a "

@@ -26,7 +26,13 @@ namespace aapat {
 namespace {
 
 constexpr double kBound = 0.5 - 1e-6;  // a jitter stays inside its pixel
-constexpr double kWeightBound = 2;     // |each free weight| of an MSAA frame
+
+// The box every coordinate of a jitter stays in: the pixel, or the search's
+// tighter --jitter-bound.
+double bound_of(const SequenceSearch& s) {
+  return std::min(s.jitter_bound, kBound);
+}
+constexpr double kWeightBound = 2;  // |each free weight| of an MSAA frame
 // Subplex's evaluations of the upscale's J per start (each a few tens of ms).
 constexpr int kMaxUpscaleEvaluations = 400;
 
@@ -343,7 +349,8 @@ std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
                                    : e.flicker_bound(static_cast<int>((i - m / 2) / per_block));
     x[bound] = std::max(x[bound], c[i]);  // c = term - 0
   }
-  std::vector<double> lo(n, -kBound), hi(n, kBound);
+  const double bound = bound_of(s);
+  std::vector<double> lo(n, -bound), hi(n, bound);
   for (size_t i = 2 * static_cast<size_t>(e.samples); i < e.s_index(); ++i)
     lo[i] = -kWeightBound, hi[i] = kWeightBound;  // weights: negative lobes allowed
   for (size_t i = e.s_index(); i < n; ++i) lo[i] = 0, hi[i] = HUGE_VAL;
@@ -364,7 +371,7 @@ std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
   nlopt_optimize(opt.get(), x.data(), &value);  // any stop: compared with the start below
   e.guard.rethrow();
   for (size_t i = 0; i < 2 * static_cast<size_t>(e.samples); ++i)
-    x[i] = std::clamp(x[i], -kBound, kBound);
+    x[i] = std::clamp(x[i], -bound, bound);
   x.resize(e.s_index());
   start.resize(e.s_index());
   const double got = sequence_objective(sequence_of(x, s, "x"), s, metric).objective;
@@ -378,8 +385,14 @@ Sequence lattice_polish(Sequence seq, const SequenceSearch& s, const Metric& met
   const bool y_down = s.profile->y_down;
   const double step = 1.0 / kLatticeSteps;
   // The addressable square (core/lattice.h): x in [-1/2, 1/2 - 1/16], y by the API.
-  const double x_lo = -0.5, x_hi = 0.5 - step, y_lo = y_down ? -0.5 + step : -0.5,
-               y_hi = y_down ? 0.5 : 0.5 - step;
+  // Within a --jitter-bound, the lattice points inside it.
+  const double b = std::floor(s.jitter_bound * kLatticeSteps + 1e-9) * step;
+  const double x_lo = std::max(-0.5, -b), x_hi = std::min(0.5 - step, b),
+               y_lo = std::max(y_down ? -0.5 + step : -0.5, -b),
+               y_hi = std::min(y_down ? 0.5 : 0.5 - step, b);
+  // Snapping may round a coordinate just past the bound: back inside first.
+  for (Pattern& frame : seq.frames)
+    for (Vec2& v : frame.sets[0]) v = {std::clamp(v.x, x_lo, x_hi), std::clamp(v.y, y_lo, y_hi)};
   double best = sequence_objective(seq, s, metric).objective;
   for (int pass = 0; pass < 200; ++pass) {
     bool moved = false;
@@ -430,6 +443,13 @@ void validate(const SequenceSearch& s) {
     throw ParameterError("starts", fmt::format(" {}: expected 1 to 100000", s.starts));
   if (s.iterations < 1)
     throw ParameterError("iterations", fmt::format(" {}: at least 1", s.iterations));
+  if (!(s.jitter_bound >= kMinJitterBound && s.jitter_bound <= 0.5))  // NaN fails too
+    throw ParameterError("jitter-bound", fmt::format(" {}: expected {} to 0.5 pixels",
+                                                     s.jitter_bound, kMinJitterBound));
+  if (s.profile && s.jitter_bound < 1.0 / kLatticeSteps)
+    throw ParameterError("jitter-bound",
+                         fmt::format(" {}: with --api at least one lattice step (1/{})",
+                                     s.jitter_bound, kLatticeSteps));
   if (s.reconstruction) {
     check_ratio(s.ratio);
     if (s.samples_per_frame != 1)
@@ -599,7 +619,7 @@ std::vector<double> run_upscale_start(const SequenceSearch& s, const Metric& met
   x.resize(static_cast<size_t>(2 * s.frames));
   const size_t n = x.size();
   SubplexData data{s, metric, name, {}};
-  std::vector<double> lo(n, -kBound), hi(n, kBound), step(n, 0.05);
+  std::vector<double> lo(n, -bound_of(s)), hi(n, bound_of(s)), step(n, 0.05);
   std::unique_ptr<nlopt_opt_s, decltype(&nlopt_destroy)> opt(
       nlopt_create(NLOPT_LN_SBPLX, static_cast<unsigned>(n)), nlopt_destroy);
   nlopt_set_lower_bounds(opt.get(), lo.data());
@@ -672,11 +692,13 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
                            : s.samples_per_frame == 1
                                ? fmt::format("aapat-taa-{}", s.frames)
                                : fmt::format("aapat-msaa-{}x{}", s.frames, s.samples_per_frame);
-  // Start 0: Halton (2, 3) from index 1, consecutive points per frame.
+  // Start 0: Halton (2, 3) from index 1, consecutive points per frame
+  // (clamped into a --jitter-bound).
+  const double bound = bound_of(s);
   std::vector<double> halton;
   for (int i = 1; i <= s.frames * s.samples_per_frame; ++i)
-    halton.push_back(std::clamp(radical_inverse_of(uint64_t(i), 2) - 0.5, -kBound, kBound)),
-        halton.push_back(std::clamp(radical_inverse_of(uint64_t(i), 3) - 0.5, -kBound, kBound));
+    halton.push_back(std::clamp(radical_inverse_of(uint64_t(i), 2) - 0.5, -bound, bound)),
+        halton.push_back(std::clamp(radical_inverse_of(uint64_t(i), 3) - 0.5, -bound, bound));
   const size_t positions = halton.size();
   if (s.samples_per_frame > 1 && s.optimize_weights)  // every frame's weights start equal
     halton.resize(positions + static_cast<size_t>(s.frames * (s.samples_per_frame - 1)),
@@ -687,7 +709,7 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
     std::vector<double> x = halton;
     if (start > 0) {
       std::mt19937_64 rng = start_rng(s.seed, static_cast<uint64_t>(start));
-      std::uniform_real_distribution<double> u(-kBound, kBound);
+      std::uniform_real_distribution<double> u(-bound, bound);
       for (size_t i = 0; i < positions; ++i) x[i] = u(rng);
     }
     x = s.reconstruction ? run_upscale_start(s, metric, name, x) : run_start(s, metric, x);
@@ -743,6 +765,7 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
       {"worst_e2", fmt::format("{:.6f}", r.worst_e2)},
       {"flicker", fmt::format("{:.6f}", r.flicker)}};
   if (s.profile) why.emplace_back("api", s.profile->name);
+  if (s.jitter_bound < 0.5) why.emplace_back("jitter_bound", fmt::format("{}", s.jitter_bound));
   if (s.reconstruction) {
     why.emplace_back("ratio", fmt::format("{:g}", s.ratio));
     why.emplace_back("reconstruction", s.reconstruction->name());

@@ -39,6 +39,8 @@ namespace aapat {
 // (which rendered RMSE over many frames follows more closely; docs/temporal.md).
 enum class FrameMeasure { worst, mean };
 
+inline constexpr double kMinJitterBound = 0.01;  // --jitter-bound's smallest
+
 struct SequenceSearch {
   int frames = 8;
   int samples_per_frame = 1;
@@ -50,6 +52,11 @@ struct SequenceSearch {
   bool optimize_weights = true;
   int starts = 16;
   uint64_t seed = 1;
+  // Every coordinate of every jitter within +-jitter_bound pixels. Below the
+  // pixel's 1/2, it trades still error for motion: under an engine's
+  // rectification, a tighter jitter gives lower error on moving content
+  // (docs/temporal.md, "Under motion").
+  double jitter_bound = 0.5;
   int iterations = 4000;                // NLopt evaluations per start
   const ApiProfile* profile = nullptr;  // snap to its lattice
   // Upscaling (temporal/upscale_model.h): the frames are one-sample jitters

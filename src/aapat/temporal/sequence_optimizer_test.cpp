@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter_catalog.h"
@@ -121,6 +124,44 @@ TEST(SequenceOptimizer, AnApiProfileKeepsEveryFrameOnTheLattice) {
     }
 }
 
+// A provenance entry's value ("" when absent).
+std::string provenance_value(const std::vector<std::pair<std::string, std::string>>& p,
+                             const std::string& key) {
+  for (const auto& [k, v] : p)
+    if (k == key) return v;
+  return "";
+}
+
+// --jitter-bound: every coordinate of the result within it, on the lattice
+// points inside it with an API profile; the provenance says it.
+TEST(SequenceOptimizer, AJitterBoundKeepsEveryCoordinateInside) {
+  SequenceSearch s;
+  s.frames = 4;
+  s.starts = 3;
+  s.jitter_bound = 0.2;
+  const SequenceSearchResult r = optimize_sequence(s, paper_max());
+  double widest = 0;
+  for (const Pattern& f : r.best.frames)
+    for (const Vec2 v : f.sets[0]) widest = std::max({widest, std::abs(v.x), std::abs(v.y)});
+  EXPECT_LE(widest, 0.2);
+  EXPECT_GT(widest, 0.19);  // four jitters want to spread: the bound binds
+  EXPECT_EQ(provenance_value(r.best.provenance, "jitter_bound"), "0.2");
+  s.profile = &api_profile("vulkan");
+  const SequenceSearchResult snapped = optimize_sequence(s, paper_max());
+  for (const Pattern& f : snapped.best.frames)
+    for (const Vec2 v : f.sets[0]) {
+      EXPECT_LE(std::abs(v.x), 3.0 / 16);  // 0.2 holds 3/16, not 4/16
+      EXPECT_LE(std::abs(v.y), 3.0 / 16);
+      EXPECT_EQ(v.x * 16, std::round(v.x * 16));
+      EXPECT_EQ(v.y * 16, std::round(v.y * 16));
+    }
+  // The default bound is the pixel's: no jitter_bound in the provenance.
+  s.jitter_bound = SequenceSearch{}.jitter_bound;
+  s.profile = nullptr;
+  EXPECT_EQ(provenance_value(optimize_sequence(s, paper_max()).best.provenance, "jitter_bound"),
+            "");
+}
+
 TEST(SequenceOptimizer, BadSettingsAreNamed) {
   using testing::error_parameter;
   SequenceSearch s;
@@ -130,6 +171,15 @@ TEST(SequenceOptimizer, BadSettingsAreNamed) {
   s.flicker_weight = std::nan("");
   EXPECT_EQ(error_parameter([&] { validate(s); }), "flicker-weight");
   s.flicker_weight = 1;
+  for (const double bound : {0.0, 0.6, std::nan("")}) {
+    s.jitter_bound = bound;
+    EXPECT_EQ(error_parameter([&] { validate(s); }), "jitter-bound");
+  }
+  s.jitter_bound = 0.05;
+  s.profile = &api_profile("vulkan");  // below one lattice step
+  EXPECT_EQ(error_parameter([&] { validate(s); }), "jitter-bound");
+  s.profile = nullptr;
+  s.jitter_bound = 0.5;
   s.model.resolve = make_filter("gaussian");
   EXPECT_EQ(error_parameter([&] { validate(s); }), "resolve");
   s.model.resolve.reset();

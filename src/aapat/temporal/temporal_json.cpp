@@ -34,7 +34,8 @@ JsonObject sequence_search_json(const SequenceSearch& s, std::string_view model,
   doc.update(JsonObject{{"frames", s.frames},
                         {"samples_per_frame", s.samples_per_frame},
                         {"model", model},
-                        {"flicker_weight", s.flicker_weight}});
+                        {"flicker_weight", s.flicker_weight},
+                        {"jitter_bound", s.jitter_bound}});
   doc.update(objective_json(objective));
   doc.update(JsonObject{{"seed", s.seed},
                         {"starts", s.starts},

@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# Does a tighter jitter win on moving content under an engine's clamp? A
+# sequence (a file or a catalog name) scaled toward the pixel centre by each
+# SCALE, against the engine's own sequence, through the full engine pipeline
+# (aapat animate SCENE --taa PRESET --json, 64x64, 32 frames after 64 of
+# warm-up) on COUNT scene files of random polygons and circles (seeded by
+# SEED, as scripts/engine-taa-motion-study.sh makes them), each panned at a
+# random velocity and then still. One line per scale: in how many scenes the
+# scaled sequence has the lower rmse and flicker, and the mean change.
+# Usage: SEED=77 COUNT=10 scripts/jitter-scale-study.sh ue4 1 aapat-taa-8 \
+#   ue4-halton:frames=8 1 0.95 0.9 (docs/temporal.md, "Under motion"). About
+# 4 minutes per 10 scenes and scale on 2 cores.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+aapat=${AAPAT:-$root/build/release/aapat}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+ROOT="$root" AAPAT="$aapat" WORK="$work" /usr/bin/python3 - "$@" <<'PY'
+import concurrent.futures, json, os, random, subprocess, sys
+
+aapat, work = os.environ["AAPAT"], os.environ["WORK"]
+preset, ratio, ours, theirs = sys.argv[1:5]
+scales = [float(s) for s in sys.argv[5:]]
+count, seed, size = int(os.environ.get("COUNT", 10)), int(os.environ.get("SEED", 77)), 64
+rng = random.Random(seed)
+scenes, pans = [], []
+for i in range(count):
+    shapes = []
+    for _ in range(rng.randint(3, 10)):
+        if rng.random() < 0.5:
+            cx, cy, r = rng.uniform(0, size), rng.uniform(0, size), rng.uniform(8, size / 2)
+            shapes.append({"polygon": [[cx + rng.uniform(-r, r), cy + rng.uniform(-r, r)]
+                                       for _ in range(rng.randint(3, 6))],
+                           "grey": round(rng.random(), 3)})
+        else:
+            shapes.append({"circle": [rng.uniform(0, size), rng.uniform(0, size)],
+                           "radius": rng.uniform(3, size / 4), "grey": round(rng.random(), 3)})
+    path = os.path.join(work, f"scene-{i}.json")
+    with open(path, "w") as f:
+        json.dump({"format": "aapat-scene", "background": round(rng.random(), 3),
+                   "shapes": shapes}, f)
+    scenes.append(path)
+    pans.append(f"pan:dx={rng.uniform(-1.5, 1.5):.3f},dy={rng.uniform(-1.5, 1.5):.3f}")
+
+# The sequence's file: a catalog name is data/sequences/NAME.json.
+catalog = os.path.join(os.environ["ROOT"], "data", "sequences", ours + ".json")
+base = json.load(open(ours if os.path.exists(ours) else catalog))
+scaled = {}
+for s in scales:
+    path = os.path.join(work, f"scaled-{s}.json")
+    with open(path, "w") as f:
+        json.dump({"format": "aapat-sequence", "version": 1, "name": f"{base['name']} x{s}",
+                   "family": "P(1,1,1)", "jitter": [[x * s, y * s] for x, y in base["jitter"]]}, f)
+    scaled[s] = path
+
+def run(scene, sequence, motion):
+    args = [aapat, "animate", scene, "--taa", preset, "--sequence", sequence, "--motion", motion,
+            "--size", str(size), "--json"] + (["--ratio", ratio] if ratio != "1" else [])
+    d = json.loads(subprocess.run(args, check=True, capture_output=True, text=True).stdout)
+    return d["rmse"], d["flicker"]
+
+jobs = {}
+with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
+    for i in range(count):
+        for still in (False, True):
+            motion = "static" if still else pans[i]
+            jobs[(i, still, None)] = pool.submit(run, scenes[i], theirs, motion)
+            for s in scales:
+                jobs[(i, still, s)] = pool.submit(run, scenes[i], scaled[s], motion)
+print(f"{preset} at ratio {ratio}, seed {seed}: {ours} scaled against {theirs}, {count} scenes")
+for s in scales:
+    cells = []
+    for still in (False, True):
+        rmse = flicker = 0
+        d_rmse = d_flicker = 0.0
+        for i in range(count):
+            a, b = jobs[(i, still, s)].result(), jobs[(i, still, None)].result()
+            rmse += a[0] < b[0]
+            flicker += a[1] < b[1]
+            d_rmse += (a[0] / b[0] - 1) / count
+            d_flicker += (a[1] / b[1] - 1) / count
+        cells.append(f"{'still' if still else 'moving'}: rmse {rmse}/{count} "
+                     f"({100 * d_rmse:+.2f} %), flicker {flicker}/{count} ({100 * d_flicker:+.2f} %)")
+    print(f"x{s}: " + "; ".join(cells))
+PY
