@@ -96,10 +96,11 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
   m.def(
       "optimize_sequence",
       [](int frames, int samples_per_frame, double flicker_weight, double jitter_bound,
-         const std::string& measure, int starts, uint64_t seed, int iterations, bool equal_weights,
-         const std::string& api, const std::string& model, double alpha, int window,
-         const py::object& ratio, const std::string& reconstruct, const py::object& objective,
-         const py::object& filter, const py::object& acuity, const py::object& norm) {
+         const py::object& jitter_radius, const std::string& measure, int starts, uint64_t seed,
+         int iterations, bool equal_weights, const std::string& api, const std::string& model,
+         double alpha, int window, const py::object& ratio, const std::string& reconstruct,
+         const py::object& objective, const py::object& filter, const py::object& acuity,
+         const py::object& norm) {
         SequenceSearch s;
         if (!ratio.is_none()) {
           s.ratio = ratio.cast<double>();
@@ -109,6 +110,7 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
         s.samples_per_frame = samples_per_frame;
         s.flicker_weight = flicker_weight;
         s.jitter_bound = jitter_bound;
+        if (!jitter_radius.is_none()) s.jitter_radius = jitter_radius.cast<double>();
         if (measure != "worst" && measure != "mean")
           throw Error("measure '" + measure + "': expected worst or mean");
         s.frame_measure = measure == "mean" ? FrameMeasure::mean : FrameMeasure::worst;
@@ -128,7 +130,8 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
       py::kw_only(), py::arg("frames") = SequenceSearch{}.frames,
       py::arg("samples_per_frame") = SequenceSearch{}.samples_per_frame,
       py::arg("flicker_weight") = SequenceSearch{}.flicker_weight,
-      py::arg("jitter_bound") = SequenceSearch{}.jitter_bound, py::arg("measure") = "worst",
+      py::arg("jitter_bound") = SequenceSearch{}.jitter_bound,
+      py::arg("jitter_radius") = py::none(), py::arg("measure") = "worst",
       py::arg("starts") = SequenceSearch{}.starts, py::arg("seed") = SequenceSearch{}.seed,
       py::arg("iterations") = SequenceSearch{}.iterations, py::arg("equal_weights") = false,
       py::arg("api") = "", py::arg("model") = "ema", py::arg("alpha") = 0.1, py::arg("window") = 0,

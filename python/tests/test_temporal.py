@@ -46,6 +46,20 @@ def test_a_jitter_bound_is_the_cli_s(aapat_cli, tmp_path):
         aapat.optimize_sequence(frames=4, starts=1, jitter_bound=0.7)
 
 
+def test_a_jitter_radius_is_the_cli_s(aapat_cli, tmp_path):
+    out = str(tmp_path / "disc.json")
+    aapat_cli("optimize", "--sequence", "4", "--starts", "2", "--jitter-radius", "0.3", "-o", out)
+    r = aapat.optimize_sequence(frames=4, starts=2, jitter_radius=0.3)
+    with open(out) as f:
+        assert r["result"].to_json() == f.read()
+    assert r["jitter_radius"] == 0.3
+    assert aapat.optimize_sequence(frames=4, starts=1)["jitter_radius"] is None
+    jitter = np.array(json.loads(r["result"].to_json())["jitter"])
+    assert np.hypot(jitter[:, 0], jitter[:, 1]).max() <= 0.3
+    with pytest.raises(aapat.Error, match="jitter_radius"):
+        aapat.optimize_sequence(frames=18, starts=1, ratio=1.5, jitter_radius=0.3)
+
+
 def test_bad_settings_raise_aapat_error():
     with pytest.raises(aapat.Error, match="alpha"):
         aapat.sequence_eval("halton:frames=4", alpha=0)

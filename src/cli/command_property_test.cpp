@@ -363,6 +363,7 @@ std::vector<std::string> random_command() {
            "--starts", "1",          "--iterations",
            "30",       "-o",         *one_of({"seq.json", "seq.txt"})};
       maybe(a, "--jitter-bound", {"0.3", "0.05", "0.5", "0", "0.7", "nan"});
+      maybe(a, "--jitter-radius", {"0.3", "0.05", "0.71", "0", "1", "inf"});
       maybe(a, "--flicker-weight", {"1", "-1"});
       maybe(a, "--api", {"vulkan", "nosuch"});
       maybe(a, "--ratio", {"1.5", "0.5"});

@@ -99,6 +99,7 @@ struct OptimizeOptions {
   int sequence = 0, samples_per_frame = 1;
   double flicker_weight = SequenceSearch{}.flicker_weight;
   double jitter_bound = SequenceSearch{}.jitter_bound;
+  std::optional<double> jitter_radius;
   std::string frame_measure = "worst";
   bool equal_weights = false;
   ModelOptions model;
@@ -125,6 +126,7 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   s.model = o.model.make();
   s.flicker_weight = o.flicker_weight;
   s.jitter_bound = o.jitter_bound;
+  s.jitter_radius = o.jitter_radius;
   s.frame_measure = o.frame_measure == "mean" ? FrameMeasure::mean : FrameMeasure::worst;
   s.optimize_weights = !o.equal_weights;
   s.starts = o.starts;
@@ -298,6 +300,9 @@ Action add_optimize_command(CLI::App& app) {
                   "with --sequence: every jitter coordinate within +-B pixels (below 1/2: lower "
                   "error on moving content under an engine's clamp, higher when still)")
       ->capture_default_str();
+  cmd->add_option("--jitter-radius", o->jitter_radius,
+                  "with --sequence: every jitter within R pixels of the pixel centre (what an "
+                  "engine's clamp prefers on moving content; not with --ratio)");
   cmd->add_flag("--equal-weights", o->equal_weights,
                 "with --sequence and several samples per frame: keep each frame's weights equal "
                 "(default: they move, summing to 1)");

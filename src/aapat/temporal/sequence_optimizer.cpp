@@ -30,7 +30,32 @@ constexpr double kBound = 0.5 - 1e-6;  // a jitter stays inside its pixel
 // The box every coordinate of a jitter stays in: the pixel, or the search's
 // tighter --jitter-bound.
 double bound_of(const SequenceSearch& s) {
-  return std::min(s.jitter_bound, kBound);
+  return std::min({s.jitter_bound, s.jitter_radius.value_or(kBound), kBound});
+}
+
+// Each sample's (x, y) among the first 2 * samples variables pulled onto
+// the --jitter-radius disc where it lies outside (along its radius).
+void into_disc(const SequenceSearch& s, double* x, size_t samples) {
+  if (!s.jitter_radius) return;
+  const double r = *s.jitter_radius;
+  for (size_t i = 0; i < samples; ++i) {
+    const double d = std::hypot(x[2 * i], x[2 * i + 1]);
+    if (d > r) x[2 * i] *= r / d, x[2 * i + 1] *= r / d;
+  }
+}
+
+// --jitter-radius as one SLSQP constraint per sample: x^2 + y^2 - R^2 <= 0.
+struct RadiusConstraint {
+  double radius;
+};
+void radius_constraints(unsigned m, double* result, unsigned n, const double* x, double* grad,
+                        void* data) {
+  const double r = static_cast<const RadiusConstraint*>(data)->radius;
+  if (grad) std::fill(grad, grad + static_cast<size_t>(m) * n, 0.0);
+  for (size_t i = 0; i < m; ++i) {
+    result[i] = x[2 * i] * x[2 * i] + x[2 * i + 1] * x[2 * i + 1] - r * r;
+    if (grad) grad[i * n + 2 * i] = 2 * x[2 * i], grad[i * n + 2 * i + 1] = 2 * x[2 * i + 1];
+  }
 }
 constexpr double kWeightBound = 2;  // |each free weight| of an MSAA frame
 // Subplex's evaluations of the upscale's J per start (each a few tens of ms).
@@ -363,6 +388,13 @@ std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
   const std::vector<double> tolerance(m, 1e-12);
   nlopt_add_inequality_mconstraint(opt.get(), static_cast<unsigned>(m), nlopt_constraints, &e,
                                    tolerance.data());
+  RadiusConstraint radius{s.jitter_radius.value_or(0)};
+  if (s.jitter_radius) {
+    into_disc(s, x.data(), static_cast<size_t>(e.samples));  // a feasible start
+    const std::vector<double> each(static_cast<size_t>(e.samples), 1e-12);
+    nlopt_add_inequality_mconstraint(opt.get(), static_cast<unsigned>(e.samples),
+                                     radius_constraints, &radius, each.data());
+  }
   nlopt_set_ftol_rel(opt.get(), 1e-12);
   nlopt_set_xtol_rel(opt.get(), 1e-12);
   nlopt_set_maxeval(opt.get(), s.iterations);
@@ -372,6 +404,7 @@ std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
   e.guard.rethrow();
   for (size_t i = 0; i < 2 * static_cast<size_t>(e.samples); ++i)
     x[i] = std::clamp(x[i], -bound, bound);
+  into_disc(s, x.data(), static_cast<size_t>(e.samples));  // SLSQP's tolerance
   x.resize(e.s_index());
   start.resize(e.s_index());
   const double got = sequence_objective(sequence_of(x, s, "x"), s, metric).objective;
@@ -390,9 +423,24 @@ Sequence lattice_polish(Sequence seq, const SequenceSearch& s, const Metric& met
   const double x_lo = std::max(-0.5, -b), x_hi = std::min(0.5 - step, b),
                y_lo = std::max(y_down ? -0.5 + step : -0.5, -b),
                y_hi = std::min(y_down ? 0.5 : 0.5 - step, b);
-  // Snapping may round a coordinate just past the bound: back inside first.
+  const double radius = s.jitter_radius.value_or(HUGE_VAL) + 1e-12;
+  const auto inside = [&](Vec2 v) { return std::hypot(v.x, v.y) <= radius; };
+  // Snapping may round a coordinate just past the bound: back inside first,
+  // and off the --jitter-radius disc to the nearest lattice point in it.
   for (Pattern& frame : seq.frames)
-    for (Vec2& v : frame.sets[0]) v = {std::clamp(v.x, x_lo, x_hi), std::clamp(v.y, y_lo, y_hi)};
+    for (Vec2& v : frame.sets[0]) {
+      v = {std::clamp(v.x, x_lo, x_hi), std::clamp(v.y, y_lo, y_hi)};
+      if (inside(v)) continue;
+      Vec2 nearest{0, 0};  // the centre is a lattice point of every API
+      for (int i = -kLatticeSteps / 2; i <= kLatticeSteps / 2; ++i)
+        for (int j = -kLatticeSteps / 2; j <= kLatticeSteps / 2; ++j) {
+          const Vec2 q{i * step, j * step};
+          if (q.x < x_lo || q.x > x_hi || q.y < y_lo || q.y > y_hi || !inside(q)) continue;
+          if (std::hypot(q.x - v.x, q.y - v.y) < std::hypot(nearest.x - v.x, nearest.y - v.y))
+            nearest = q;
+        }
+      v = nearest;
+    }
   double best = sequence_objective(seq, s, metric).objective;
   for (int pass = 0; pass < 200; ++pass) {
     bool moved = false;
@@ -404,6 +452,10 @@ Sequence lattice_polish(Sequence seq, const SequenceSearch& s, const Metric& met
             const double old = c, lo = axis == 0 ? x_lo : y_lo, hi = axis == 0 ? x_hi : y_hi;
             if (old + d < lo - 1e-12 || old + d > hi + 1e-12) continue;
             c = old + d;
+            if (!inside(v)) {
+              c = old;
+              continue;
+            }
             const double j = sequence_objective(seq, s, metric).objective;
             if (j < best - 1e-12) {
               best = j;
@@ -446,6 +498,17 @@ void validate(const SequenceSearch& s) {
   if (!(s.jitter_bound >= kMinJitterBound && s.jitter_bound <= 0.5))  // NaN fails too
     throw ParameterError("jitter-bound", fmt::format(" {}: expected {} to 0.5 pixels",
                                                      s.jitter_bound, kMinJitterBound));
+  if (s.jitter_radius) {
+    const double r = *s.jitter_radius;
+    if (!(r >= kMinJitterBound && r <= kMaxJitterRadius))  // NaN fails too
+      throw ParameterError("jitter-radius", fmt::format(" {}: expected {} to {} pixels", r,
+                                                        kMinJitterBound, kMaxJitterRadius));
+    if (s.reconstruction)
+      throw ParameterError("jitter-radius",
+                           fmt::format(" {}: the upscale's search (--ratio, Subplex) takes no "
+                                       "constraint; bound its box with --jitter-bound instead",
+                                       r));
+  }
   if (s.profile && s.jitter_bound < 1.0 / kLatticeSteps)
     throw ParameterError("jitter-bound",
                          fmt::format(" {}: with --api at least one lattice step (1/{})",
@@ -700,6 +763,7 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
     halton.push_back(std::clamp(radical_inverse_of(uint64_t(i), 2) - 0.5, -bound, bound)),
         halton.push_back(std::clamp(radical_inverse_of(uint64_t(i), 3) - 0.5, -bound, bound));
   const size_t positions = halton.size();
+  into_disc(s, halton.data(), positions / 2);
   if (s.samples_per_frame > 1 && s.optimize_weights)  // every frame's weights start equal
     halton.resize(positions + static_cast<size_t>(s.frames * (s.samples_per_frame - 1)),
                   1.0 / s.samples_per_frame);
@@ -711,6 +775,7 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
       std::mt19937_64 rng = start_rng(s.seed, static_cast<uint64_t>(start));
       std::uniform_real_distribution<double> u(-bound, bound);
       for (size_t i = 0; i < positions; ++i) x[i] = u(rng);
+      into_disc(s, x.data(), positions / 2);
     }
     x = s.reconstruction ? run_upscale_start(s, metric, name, x) : run_start(s, metric, x);
     ByteWriter w;
@@ -766,6 +831,7 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
       {"flicker", fmt::format("{:.6f}", r.flicker)}};
   if (s.profile) why.emplace_back("api", s.profile->name);
   if (s.jitter_bound < 0.5) why.emplace_back("jitter_bound", fmt::format("{}", s.jitter_bound));
+  if (s.jitter_radius) why.emplace_back("jitter_radius", fmt::format("{}", *s.jitter_radius));
   if (s.reconstruction) {
     why.emplace_back("ratio", fmt::format("{:g}", s.ratio));
     why.emplace_back("reconstruction", s.reconstruction->name());

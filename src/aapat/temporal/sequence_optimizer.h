@@ -39,7 +39,8 @@ namespace aapat {
 // (which rendered RMSE over many frames follows more closely; docs/temporal.md).
 enum class FrameMeasure { worst, mean };
 
-inline constexpr double kMinJitterBound = 0.01;  // --jitter-bound's smallest
+inline constexpr double kMinJitterBound = 0.01;   // --jitter-bound's and --jitter-radius's smallest
+inline constexpr double kMaxJitterRadius = 0.71;  // past the pixel's corner: no constraint
 
 struct SequenceSearch {
   int frames = 8;
@@ -57,6 +58,10 @@ struct SequenceSearch {
   // rectification, a tighter jitter gives lower error on moving content
   // (docs/temporal.md, "Under motion").
   double jitter_bound = 0.5;
+  // Every jitter within this distance of the pixel centre (SLSQP: one
+  // constraint per sample; not with an upscale's Subplex). The clamp wants
+  // a small radius, not a small box (docs/temporal.md, "Under motion").
+  std::optional<double> jitter_radius;
   int iterations = 4000;                // NLopt evaluations per start
   const ApiProfile* profile = nullptr;  // snap to its lattice
   // Upscaling (temporal/upscale_model.h): the frames are one-sample jitters

@@ -162,6 +162,31 @@ TEST(SequenceOptimizer, AJitterBoundKeepsEveryCoordinateInside) {
             "");
 }
 
+// --jitter-radius: every jitter within R of the centre (on the lattice
+// points inside the disc with an API profile), the constraint binding, and
+// the result no worse than its start projected onto the disc.
+TEST(SequenceOptimizer, AJitterRadiusKeepsEveryJitterInsideTheDisc) {
+  SequenceSearch s;
+  s.frames = 5;
+  s.starts = 3;
+  s.jitter_radius = 0.25;
+  const SequenceSearchResult r = optimize_sequence(s, paper_max());
+  double widest = 0;
+  for (const Pattern& f : r.best.frames)
+    for (const Vec2 v : f.sets[0]) widest = std::max(widest, std::hypot(v.x, v.y));
+  EXPECT_LE(widest, 0.25);
+  EXPECT_GT(widest, 0.249);  // five jitters want to spread: the disc binds
+  EXPECT_EQ(provenance_value(r.best.provenance, "jitter_radius"), "0.25");
+  s.profile = &api_profile("vulkan");
+  const SequenceSearchResult snapped = optimize_sequence(s, paper_max());
+  for (const Pattern& f : snapped.best.frames)
+    for (const Vec2 v : f.sets[0]) {
+      EXPECT_LE(std::hypot(v.x, v.y), 0.25);
+      EXPECT_EQ(v.x * 16, std::round(v.x * 16));
+      EXPECT_EQ(v.y * 16, std::round(v.y * 16));
+    }
+}
+
 TEST(SequenceOptimizer, BadSettingsAreNamed) {
   using testing::error_parameter;
   SequenceSearch s;
@@ -180,6 +205,17 @@ TEST(SequenceOptimizer, BadSettingsAreNamed) {
   EXPECT_EQ(error_parameter([&] { validate(s); }), "jitter-bound");
   s.profile = nullptr;
   s.jitter_bound = 0.5;
+  for (const double radius : {0.0, 0.8, std::nan("")}) {
+    s.jitter_radius = radius;
+    EXPECT_EQ(error_parameter([&] { validate(s); }), "jitter-radius");
+  }
+  s.jitter_radius = 0.3;
+  s.ratio = 1.5;  // the upscale's Subplex takes no constraint
+  s.reconstruction = make_filter("lanczos:lobes=2");
+  EXPECT_EQ(error_parameter([&] { validate(s); }), "jitter-radius");
+  s.jitter_radius.reset();
+  s.reconstruction.reset();
+  s.ratio = 1;
   s.model.resolve = make_filter("gaussian");
   EXPECT_EQ(error_parameter([&] { validate(s); }), "resolve");
   s.model.resolve.reset();

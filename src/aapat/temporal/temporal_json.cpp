@@ -31,11 +31,13 @@ JsonObject temporal_report_json(const Sequence& s, const TemporalReport& r) {
 JsonObject sequence_search_json(const SequenceSearch& s, std::string_view model,
                                 const Objective& objective, const SequenceSearchResult& r) {
   JsonObject doc = json_report("optimize");
-  doc.update(JsonObject{{"frames", s.frames},
-                        {"samples_per_frame", s.samples_per_frame},
-                        {"model", model},
-                        {"flicker_weight", s.flicker_weight},
-                        {"jitter_bound", s.jitter_bound}});
+  doc.update(JsonObject{
+      {"frames", s.frames},
+      {"samples_per_frame", s.samples_per_frame},
+      {"model", model},
+      {"flicker_weight", s.flicker_weight},
+      {"jitter_bound", s.jitter_bound},
+      {"jitter_radius", s.jitter_radius ? JsonObject(*s.jitter_radius) : JsonObject(nullptr)}});
   doc.update(objective_json(objective));
   doc.update(JsonObject{{"seed", s.seed},
                         {"starts", s.starts},
