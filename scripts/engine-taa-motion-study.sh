@@ -19,30 +19,14 @@ aapat=${AAPAT:-$root/build/release/aapat}
 count=${1:-12}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-AAPAT="$aapat" WORK="$work" COUNT="$count" /usr/bin/python3 - <<'PY'
-import concurrent.futures, json, os, random, subprocess
+AAPAT="$aapat" WORK="$work" COUNT="$count" PYTHONPATH="$root/scripts" /usr/bin/python3 - <<'PY'
+import concurrent.futures, json, os, subprocess
+
+import random_scenes
 
 aapat, work, count = os.environ["AAPAT"], os.environ["WORK"], int(os.environ["COUNT"])
 size = 64
-rng = random.Random(2026)
-scenes, pans = [], []
-for i in range(count):
-    shapes = []
-    for _ in range(rng.randint(3, 10)):
-        if rng.random() < 0.5:
-            cx, cy, r = rng.uniform(0, size), rng.uniform(0, size), rng.uniform(8, size / 2)
-            shapes.append({"polygon": [[cx + rng.uniform(-r, r), cy + rng.uniform(-r, r)]
-                                       for _ in range(rng.randint(3, 6))],
-                           "grey": round(rng.random(), 3)})
-        else:
-            shapes.append({"circle": [rng.uniform(0, size), rng.uniform(0, size)],
-                           "radius": rng.uniform(3, size / 4), "grey": round(rng.random(), 3)})
-    path = os.path.join(work, f"scene-{i}.json")
-    with open(path, "w") as f:
-        json.dump({"format": "aapat-scene", "background": round(rng.random(), 3),
-                   "shapes": shapes}, f)
-    scenes.append(path)
-    pans.append(f"pan:dx={rng.uniform(-1.5, 1.5):.3f},dy={rng.uniform(-1.5, 1.5):.3f}")
+scenes, pans = random_scenes.make(count, 2026, work, size)
 
 cases = [("fsr2", "1.5", "aapat-upscale-1.5", "halton"),
          ("ue4", "1", "aapat-taa-8", "ue4-halton:frames=8")]

@@ -15,32 +15,16 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 aapat=${AAPAT:-$root/build/release/aapat}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-ROOT="$root" AAPAT="$aapat" WORK="$work" /usr/bin/python3 - "$@" <<'PY'
-import concurrent.futures, json, os, random, subprocess, sys
+ROOT="$root" AAPAT="$aapat" WORK="$work" PYTHONPATH="$root/scripts" /usr/bin/python3 - "$@" <<'PY'
+import concurrent.futures, json, os, subprocess, sys
+
+import random_scenes
 
 aapat, work = os.environ["AAPAT"], os.environ["WORK"]
 preset, ratio, ours, theirs = sys.argv[1:5]
 scales = [float(s) for s in sys.argv[5:]]
 count, seed, size = int(os.environ.get("COUNT", 10)), int(os.environ.get("SEED", 77)), 64
-rng = random.Random(seed)
-scenes, pans = [], []
-for i in range(count):
-    shapes = []
-    for _ in range(rng.randint(3, 10)):
-        if rng.random() < 0.5:
-            cx, cy, r = rng.uniform(0, size), rng.uniform(0, size), rng.uniform(8, size / 2)
-            shapes.append({"polygon": [[cx + rng.uniform(-r, r), cy + rng.uniform(-r, r)]
-                                       for _ in range(rng.randint(3, 6))],
-                           "grey": round(rng.random(), 3)})
-        else:
-            shapes.append({"circle": [rng.uniform(0, size), rng.uniform(0, size)],
-                           "radius": rng.uniform(3, size / 4), "grey": round(rng.random(), 3)})
-    path = os.path.join(work, f"scene-{i}.json")
-    with open(path, "w") as f:
-        json.dump({"format": "aapat-scene", "background": round(rng.random(), 3),
-                   "shapes": shapes}, f)
-    scenes.append(path)
-    pans.append(f"pan:dx={rng.uniform(-1.5, 1.5):.3f},dy={rng.uniform(-1.5, 1.5):.3f}")
+scenes, pans = random_scenes.make(count, seed, work, size)
 
 # The sequence's file: a catalog name is data/sequences/NAME.json.
 catalog = os.path.join(os.environ["ROOT"], "data", "sequences", ours + ".json")

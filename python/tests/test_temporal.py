@@ -34,28 +34,24 @@ def test_optimize_equals_the_cli_file(aapat_cli, tmp_path):
     assert r["j"] <= r["halton_j"]
 
 
-def test_a_jitter_bound_is_the_cli_s(aapat_cli, tmp_path):
+@pytest.mark.parametrize("key,distance", [
+    ("jitter_bound", lambda j: np.abs(j).max(axis=1)),
+    ("jitter_radius", lambda j: np.hypot(j[:, 0], j[:, 1]))])
+def test_a_jitter_bound_or_radius_is_the_cli_s(aapat_cli, tmp_path, key, distance):
     out = str(tmp_path / "bounded.json")
-    aapat_cli("optimize", "--sequence", "4", "--starts", "2", "--jitter-bound", "0.3", "-o", out)
-    r = aapat.optimize_sequence(frames=4, starts=2, jitter_bound=0.3)
+    aapat_cli("optimize", "--sequence", "4", "--starts", "2", "--" + key.replace("_", "-"), "0.3",
+              "-o", out)
+    r = aapat.optimize_sequence(frames=4, starts=2, **{key: 0.3})
     with open(out) as f:
         assert r["result"].to_json() == f.read()
-    assert r["jitter_bound"] == 0.3
-    assert np.abs(np.array(json.loads(r["result"].to_json())["jitter"])).max() <= 0.3
-    with pytest.raises(aapat.Error, match="jitter_bound 0.7"):
-        aapat.optimize_sequence(frames=4, starts=1, jitter_bound=0.7)
+    assert r[key] == 0.3
+    assert distance(np.array(json.loads(r["result"].to_json())["jitter"])).max() <= 0.3
+    with pytest.raises(aapat.Error, match=key + " 0.8"):
+        aapat.optimize_sequence(frames=4, starts=1, **{key: 0.8})
 
 
-def test_a_jitter_radius_is_the_cli_s(aapat_cli, tmp_path):
-    out = str(tmp_path / "disc.json")
-    aapat_cli("optimize", "--sequence", "4", "--starts", "2", "--jitter-radius", "0.3", "-o", out)
-    r = aapat.optimize_sequence(frames=4, starts=2, jitter_radius=0.3)
-    with open(out) as f:
-        assert r["result"].to_json() == f.read()
-    assert r["jitter_radius"] == 0.3
+def test_no_radius_by_default_and_none_with_a_ratio():
     assert aapat.optimize_sequence(frames=4, starts=1)["jitter_radius"] is None
-    jitter = np.array(json.loads(r["result"].to_json())["jitter"])
-    assert np.hypot(jitter[:, 0], jitter[:, 1]).max() <= 0.3
     with pytest.raises(aapat.Error, match="jitter_radius"):
         aapat.optimize_sequence(frames=18, starts=1, ratio=1.5, jitter_radius=0.3)
 

@@ -1,5 +1,6 @@
 #include "aapat/temporal/sequence_optimizer.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -132,59 +133,43 @@ std::string provenance_value(const std::vector<std::pair<std::string, std::strin
   return "";
 }
 
-// --jitter-bound: every coordinate of the result within it, on the lattice
-// points inside it with an API profile; the provenance says it.
-TEST(SequenceOptimizer, AJitterBoundKeepsEveryCoordinateInside) {
-  SequenceSearch s;
-  s.frames = 4;
-  s.starts = 3;
-  s.jitter_bound = 0.2;
-  const SequenceSearchResult r = optimize_sequence(s, paper_max());
-  double widest = 0;
-  for (const Pattern& f : r.best.frames)
-    for (const Vec2 v : f.sets[0]) widest = std::max({widest, std::abs(v.x), std::abs(v.y)});
-  EXPECT_LE(widest, 0.2);
-  EXPECT_GT(widest, 0.19);  // four jitters want to spread: the bound binds
-  EXPECT_EQ(provenance_value(r.best.provenance, "jitter_bound"), "0.2");
-  s.profile = &api_profile("vulkan");
-  const SequenceSearchResult snapped = optimize_sequence(s, paper_max());
-  for (const Pattern& f : snapped.best.frames)
-    for (const Vec2 v : f.sets[0]) {
-      EXPECT_LE(std::abs(v.x), 3.0 / 16);  // 0.2 holds 3/16, not 4/16
-      EXPECT_LE(std::abs(v.y), 3.0 / 16);
-      EXPECT_EQ(v.x * 16, std::round(v.x * 16));
-      EXPECT_EQ(v.y * 16, std::round(v.y * 16));
-    }
-  // The default bound is the pixel's: no jitter_bound in the provenance.
-  s.jitter_bound = SequenceSearch{}.jitter_bound;
-  s.profile = nullptr;
-  EXPECT_EQ(provenance_value(optimize_sequence(s, paper_max()).best.provenance, "jitter_bound"),
+// --jitter-bound (a box) and --jitter-radius (a disc): every jitter of the
+// result inside, the bound binding (the jitters want to spread), the lattice
+// points inside with an API profile, and the provenance saying it (nothing
+// at the default).
+TEST(SequenceOptimizer, AJitterBoundOrRadiusKeepsEveryJitterInside) {
+  struct Case {
+    std::string key;
+    double limit, on_lattice;  // 0.2 holds 3/16 of a box, 0.25 a disc's 4/16 points
+    double (*distance)(Vec2);
+  };
+  const Case cases[] = {{"jitter_bound", 0.2, 3.0 / 16,
+                         [](Vec2 v) { return std::max(std::abs(v.x), std::abs(v.y)); }},
+                        {"jitter_radius", 0.25, 0.25, [](Vec2 v) { return std::hypot(v.x, v.y); }}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.key);
+    SequenceSearch s;
+    s.frames = 5;
+    s.starts = 3;
+    (c.key == "jitter_bound" ? s.jitter_bound : s.jitter_radius.emplace()) = c.limit;
+    double widest = 0;
+    const SequenceSearchResult r = optimize_sequence(s, paper_max());
+    for (const Pattern& f : r.best.frames)
+      for (const Vec2 v : f.sets[0]) widest = std::max(widest, c.distance(v));
+    EXPECT_LE(widest, c.limit);
+    EXPECT_GT(widest, c.limit - 0.01);
+    EXPECT_EQ(provenance_value(r.best.provenance, c.key), fmt::format("{}", c.limit));
+    s.profile = &api_profile("vulkan");
+    for (const Pattern& f : optimize_sequence(s, paper_max()).best.frames)
+      for (const Vec2 v : f.sets[0]) {
+        EXPECT_LE(c.distance(v), c.on_lattice + 1e-12);
+        EXPECT_EQ(v.x * 16, std::round(v.x * 16));
+        EXPECT_EQ(v.y * 16, std::round(v.y * 16));
+      }
+  }
+  EXPECT_EQ(provenance_value(optimize_sequence(SequenceSearch{}, paper_max()).best.provenance,
+                             "jitter_bound"),
             "");
-}
-
-// --jitter-radius: every jitter within R of the centre (on the lattice
-// points inside the disc with an API profile), the constraint binding, and
-// the result no worse than its start projected onto the disc.
-TEST(SequenceOptimizer, AJitterRadiusKeepsEveryJitterInsideTheDisc) {
-  SequenceSearch s;
-  s.frames = 5;
-  s.starts = 3;
-  s.jitter_radius = 0.25;
-  const SequenceSearchResult r = optimize_sequence(s, paper_max());
-  double widest = 0;
-  for (const Pattern& f : r.best.frames)
-    for (const Vec2 v : f.sets[0]) widest = std::max(widest, std::hypot(v.x, v.y));
-  EXPECT_LE(widest, 0.25);
-  EXPECT_GT(widest, 0.249);  // five jitters want to spread: the disc binds
-  EXPECT_EQ(provenance_value(r.best.provenance, "jitter_radius"), "0.25");
-  s.profile = &api_profile("vulkan");
-  const SequenceSearchResult snapped = optimize_sequence(s, paper_max());
-  for (const Pattern& f : snapped.best.frames)
-    for (const Vec2 v : f.sets[0]) {
-      EXPECT_LE(std::hypot(v.x, v.y), 0.25);
-      EXPECT_EQ(v.x * 16, std::round(v.x * 16));
-      EXPECT_EQ(v.y * 16, std::round(v.y * 16));
-    }
 }
 
 TEST(SequenceOptimizer, BadSettingsAreNamed) {
