@@ -2,7 +2,7 @@
 # docs/engine-taa-table.md: the optimized jitters against Halton(2,3), R2 and
 # Sobol of the same length under every engine preset (docs/temporal.md,
 # "Engine presets"), at render scales 1 (aapat-taa-8 and aapat-taa-16, the
-# native ones), 1.5, 1.7, 2 and 3 (aapat-upscale-R, int(8 R^2) phases), on
+# native ones, and aapat-ue4-8 for UE4's clamp), 1.5, 1.7, 2 and 3 (aapat-upscale-R, int(8 R^2) phases), on
 # static and moving content (pan 0.37, 0.21 pixels per frame): the mean
 # over an analytic scene (spiral) and a textured mesh (BoxTextured) of
 # rmse and flicker (aapat animate SCENE --taa PRESET --ratio R --json,
@@ -19,7 +19,7 @@ aapat, root = os.environ["AAPAT"], os.environ["ROOT"]
 scenes = ["spiral", f"{root}/data/mesh-views/box-textured.json"]
 presets = ["ue4", "fsr2", "godot", "bevy"]
 motions = [("static", "static"), ("moving", "pan:dx=0.37,dy=0.21")]
-native = ["aapat-taa-8", "ue4-halton:frames=8", "halton:frames=8", "aapat-taa-16",
+native = ["aapat-taa-8", "aapat-ue4-8", "ue4-halton:frames=8", "halton:frames=8", "aapat-taa-16",
           "halton:frames=16"]
 ratios = {"1": native}
 for r in ("1.5", "1.7", "2", "3"):

@@ -12,6 +12,20 @@ out=$root/data/sequences
 mkdir -p "$out"
 "$aapat" optimize --sequence 8 --starts 200 --seed 1 --flicker-weight 5 -o "$out/aapat-taa-8.json"
 "$aapat" optimize --sequence 16 --starts 128 --seed 1 --flicker-weight 5.25 -o "$out/aapat-taa-16.json"
+# For UE4-style TAA (a min/max clamp, alpha 0.04): aapat-taa-8's objective with
+# every jitter within 0.31 of the centre, which wins on moving content under
+# UE4's clamp where the unbounded ring does not (docs/temporal.md, "Under
+# motion"); the search names it aapat-taa-8, the catalog aapat-ue4-8.
+"$aapat" optimize --sequence 8 --starts 200 --seed 1 --flicker-weight 5 --jitter-radius 0.31 \
+  -o "$out/aapat-ue4-8.json"
+/usr/bin/python3 - "$out/aapat-ue4-8.json" <<'PY'
+import json, sys
+with open(sys.argv[1]) as f:
+    text = f.read()
+assert json.loads(text)["name"] == "aapat-taa-8"
+with open(sys.argv[1], "w") as f:
+    f.write(text.replace('"name": "aapat-taa-8"', '"name": "aapat-ue4-8"', 1))
+PY
 # Upscaling jitters (docs/temporal.md, "The linear model of upscaling"): the
 # upscaler's phase count int(8 R^2) per ratio, optimized under the linear
 # model of upscaling through FSR 2's Lanczos-2 reconstruction, accumulating

@@ -3,6 +3,7 @@
 // with nothing written.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -30,6 +31,26 @@ TEST(SequenceCli, GenerateWritesAFileThatEvalReads) {
   EXPECT_LT(doc["rows"][1]["worst_e2"].get<double>(), doc["rows"][0]["worst_e2"].get<double>());
   EXPECT_LT(doc["rows"][1]["flicker"].get<double>(), doc["rows"][0]["flicker"].get<double>());
   EXPECT_NEAR(doc["rows"][0]["worst_e2"].get<double>(), 0.1347, 5e-5);
+}
+
+// data/sequences/aapat-ue4-8.json: every jitter within 0.31 of the centre,
+// and the catalog's objective J (worst E2 + 5 x flicker) within 0.5 % of
+// aapat-taa-8's: the bound costs the linear model almost nothing (it trades
+// E2 for flicker), and still beats Halton(2,3) of 8 phases on J and flicker.
+TEST(SequenceCli, TheUe4SequenceIsATighterRingAtTheSameObjective) {
+  for (const Pattern& frame : resolve_sequence("aapat-ue4-8").frames)
+    EXPECT_LE(std::hypot(frame.sets[0][0].x, frame.sets[0][0].y), 0.31 + 1e-12);
+  const auto r = run({"sequence", "eval", "aapat-taa-8", "aapat-ue4-8", "halton:frames=8",
+                      "--alpha", "0.1", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  const auto j = [&](int row) {
+    return doc["rows"][row]["worst_e2"].get<double>() +
+           5 * doc["rows"][row]["flicker"].get<double>();
+  };
+  EXPECT_LT(j(1), 1.005 * j(0));
+  EXPECT_LT(j(1), j(2));
+  EXPECT_LT(doc["rows"][1]["flicker"].get<double>(), doc["rows"][2]["flicker"].get<double>());
 }
 
 TEST(SequenceCli, PhasesAndExport) {

@@ -812,6 +812,10 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
   r.best.description =
       fmt::format("{} frames of {} sample(s) optimized for worst E2 + {} x mean flicker", s.frames,
                   s.samples_per_frame, s.flicker_weight);
+  if (s.jitter_bound < 0.5)
+    r.best.description += fmt::format(", every coordinate within +-{}", s.jitter_bound);
+  if (s.jitter_radius)
+    r.best.description += fmt::format(", every jitter within {} of the centre", *s.jitter_radius);
   auto& why = r.best.provenance;
   why = {
       {"optimizer", s.reconstruction ? "aapat optimize --sequence --ratio (Subplex on J)"

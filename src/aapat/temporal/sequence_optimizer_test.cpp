@@ -156,7 +156,7 @@ TEST(SequenceOptimizer, AJitterBoundOrRadiusKeepsEveryJitterInside) {
     const SequenceSearchResult r = optimize_sequence(s, paper_max());
     for (const Pattern& f : r.best.frames)
       for (const Vec2 v : f.sets[0]) widest = std::max(widest, c.distance(v));
-    EXPECT_LE(widest, c.limit);
+    EXPECT_LE(widest, c.limit + 1e-12);  // the projection rounds
     EXPECT_GT(widest, c.limit - 0.01);
     EXPECT_EQ(provenance_value(r.best.provenance, c.key), fmt::format("{}", c.limit));
     s.profile = &api_profile("vulkan");
