@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <unordered_map>
 
 #include <tbb/parallel_for.h>
 
@@ -73,7 +74,19 @@ Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double
   Kernel out;
   UpscaledSamples frame;  // one frame's reconstruction at one display pixel
   Chain chain{{{0, 0}, 1.0}};
+  // One frame's render sample reaches the pixel through many chain offsets:
+  // its weights are summed into one sample (keyed by its position on a
+  // 1/1024-pixel grid; two render samples are a render pixel apart), which
+  // leaves the kernel the same and 5 to 13 % of the samples (pan_model.h).
+  std::unordered_map<uint64_t, size_t> at_key;
+  size_t reached = 0;  // the samples read through every chain offset: the work
+  const auto key = [](double x, double y) {
+    return static_cast<uint64_t>(static_cast<uint32_t>(static_cast<int32_t>(std::lround(x * 1024))))
+               << 32 |
+           static_cast<uint32_t>(static_cast<int32_t>(std::lround(y * 1024)));
+  };
   for (size_t d = 0; d < age_weights.size(); ++d) {
+    at_key.clear();
     const int f = ((k - static_cast<int>(d)) % period + period) % period;
     const auto& jitter = s.frames[static_cast<size_t>(f)].sets[0];
     const Vec2 moved{static_cast<double>(d) * m.velocity.x, static_cast<double>(d) * m.velocity.y};
@@ -87,11 +100,19 @@ Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double
         throw Error(fmt::format("the reconstruction filter {} gives frame {} of {} no weight",
                                 h.name(), f, s.name));
       for (size_t i = 0; i < frame.w.size(); ++i) {
-        out.x.push_back(frame.x[i] + at[0] + moved.x);
-        out.y.push_back(frame.y[i] + at[1] + moved.y);
-        out.w.push_back(frame.w[i] * (age_weights[d] * c / total));
+        const double x = frame.x[i] + at[0] + moved.x, y = frame.y[i] + at[1] + moved.y;
+        const double w = frame.w[i] * (age_weights[d] * c / total);
+        ++reached;
+        const auto [slot, added] = at_key.try_emplace(key(x, y), out.w.size());
+        if (!added) {
+          out.w[slot->second] += w;
+          continue;
+        }
+        out.x.push_back(x);
+        out.y.push_back(y);
+        out.w.push_back(w);
       }
-      if (out.w.size() > kMaxPanKernelSamples)
+      if (reached > kMaxPanKernelSamples)
         throw Error(fmt::format(
             "the pan's kernel passes {} samples at {} frames of history: the blend keeps too "
             "many frames for this history sampler and velocity (raise alpha)",

@@ -68,8 +68,10 @@ inline constexpr std::array<std::string_view, 5> kPanVelocities{"0,0", "0.37,0.2
 // is a kernel of up to a few hundred thousand samples per display phase).
 inline constexpr double kMaxPanSpeed = 16;
 inline constexpr int kMaxPanFrames = 128;
-// The most samples one pan kernel may hold (UE4's bilinear history at alpha
-// 0.04 needs about 600,000 at the evaluation's cuts): a small alpha under a
+// The most samples one pan kernel may read, each render sample once per
+// chain offset that reaches it (UE4's bilinear history at alpha 0.04 reads
+// about 900,000 at the evaluation's cuts panning 0.37, 0.21, which sum into
+// 118,000 samples; FSR 2 at 1.5 216,000 into 11,000): a small alpha under a
 // blurring history would otherwise grow it without bound.
 inline constexpr size_t kMaxPanKernelSamples = 4'000'000;
 
