@@ -202,7 +202,8 @@ std::vector<Limit> make_table() {
       {"`optimize --sequence`",
        fmt::format("1 to {} frames, 1 to 16 samples per frame, 1024 samples in all; "
                    "`--flicker-weight` 0 to 1000; `--jitter-bound` {} to 0.5 (with `--api`: at "
-                   "least 1/16); `--jitter-radius` {} to {}; no `--resolve`; with `--ratio`: one "
+                   "least 1/16); `--jitter-radius` {} to {} (with `--api`: at least 1/16); no "
+                   "`--resolve`; with `--ratio`: one "
                    "sample per frame, no `--api`, no `--jitter-radius`, at most 400 Subplex "
                    "evaluations per start",
                    kMaxSequenceFrames, number(kMinJitterBound), number(kMinJitterBound),

@@ -26,6 +26,7 @@ namespace aapat {
 namespace {
 
 constexpr double kBound = 0.5 - 1e-6;  // a jitter stays inside its pixel
+constexpr double kWeightBound = 2;     // |each free weight| of an MSAA frame
 
 // The box every coordinate of a jitter stays in: the pixel, or the search's
 // tighter --jitter-bound.
@@ -57,7 +58,7 @@ void radius_constraints(unsigned m, double* result, unsigned n, const double* x,
     if (grad) grad[i * n + 2 * i] = 2 * x[2 * i], grad[i * n + 2 * i + 1] = 2 * x[2 * i + 1];
   }
 }
-constexpr double kWeightBound = 2;  // |each free weight| of an MSAA frame
+
 // Subplex's evaluations of the upscale's J per start (each a few tens of ms).
 constexpr int kMaxUpscaleEvaluations = 400;
 
@@ -509,10 +510,15 @@ void validate(const SequenceSearch& s) {
                                        "constraint; bound its box with --jitter-bound instead",
                                        r));
   }
+  // With an API's lattice, room for a point besides the centre.
   if (s.profile && s.jitter_bound < 1.0 / kLatticeSteps)
     throw ParameterError("jitter-bound",
                          fmt::format(" {}: with --api at least one lattice step (1/{})",
                                      s.jitter_bound, kLatticeSteps));
+  if (s.profile && s.jitter_radius && *s.jitter_radius < 1.0 / kLatticeSteps)
+    throw ParameterError("jitter-radius",
+                         fmt::format(" {}: with --api at least one lattice step (1/{})",
+                                     *s.jitter_radius, kLatticeSteps));
   if (s.reconstruction) {
     check_ratio(s.ratio);
     if (s.samples_per_frame != 1)

@@ -194,6 +194,10 @@ TEST(SequenceOptimizer, BadSettingsAreNamed) {
     s.jitter_radius = radius;
     EXPECT_EQ(error_parameter([&] { validate(s); }), "jitter-radius");
   }
+  s.jitter_radius = 0.05;
+  s.profile = &api_profile("vulkan");  // below one lattice step
+  EXPECT_EQ(error_parameter([&] { validate(s); }), "jitter-radius");
+  s.profile = nullptr;
   s.jitter_radius = 0.3;
   s.ratio = 1.5;  // the upscale's Subplex takes no constraint
   s.reconstruction = make_filter("lanczos:lobes=2");
