@@ -181,23 +181,22 @@ TEST(SequenceOptimizer, BadSettingsAreNamed) {
   s.flicker_weight = std::nan("");
   EXPECT_EQ(error_parameter([&] { validate(s); }), "flicker-weight");
   s.flicker_weight = 1;
-  for (const double bound : {0.0, 0.6, std::nan("")}) {
-    s.jitter_bound = bound;
-    EXPECT_EQ(error_parameter([&] { validate(s); }), "jitter-bound");
+  // The box and the disc: out of range, and under one lattice step (0.05)
+  // with an API, where only the centre would remain.
+  for (const bool disc : {false, true}) {
+    for (const double v : {0.0, 0.8, std::nan(""), 0.05}) {
+      if (disc)
+        s.jitter_radius = v;
+      else
+        s.jitter_bound = v;
+      s.profile = v == 0.05 ? &api_profile("vulkan") : nullptr;
+      EXPECT_EQ(error_parameter([&] { validate(s); }), disc ? "jitter-radius" : "jitter-bound")
+          << v;
+    }
+    s.profile = nullptr;
+    s.jitter_bound = 0.5;
+    s.jitter_radius.reset();
   }
-  s.jitter_bound = 0.05;
-  s.profile = &api_profile("vulkan");  // below one lattice step
-  EXPECT_EQ(error_parameter([&] { validate(s); }), "jitter-bound");
-  s.profile = nullptr;
-  s.jitter_bound = 0.5;
-  for (const double radius : {0.0, 0.8, std::nan("")}) {
-    s.jitter_radius = radius;
-    EXPECT_EQ(error_parameter([&] { validate(s); }), "jitter-radius");
-  }
-  s.jitter_radius = 0.05;
-  s.profile = &api_profile("vulkan");  // below one lattice step
-  EXPECT_EQ(error_parameter([&] { validate(s); }), "jitter-radius");
-  s.profile = nullptr;
   s.jitter_radius = 0.3;
   s.ratio = 1.5;  // the upscale's Subplex takes no constraint
   s.reconstruction = make_filter("lanczos:lobes=2");
