@@ -10,6 +10,7 @@
 #include <memory>
 #include <numeric>
 #include <span>
+#include <utility>
 
 #include "aapat/core/gradient.h"
 #include "aapat/core/lattice.h"
@@ -45,13 +46,11 @@ void into_disc(const SequenceSearch& s, double* x, size_t samples) {
   }
 }
 
-// --jitter-radius as one SLSQP constraint per sample: x^2 + y^2 - R^2 <= 0.
-struct RadiusConstraint {
-  double radius;
-};
+// --jitter-radius as one SLSQP constraint per sample: x^2 + y^2 - R^2 <= 0
+// (data: the radius).
 void radius_constraints(unsigned m, double* result, unsigned n, const double* x, double* grad,
                         void* data) {
-  const double r = static_cast<const RadiusConstraint*>(data)->radius;
+  const double r = *static_cast<const double*>(data);
   if (grad) std::fill(grad, grad + static_cast<size_t>(m) * n, 0.0);
   for (size_t i = 0; i < m; ++i) {
     result[i] = x[2 * i] * x[2 * i] + x[2 * i + 1] * x[2 * i + 1] - r * r;
@@ -389,7 +388,7 @@ std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
   const std::vector<double> tolerance(m, 1e-12);
   nlopt_add_inequality_mconstraint(opt.get(), static_cast<unsigned>(m), nlopt_constraints, &e,
                                    tolerance.data());
-  RadiusConstraint radius{s.jitter_radius.value_or(0)};
+  double radius = s.jitter_radius.value_or(0);
   if (s.jitter_radius) {
     into_disc(s, x.data(), static_cast<size_t>(e.samples));  // a feasible start
     const std::vector<double> each(static_cast<size_t>(e.samples), 1e-12);
@@ -510,15 +509,13 @@ void validate(const SequenceSearch& s) {
                                        "constraint; bound its box with --jitter-bound instead",
                                        r));
   }
-  // With an API's lattice, room for a point besides the centre.
-  if (s.profile && s.jitter_bound < 1.0 / kLatticeSteps)
-    throw ParameterError("jitter-bound",
-                         fmt::format(" {}: with --api at least one lattice step (1/{})",
-                                     s.jitter_bound, kLatticeSteps));
-  if (s.profile && s.jitter_radius && *s.jitter_radius < 1.0 / kLatticeSteps)
-    throw ParameterError("jitter-radius",
-                         fmt::format(" {}: with --api at least one lattice step (1/{})",
-                                     *s.jitter_radius, kLatticeSteps));
+  // With an API's lattice, room for a point besides the centre, in the box
+  // and in the disc.
+  for (const auto& [name, limit] : {std::pair{"jitter-bound", s.jitter_bound},
+                                    {"jitter-radius", s.jitter_radius.value_or(0.5)}})
+    if (s.profile && limit < 1.0 / kLatticeSteps)
+      throw ParameterError(name, fmt::format(" {}: with --api at least one lattice step (1/{})",
+                                             limit, kLatticeSteps));
   if (s.reconstruction) {
     check_ratio(s.ratio);
     if (s.samples_per_frame != 1)
