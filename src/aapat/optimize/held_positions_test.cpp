@@ -116,6 +116,39 @@ TEST(MinNormPoint, TheScalarLoopsBitsOnEveryPath) {
   }
 }
 
+TEST(MinNormPoint, FromTheVectorsTheSameWalkAndTheSameBitsOnEveryPath) {
+  std::mt19937_64 rng(6);
+  std::normal_distribution<double> normal;
+  for (const size_t m : {1, 2, 7, 33, 80}) {
+    // m random vectors in 6 dimensions, shifted off the origin so that the
+    // nearest point lies on a face of the hull, as a minimax direction's does.
+    const size_t dim = 6;
+    std::vector<double> columns(dim * m), gram(m * m);
+    for (size_t c = 0; c < dim; ++c)
+      for (size_t i = 0; i < m; ++i) columns[c * m + i] = normal(rng) + (c == 0 ? 1.5 : 0.0);
+    for (size_t i = 0; i < m; ++i)
+      for (size_t j = 0; j < m; ++j)
+        for (size_t c = 0; c < dim; ++c) gram[i * m + j] += columns[c * m + i] * columns[c * m + j];
+    const std::vector<double> by_gram = min_norm_combination(gram, m);
+    std::vector<double> first;
+    testing::EveryPath paths;
+    paths.run([&] {
+      const std::vector<double> lambda = min_norm_combination_of_vectors(columns, m, dim);
+      if (first.empty()) first = lambda;
+      EXPECT_EQ(lambda, first) << m;
+    });
+    // The same point as the Gram form's: each step is the same up to rounding.
+    for (size_t c = 0; c < dim; ++c) {
+      double a = 0, b = 0;
+      for (size_t i = 0; i < m; ++i) {
+        a += first[i] * columns[c * m + i];
+        b += by_gram[i] * columns[c * m + i];
+      }
+      EXPECT_NEAR(a, b, 1e-12) << m << " " << c;
+    }
+  }
+}
+
 TEST(MinNormPoint, FindsTheNearestPointOfTheHull) {
   // (1, 0) and (0, 1): the segment between them is nearest the origin at its middle.
   const std::vector<double> lambda = min_norm_combination(std::vector<double>{1, 0, 0, 1}, 2);
@@ -124,6 +157,14 @@ TEST(MinNormPoint, FindsTheNearestPointOfTheHull) {
   // (2, 0) and (1, 1): the hull's nearest point is (1, 1) itself.
   const std::vector<double> corner = min_norm_combination(std::vector<double>{4, 2, 2, 2}, 2);
   EXPECT_NEAR(corner[1], 1.0, 1e-9);
+  // The same two hulls from their vectors (columns: every vector's x, then y).
+  const std::vector<double> middle =
+      min_norm_combination_of_vectors(std::vector<double>{1, 0, 0, 1}, 2, 2);
+  EXPECT_NEAR(middle[0], 0.5, 1e-12);
+  EXPECT_NEAR(middle[1], 0.5, 1e-12);
+  const std::vector<double> vertex =
+      min_norm_combination_of_vectors(std::vector<double>{2, 1, 0, 1}, 2, 2);
+  EXPECT_NEAR(vertex[1], 1.0, 1e-9);
 }
 
 }  // namespace

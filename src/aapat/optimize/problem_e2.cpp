@@ -145,6 +145,26 @@ void ProblemE2::constrain(const Problem& pr, bool move_positions, Direction& dir
   }
 }
 
+namespace {
+// The Gram matrix of m vectors stored by coordinate (columns [first, dim) of
+// m entries each): the inner loop runs over vectors and vectorizes, while
+// each entry is still summed over coordinates in order.
+std::vector<double> gram_of_columns(std::span<const double> by_coordinate, size_t m, size_t first,
+                                    size_t dim) {
+  std::vector<double> gram(m * m), row(m);
+  for (size_t i = 0; i < m; ++i) {
+    std::fill(row.begin(), row.begin() + static_cast<std::ptrdiff_t>(i + 1), 0.0);
+    for (size_t c = first; c < dim; ++c) {
+      const double* column = by_coordinate.data() + c * m;
+      const double gi = column[i];
+      for (size_t j = 0; j <= i; ++j) row[j] += gi * column[j];
+    }
+    for (size_t j = 0; j <= i; ++j) gram[i * m + j] = gram[j * m + i] = row[j];
+  }
+  return gram;
+}
+}  // namespace
+
 void ProblemE2::minimax_direction(const Problem& pr, Workspace& ws, double e2, double t,
                                   bool move_positions, Direction& dir) const {
   fill_kernels(pr, ws);
@@ -174,20 +194,17 @@ void ProblemE2::minimax_direction(const Problem& pr, Workspace& ws, double e2, d
       by_coordinate[(2 * g.pos.size() + wi) * m + i] = g.w[wi];
   }
   const auto grad = [&](size_t term, size_t c) { return by_coordinate[c * m + term]; };
-  // Minimum-norm point of the convex hull: Frank-Wolfe on the Gram matrix.
-  // Without positions their columns are zeros, which add nothing: skipped.
+  // Minimum-norm point of the convex hull: Frank-Wolfe. Without positions
+  // their columns are zeros, which add nothing: skipped; and where the
+  // weights left are fewer than the terms (one pixel's kernel: 6 weights, 80
+  // terms), the walk runs on the vectors, m (dim - first) per step instead
+  // of m^2 on the Gram matrix.
   const size_t first = move_positions ? 0 : 2 * pr.generators.size();
-  std::vector<double> gram(m * m), row(m);
-  for (size_t i = 0; i < m; ++i) {
-    std::fill(row.begin(), row.begin() + static_cast<std::ptrdiff_t>(i + 1), 0.0);
-    for (size_t c = first; c < dim; ++c) {
-      const double* column = by_coordinate.data() + c * m;
-      const double gi = column[i];
-      for (size_t j = 0; j <= i; ++j) row[j] += gi * column[j];
-    }
-    for (size_t j = 0; j <= i; ++j) gram[i * m + j] = gram[j * m + i] = row[j];
-  }
-  const std::vector<double> lambda = min_norm_combination(gram, m);
+  const bool from_vectors = !move_positions && dim - first < m;
+  const std::vector<double> lambda =
+      from_vectors ? min_norm_combination_of_vectors(std::span(by_coordinate).subspan(first * m), m,
+                                                     dim - first)
+                   : min_norm_combination(gram_of_columns(by_coordinate, m, first, dim), m);
   dir.pos.assign(pr.generators.size(), {0, 0});
   dir.w.assign(pr.weights.size(), 0.0);
   for (size_t i = 0; i < m; ++i) {
