@@ -6,12 +6,15 @@
 #include <tbb/info.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
+#include <stdexcept>
+#include <string_view>
 
 #include "aapat/core/geometry.h"
 #include "aapat/core/hash.h"
@@ -195,6 +198,35 @@ std::string command_word(int argc, const char* const* argv) {
   return "";
 }
 
+// Every command, in the order the overview lists them, by the name it adds.
+struct CommandEntry {
+  std::string_view name;
+  Action (*add)(CLI::App&);
+};
+constexpr std::array kCommands = {
+    CommandEntry{"list", add_list_command},
+    CommandEntry{"limits", add_limits_command},
+    CommandEntry{"show", add_show_command},
+    CommandEntry{"eval", add_eval_command},
+    CommandEntry{"optimize", add_optimize_command},
+    CommandEntry{"table3", add_table3_command},
+    CommandEntry{"figure10", add_figure10_command},
+    CommandEntry{"enumerate", add_enumerate_command},
+    CommandEntry{"generate", add_generate_command},
+    CommandEntry{"discrepancy", add_discrepancy_command},
+    CommandEntry{"spectrum", add_spectrum_command},
+    CommandEntry{"render", add_render_command},
+    CommandEntry{"animate", add_animate_command},
+    CommandEntry{"table2", add_table2_command},
+    CommandEntry{"snap", add_snap_command},
+    CommandEntry{"export", add_export_command},
+    CommandEntry{"import", add_import_command},
+    CommandEntry{"hardware-table", add_hardware_table_command},
+    CommandEntry{"study", add_study_command},
+    CommandEntry{"sequence", add_sequence_command},
+    CommandEntry{"diff", add_diff_command},
+};
+
 }  // namespace
 
 int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
@@ -232,33 +264,23 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
                "with --checkpoint: start afresh and replace FILE, whatever it holds, instead of "
                "resuming from it or refusing it")
       ->needs(checkpoint_option);
+  // Only the command named is built (CLI11 checks each new option against
+  // every earlier one of its command, so building all 21 is most of a short
+  // run's start-up); all of them for the overview, --version and a mistyped name.
+  const std::string word = command_word(argc, argv);
+  const bool named = std::any_of(kCommands.begin(), kCommands.end(),
+                                 [&](const CommandEntry& c) { return c.name == word; });
   std::vector<std::pair<CLI::App*, Action>> commands;
-  auto add = [&](auto adder) {
+  for (const CommandEntry& c : kCommands) {
+    if (named && c.name != word) continue;
     const size_t before = app.get_subcommands({}).size();
-    Action action = adder(app);
-    commands.emplace_back(app.get_subcommands({})[before], std::move(action));
-  };
-  add(add_list_command);
-  add(add_limits_command);
-  add(add_show_command);
-  add(add_eval_command);
-  add(add_optimize_command);
-  add(add_table3_command);
-  add(add_figure10_command);
-  add(add_enumerate_command);
-  add(add_generate_command);
-  add(add_discrepancy_command);
-  add(add_spectrum_command);
-  add(add_render_command);
-  add(add_animate_command);
-  add(add_table2_command);
-  add(add_snap_command);
-  add(add_export_command);
-  add(add_import_command);
-  add(add_hardware_table_command);
-  add(add_study_command);
-  add(add_sequence_command);
-  add(add_diff_command);
+    Action action = c.add(app);
+    CLI::App* sub = app.get_subcommands({})[before];
+    if (sub->get_name() != c.name)
+      throw std::logic_error(
+          fmt::format("the command table names '{}' for '{}'", c.name, sub->get_name()));
+    commands.emplace_back(sub, std::move(action));
+  }
   LocalEngine local;
   WorkEngine& items = engine ? *engine : local;
   try {
@@ -267,7 +289,6 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
     // A mistyped command is named, with the nearest command.
     std::vector<std::string> names;
     for (const auto& [sub, action] : commands) names.push_back(sub->get_name());
-    const std::string word = command_word(argc, argv);
     if (!word.empty() && std::find(names.begin(), names.end(), word) == names.end()) {
       std::string message = fmt::format("unknown command '{}'{}: the commands are {}", word,
                                         did_you_mean(word, names), fmt::join(names, ", "));

@@ -88,6 +88,29 @@ TEST(Cli, ListNamesCatalogFiltersAndTables) {
     EXPECT_NE(r.out.find(s), std::string::npos) << s;
 }
 
+// A run builds only the command it names: every command of the overview
+// is found by its name, alone, and its help names it.
+TEST(Cli, EveryCommandOfTheOverviewRunsByItsName) {
+  const CliRun overview = run({"--help"});
+  ASSERT_EQ(overview.code, 0);
+  const size_t list = overview.out.find("Subcommands:");
+  ASSERT_NE(list, std::string::npos) << overview.out;
+  std::istringstream lines(overview.out.substr(list));
+  std::string line;
+  std::getline(lines, line);
+  int commands = 0;
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    std::string name;
+    if (!(words >> name)) continue;
+    const CliRun help = run({"--threads", "1", name, "--help"});
+    EXPECT_EQ(help.code, 0) << name << ": " << help.err;
+    EXPECT_NE(help.out.find("Usage: aapat " + name), std::string::npos) << help.out;
+    ++commands;
+  }
+  EXPECT_EQ(commands, 21);
+}
+
 // The mistakes a new user makes first are named, with the nearest name.
 TEST(Cli, MistakesNameWhatWasMeant) {
   CliRun r = run({"evl", "rgss"});
