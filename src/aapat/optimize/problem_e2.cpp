@@ -104,48 +104,16 @@ void ProblemE2::term_gradient(const Problem& pr, Workspace& ws, int kernel, int 
   add_term_gradient(pr, ws, kernel, angle, 1.0, dir);
 }
 
-void ProblemE2::heuristic_direction(const Problem& pr, Workspace& ws, double e2, double t,
-                                    double ratio, bool move_positions, Direction& dir) const {
-  fill_kernels(pr, ws);
-  dir.pos.assign(pr.generators.size(), {0, 0});
-  dir.w.assign(pr.weights.size(), 0.0);
-  const int angles = metric_.angle_count();
-  const bool max_norm = metric_.norm() == Metric::kMaxNorm;
-  const double threshold_sq = t * t * e2 * e2;
-  for (size_t k = 0; k < ws.kernels.size(); ++k) {
-    const bool kernel_near_max = ws.kernel_e2[k] >= t * e2;
-    for (int a = 0; a < angles; ++a) {
-      const double v = ws.values[k * angles + a];
-      double scale;
-      if (max_norm) {
-        scale = kernel_near_max && v >= threshold_sq ? ratio : 1.0;
-      } else {
-        // The L_p mean's own gradient weighs each term by (W E1)^(p-1).
-        const double rel = ws.kernel_e2[k] > 0 ? std::sqrt(v) / ws.kernel_e2[k] : 0;
-        scale = (kernel_near_max ? ratio : 1.0) * norm_power(rel, metric_.norm() - 1);
-      }
-      add_term_gradient(pr, ws, static_cast<int>(k), a, scale, dir, move_positions);
-    }
-  }
-  constrain(pr, move_positions, dir);
-}
-
-void ProblemE2::constrain(const Problem& pr, bool move_positions, Direction& dir) const {
-  // Stay on the constraints: each generator's freedom, each weight group's sum.
-  for (size_t g = 0; g < pr.generators.size(); ++g) {
-    const Freedom f = pr.generators[g].freedom;
-    if (!move_positions || f == Freedom::kFixed) dir.pos[g] = {0, 0};
-    if (f == Freedom::kSlideX) dir.pos[g].y = 0;
-    if (f == Freedom::kSlideY) dir.pos[g].x = 0;
-  }
-  for (const auto& group : pr.weight_groups) {
-    double mean = 0;
-    for (int i : group) mean += dir.w[i] / group.size();
-    for (int i : group) dir.w[i] -= mean;
-  }
-}
-
 namespace {
+// Whether no two of a kernel's samples share a weight: then each weight's
+// terms can be summed on their own, in the same order.
+bool reads_each_weight_once(const std::vector<KernelRead>& reads) {
+  for (size_t i = 0; i < reads.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (reads[i].weight == reads[j].weight) return false;
+  return true;
+}
+
 // The Gram matrix of m vectors stored by coordinate (columns [first, dim) of
 // m entries each): the inner loop runs over vectors and vectorizes, while
 // each entry is still summed over coordinates in order.
@@ -164,6 +132,94 @@ std::vector<double> gram_of_columns(std::span<const double> by_coordinate, size_
   return gram;
 }
 }  // namespace
+
+void ProblemE2::heuristic_direction(const Problem& pr, Workspace& ws, double e2, double t,
+                                    double ratio, bool move_positions, Direction& dir) const {
+  fill_kernels(pr, ws);
+  dir.pos.assign(pr.generators.size(), {0, 0});
+  dir.w.assign(pr.weights.size(), 0.0);
+  const int angles = metric_.angle_count();
+  const bool max_norm = metric_.norm() == Metric::kMaxNorm;
+  const double threshold_sq = t * t * e2 * e2;
+  for (size_t k = 0; k < ws.kernels.size(); ++k) {
+    const bool kernel_near_max = ws.kernel_e2[k] >= t * e2;
+    const bool whole_kernel =
+        !move_positions && ws.held_now[k] && reads_each_weight_once(pr.kernels[k]);
+    ws.scales.resize(static_cast<size_t>(angles));
+    for (int a = 0; a < angles; ++a) {
+      const double v = ws.values[k * angles + a];
+      double scale;
+      if (max_norm) {
+        scale = kernel_near_max && v >= threshold_sq ? ratio : 1.0;
+      } else {
+        // The L_p mean's own gradient weighs each term by (W E1)^(p-1).
+        const double rel = ws.kernel_e2[k] > 0 ? std::sqrt(v) / ws.kernel_e2[k] : 0;
+        scale = (kernel_near_max ? ratio : 1.0) * norm_power(rel, metric_.norm() - 1);
+      }
+      if (whole_kernel)
+        ws.scales[a] = scale;
+      else
+        add_term_gradient(pr, ws, static_cast<int>(k), a, scale, dir, move_positions);
+    }
+    if (whole_kernel) add_held_kernel_gradient(pr, ws, static_cast<int>(k), dir);
+  }
+  constrain(pr, move_positions, dir);
+}
+
+void ProblemE2::add_held_kernel_gradient(const Problem& pr, Workspace& ws, int k,
+                                         Direction& dir) const {
+  const auto& reads = pr.kernels[k];
+  if (ws.held_kernel != k) {
+    ws.held.e1_squared_weight_gradient(static_cast<size_t>(k), ws.kernels[k].w, ws.held_e1sq,
+                                       ws.held_dw);
+    ws.held_kernel = k;
+  }
+  // Each angle's factor, as add_term_gradient forms it (none where E1 = 0).
+  ws.term_angles.clear();
+  ws.term_factors.clear();
+  for (int a = 0; a < metric_.angle_count(); ++a) {
+    const double e1sq = ws.held_e1sq[a];
+    if (e1sq <= 0) continue;
+    ws.term_angles.push_back(a);
+    ws.term_factors.push_back(ws.scales[a] * metric_.acuity().weights[a] / (2 * std::sqrt(e1sq)));
+  }
+  // Each weight's terms added in angle order, as term by term: the same sums,
+  // four weights' chains at a time instead of one addition after another.
+  const size_t n = reads.size(), stride = ws.held.stride(), terms = ws.term_angles.size();
+  const double* dw = ws.held_dw.data();
+  size_t j = 0;
+  for (; j + 4 <= n; j += 4) {
+    double acc[4];
+    for (size_t i = 0; i < 4; ++i) acc[i] = dir.w[reads[j + i].weight];
+    for (size_t t = 0; t < terms; ++t) {
+      const double f = ws.term_factors[t];
+      const size_t a = static_cast<size_t>(ws.term_angles[t]);
+      for (size_t i = 0; i < 4; ++i) acc[i] += f * dw[(j + i) * stride + a];
+    }
+    for (size_t i = 0; i < 4; ++i) dir.w[reads[j + i].weight] = acc[i];
+  }
+  for (; j < n; ++j) {
+    double acc = dir.w[reads[j].weight];
+    for (size_t t = 0; t < terms; ++t)
+      acc += ws.term_factors[t] * dw[j * stride + static_cast<size_t>(ws.term_angles[t])];
+    dir.w[reads[j].weight] = acc;
+  }
+}
+
+void ProblemE2::constrain(const Problem& pr, bool move_positions, Direction& dir) const {
+  // Stay on the constraints: each generator's freedom, each weight group's sum.
+  for (size_t g = 0; g < pr.generators.size(); ++g) {
+    const Freedom f = pr.generators[g].freedom;
+    if (!move_positions || f == Freedom::kFixed) dir.pos[g] = {0, 0};
+    if (f == Freedom::kSlideX) dir.pos[g].y = 0;
+    if (f == Freedom::kSlideY) dir.pos[g].x = 0;
+  }
+  for (const auto& group : pr.weight_groups) {
+    double mean = 0;
+    for (int i : group) mean += dir.w[i] / group.size();
+    for (int i : group) dir.w[i] -= mean;
+  }
+}
 
 void ProblemE2::minimax_direction(const Problem& pr, Workspace& ws, double e2, double t,
                                   bool move_positions, Direction& dir) const {

@@ -23,6 +23,9 @@ struct Workspace {
   std::vector<bool> held_now;  // per kernel: its positions are the held ones
   int held_kernel = -1;
   std::vector<double> held_e1sq, held_dw;
+  std::vector<double> scales;    // heuristic_direction's per-angle factor c of one kernel
+  std::vector<int> term_angles;  // a held kernel's angles with E1 > 0, and their factors
+  std::vector<double> term_factors;
 };
 
 // A direction in parameter space: one 2D step per generator, one per weight.
@@ -66,6 +69,9 @@ class ProblemE2 {
 
  private:
   void fill_kernels(const Problem& pr, Workspace& ws) const;
+  // add_term_gradient's weights part for every angle of held kernel k at
+  // once, with ws.scales the angles' factors; its samples read distinct weights.
+  void add_held_kernel_gradient(const Problem& pr, Workspace& ws, int k, Direction& dir) const;
   void constrain(const Problem& pr, bool move_positions, Direction& dir) const;
 
   const Metric& metric_;
