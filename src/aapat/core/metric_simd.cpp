@@ -138,59 +138,77 @@ void WithAbsMoment(D d, const Pieces& pieces, Run run) {
     run([&](V p) { return AbsMoment(d, pieces, p); });
 }
 
-// One block of lanes() angles: e1_squared's pair form, each lane one angle,
-// J by `abs_moment(p)`. `p` has room for the n projections of one block (n
-// vectors of lanes).
-template <class AbsMomentOfP>
-HWY_INLINE V PairwiseBlock(D d, AbsMomentOfP abs_moment, V hmd, V cos, V sin, V weight_sq,
-                           const double* x, const double* y, const double* w, size_t n,
-                           double* HWY_RESTRICT p) {
+// B blocks of lanes() angles side by side: e1_squared's pair form, each lane
+// one angle, J by `abs_moment(p)`. Each lane's operations are those of one
+// block alone, in the same order; B blocks only give the processor B
+// independent chains of additions to overlap (E2 is bound by their latency,
+// not by arithmetic). `p` has room for the n projections of B blocks.
+template <size_t B, class AbsMomentOfP>
+HWY_INLINE void PairwiseBlock(D d, AbsMomentOfP abs_moment, V hmd, const double* cos,
+                              const double* sin, const double* weight_sq, const double* x,
+                              const double* y, const double* w, size_t n, double* HWY_RESTRICT p,
+                              double* out) {
   const size_t lanes = hn::Lanes(d);
-  V moment = hn::Zero(d);
-  for (size_t s = 0; s < n; ++s) {
-    const V ps = hn::Sub(hn::Mul(cos, hn::Set(d, y[s])), hn::Mul(sin, hn::Set(d, x[s])));
-    hn::Store(ps, d, p + s * lanes);
-    moment = hn::Add(moment, hn::Mul(hn::Set(d, w[s]), abs_moment(ps)));
+  V c[B], sn[B], moment[B], spread[B];
+  for (size_t b = 0; b < B; ++b) {
+    c[b] = hn::LoadU(d, cos + b * lanes);
+    sn[b] = hn::LoadU(d, sin + b * lanes);
+    moment[b] = spread[b] = hn::Zero(d);
   }
-  V spread = hn::Zero(d);
   for (size_t s = 0; s < n; ++s) {
-    const V ps = hn::Load(d, p + s * lanes);
-    V sum = hn::Zero(d);
+    for (size_t b = 0; b < B; ++b) {
+      const V ps = hn::Sub(hn::Mul(c[b], hn::Set(d, y[s])), hn::Mul(sn[b], hn::Set(d, x[s])));
+      hn::Store(ps, d, p + (b * n + s) * lanes);
+      moment[b] = hn::Add(moment[b], hn::Mul(hn::Set(d, w[s]), abs_moment(ps)));
+    }
+  }
+  for (size_t s = 0; s < n; ++s) {
+    V ps[B], sum[B];
+    for (size_t b = 0; b < B; ++b) {
+      ps[b] = hn::Load(d, p + (b * n + s) * lanes);
+      sum[b] = hn::Zero(d);
+    }
     for (size_t q = s + 1; q < n; ++q)
-      sum =
-          hn::Add(sum, hn::Mul(hn::Set(d, w[q]), hn::Abs(hn::Sub(ps, hn::Load(d, p + q * lanes)))));
-    spread = hn::Add(spread, hn::Mul(hn::Set(d, w[s]), sum));
+      for (size_t b = 0; b < B; ++b)
+        sum[b] =
+            hn::Add(sum[b], hn::Mul(hn::Set(d, w[q]),
+                                    hn::Abs(hn::Sub(ps[b], hn::Load(d, p + (b * n + q) * lanes)))));
+    for (size_t b = 0; b < B; ++b)
+      spread[b] = hn::Add(spread[b], hn::Mul(hn::Set(d, w[s]), sum[b]));
   }
-  const V e1 = hn::Sub(hn::Sub(moment, spread), hmd);
-  // std::max(0.0, e1): 0 unless 0 < e1 (a NaN gives 0, as there).
   const V zero = hn::Zero(d);
-  return hn::Mul(weight_sq, hn::IfThenElse(hn::Lt(zero, e1), e1, zero));
+  for (size_t b = 0; b < B; ++b) {
+    const V e1 = hn::Sub(hn::Sub(moment[b], spread[b]), hmd);
+    // std::max(0.0, e1): 0 unless 0 < e1 (a NaN gives 0, as there).
+    hn::StoreU(
+        hn::Mul(hn::LoadU(d, weight_sq + b * lanes), hn::IfThenElse(hn::Lt(zero, e1), e1, zero)), d,
+        out + b * lanes);
+  }
 }
 
-// Every block of angles with J by `abs_moment`.
+// Every block of angles with J by `abs_moment`: two at a time, then one,
+// then the last, partial block through buffers padded with zero angles.
 template <class AbsMomentOfP>
 void PairwiseBlocks(D d, AbsMomentOfP abs_moment, double half_mean_distance,
                     const AngleTable& angles, const double* x, const double* y, const double* w,
                     size_t n, double* values) {
   const size_t lanes = hn::Lanes(d), count = angles.cos.size();
   const V hmd = hn::Set(d, half_mean_distance);
-  HWY_ALIGN double p[kPairwiseLimit * kMaxLanes];
+  HWY_ALIGN double p[2 * kPairwiseLimit * kMaxLanes];
   size_t a = 0;
+  for (; a + 2 * lanes <= count; a += 2 * lanes)
+    PairwiseBlock<2>(d, abs_moment, hmd, &angles.cos[a], &angles.sin[a], &angles.weight_sq[a], x, y,
+                     w, n, p, values + a);
   for (; a + lanes <= count; a += lanes)
-    hn::StoreU(PairwiseBlock(d, abs_moment, hmd, hn::LoadU(d, &angles.cos[a]),
-                             hn::LoadU(d, &angles.sin[a]), hn::LoadU(d, &angles.weight_sq[a]), x, y,
-                             w, n, p),
-               d, values + a);
+    PairwiseBlock<1>(d, abs_moment, hmd, &angles.cos[a], &angles.sin[a], &angles.weight_sq[a], x, y,
+                     w, n, p, values + a);
   if (a == count) return;
-  // The last, partial block through buffers padded with zero angles.
   HWY_ALIGN double c[kMaxLanes] = {}, s[kMaxLanes] = {}, ws[kMaxLanes] = {}, out[kMaxLanes];
   const size_t rest = count - a;
   std::memcpy(c, &angles.cos[a], rest * sizeof(double));
   std::memcpy(s, &angles.sin[a], rest * sizeof(double));
   std::memcpy(ws, &angles.weight_sq[a], rest * sizeof(double));
-  hn::Store(PairwiseBlock(d, abs_moment, hmd, hn::Load(d, c), hn::Load(d, s), hn::Load(d, ws), x, y,
-                          w, n, p),
-            d, out);
+  PairwiseBlock<1>(d, abs_moment, hmd, c, s, ws, x, y, w, n, p, out);
   std::memcpy(values + a, out, rest * sizeof(double));
 }
 
