@@ -27,48 +27,87 @@ static_assert(8 % HWY_LANES(double) == 0, "a vector of doubles divides 8");
 // w_q |p_s - p_q|), W^2 max(0, moment - spread - hmd).
 // The tables of one kernel (HeldPositions::Tables): n samples at m angles,
 // m a whole number of vectors.
+// B blocks of lanes() angles side by side, each lane's operations those of
+// one block alone in the same order (the same bits): the sums are chains of
+// additions, and B independent chains overlap (as in core/metric_simd.cpp).
+template <size_t B>
+HWY_INLINE void HeldWeightedE1SquaredBlock(D d, const double* moments, const double* distances,
+                                           size_t n, size_t m, const double* w, double hmd,
+                                           const double* weight_sq, double* values, size_t a) {
+  const size_t lanes = hn::Lanes(d);
+  const auto zero = hn::Zero(d), h = hn::Set(d, hmd);
+  hn::Vec<D> moment[B], spread[B], sum[B];
+  for (size_t b = 0; b < B; ++b) moment[b] = spread[b] = zero;
+  for (size_t s = 0; s < n; ++s)
+    for (size_t b = 0; b < B; ++b)
+      moment[b] = hn::Add(moment[b],
+                          hn::Mul(hn::Set(d, w[s]), hn::LoadU(d, moments + s * m + a + b * lanes)));
+  for (size_t s = 0; s < n; ++s) {
+    for (size_t b = 0; b < B; ++b) sum[b] = zero;
+    for (size_t q = s + 1; q < n; ++q)
+      for (size_t b = 0; b < B; ++b)
+        sum[b] = hn::Add(
+            sum[b],
+            hn::Mul(hn::Set(d, w[q]), hn::LoadU(d, distances + (s * n + q) * m + a + b * lanes)));
+    for (size_t b = 0; b < B; ++b)
+      spread[b] = hn::Add(spread[b], hn::Mul(hn::Set(d, w[s]), sum[b]));
+  }
+  for (size_t b = 0; b < B; ++b) {
+    const auto e1 = hn::Sub(hn::Sub(moment[b], spread[b]), h);
+    hn::StoreU(hn::Mul(hn::LoadU(d, weight_sq + a + b * lanes),
+                       hn::IfThenElse(hn::Lt(zero, e1), e1, zero)),
+               d, values + a + b * lanes);
+  }
+}
+
 void HeldWeightedE1Squared(const double* moments, const double* distances, size_t n, size_t m,
                            const double* w, double hmd, const double* weight_sq, double* values) {
   const D d;
-  const auto zero = hn::Zero(d), h = hn::Set(d, hmd);
-  for (size_t a = 0; a < m; a += hn::Lanes(d)) {
-    auto moment = zero;
-    for (size_t s = 0; s < n; ++s)
-      moment = hn::Add(moment, hn::Mul(hn::Set(d, w[s]), hn::LoadU(d, moments + s * m + a)));
-    auto spread = zero;
-    for (size_t s = 0; s < n; ++s) {
-      auto sum = zero;
-      for (size_t q = s + 1; q < n; ++q)
-        sum =
-            hn::Add(sum, hn::Mul(hn::Set(d, w[q]), hn::LoadU(d, distances + (s * n + q) * m + a)));
-      spread = hn::Add(spread, hn::Mul(hn::Set(d, w[s]), sum));
-    }
-    const auto e1 = hn::Sub(hn::Sub(moment, spread), h);
-    hn::StoreU(hn::Mul(hn::LoadU(d, weight_sq + a), hn::IfThenElse(hn::Lt(zero, e1), e1, zero)), d,
-               values + a);
-  }
+  const size_t lanes = hn::Lanes(d);
+  size_t a = 0;
+  for (; a + 2 * lanes <= m; a += 2 * lanes)
+    HeldWeightedE1SquaredBlock<2>(d, moments, distances, n, m, w, hmd, weight_sq, values, a);
+  for (; a < m; a += lanes)
+    HeldWeightedE1SquaredBlock<1>(d, moments, distances, n, m, w, hmd, weight_sq, values, a);
 }
 
 // e1_squared_gradient's pair form (core/gradient.cpp), one angle per lane:
 // spread_j = sum over q in order of w_q |p_j - p_q|, dw_j = J_j - spread_j,
-// E1^2 = max(0, -hmd + sum_j w_j (J_j - spread_j / 2)).
+// E1^2 = max(0, -hmd + sum_j w_j (J_j - spread_j / 2)); B blocks side by side.
+template <size_t B>
+HWY_INLINE void HeldWeightGradientBlock(D d, const double* moments, const double* distances,
+                                        size_t n, size_t m, const double* w, double hmd,
+                                        double* e1sq, double* dw, size_t a) {
+  const size_t lanes = hn::Lanes(d);
+  const auto zero = hn::Zero(d), two = hn::Set(d, 2.0);
+  hn::Vec<D> e[B], spread[B];
+  for (size_t b = 0; b < B; ++b) e[b] = hn::Set(d, -hmd);
+  for (size_t j = 0; j < n; ++j) {
+    for (size_t b = 0; b < B; ++b) spread[b] = zero;
+    for (size_t q = 0; q < n; ++q)
+      for (size_t b = 0; b < B; ++b)
+        spread[b] = hn::Add(
+            spread[b],
+            hn::Mul(hn::Set(d, w[q]), hn::LoadU(d, distances + (j * n + q) * m + a + b * lanes)));
+    for (size_t b = 0; b < B; ++b) {
+      const auto jm = hn::LoadU(d, moments + j * m + a + b * lanes);
+      hn::StoreU(hn::Sub(jm, spread[b]), d, dw + j * m + a + b * lanes);
+      e[b] = hn::Add(e[b], hn::Mul(hn::Set(d, w[j]), hn::Sub(jm, hn::Div(spread[b], two))));
+    }
+  }
+  for (size_t b = 0; b < B; ++b)
+    hn::StoreU(hn::IfThenElse(hn::Lt(zero, e[b]), e[b], zero), d, e1sq + a + b * lanes);
+}
+
 void HeldWeightGradient(const double* moments, const double* distances, size_t n, size_t m,
                         const double* w, double hmd, double* e1sq, double* dw) {
   const D d;
-  const auto zero = hn::Zero(d), two = hn::Set(d, 2.0);
-  for (size_t a = 0; a < m; a += hn::Lanes(d)) {
-    auto e = hn::Set(d, -hmd);
-    for (size_t j = 0; j < n; ++j) {
-      auto spread = zero;
-      for (size_t q = 0; q < n; ++q)
-        spread = hn::Add(spread,
-                         hn::Mul(hn::Set(d, w[q]), hn::LoadU(d, distances + (j * n + q) * m + a)));
-      const auto jm = hn::LoadU(d, moments + j * m + a);
-      hn::StoreU(hn::Sub(jm, spread), d, dw + j * m + a);
-      e = hn::Add(e, hn::Mul(hn::Set(d, w[j]), hn::Sub(jm, hn::Div(spread, two))));
-    }
-    hn::StoreU(hn::IfThenElse(hn::Lt(zero, e), e, zero), d, e1sq + a);
-  }
+  const size_t lanes = hn::Lanes(d);
+  size_t a = 0;
+  for (; a + 2 * lanes <= m; a += 2 * lanes)
+    HeldWeightGradientBlock<2>(d, moments, distances, n, m, w, hmd, e1sq, dw, a);
+  for (; a < m; a += lanes)
+    HeldWeightGradientBlock<1>(d, moments, distances, n, m, w, hmd, e1sq, dw, a);
 }
 
 }  // namespace HWY_NAMESPACE

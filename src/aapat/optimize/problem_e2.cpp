@@ -174,15 +174,23 @@ void ProblemE2::add_held_kernel_gradient(const Problem& pr, Workspace& ws, int k
                                        ws.held_dw);
     ws.held_kernel = k;
   }
-  // Each angle's factor, as add_term_gradient forms it (none where E1 = 0).
+  // Each angle's factor, as add_term_gradient forms it (one loop over every
+  // angle, which vectorizes), then the angles where E1 > 0 (there are none
+  // where E1 = 0).
+  const size_t angles = static_cast<size_t>(metric_.angle_count());
+  ws.factors.resize(angles);
+  const double* scales = ws.scales.data();
+  const double* acuity = metric_.acuity().weights.data();
+  const double* e1sq = ws.held_e1sq.data();
+  double* factors = ws.factors.data();
+  for (size_t a = 0; a < angles; ++a) factors[a] = scales[a] * acuity[a] / (2 * std::sqrt(e1sq[a]));
   ws.term_angles.clear();
   ws.term_factors.clear();
-  for (int a = 0; a < metric_.angle_count(); ++a) {
-    const double e1sq = ws.held_e1sq[a];
-    if (e1sq <= 0) continue;
-    ws.term_angles.push_back(a);
-    ws.term_factors.push_back(ws.scales[a] * metric_.acuity().weights[a] / (2 * std::sqrt(e1sq)));
-  }
+  for (size_t a = 0; a < angles; ++a)
+    if (e1sq[a] > 0) {
+      ws.term_angles.push_back(static_cast<int>(a));
+      ws.term_factors.push_back(factors[a]);
+    }
   // Each weight's terms added in angle order, as term by term: the same sums,
   // four weights' chains at a time instead of one addition after another.
   const size_t n = reads.size(), stride = ws.held.stride(), terms = ws.term_angles.size();

@@ -24,6 +24,7 @@ struct Workspace {
   int held_kernel = -1;
   std::vector<double> held_e1sq, held_dw;
   std::vector<double> scales;    // heuristic_direction's per-angle factor c of one kernel
+  std::vector<double> factors;   // and each angle's factor of its weight gradient
   std::vector<int> term_angles;  // a held kernel's angles with E1 > 0, and their factors
   std::vector<double> term_factors;
 };
