@@ -60,15 +60,22 @@ HWY_INLINE void HeldWeightedE1SquaredBlock(D d, const double* moments, const dou
   }
 }
 
+// block.operator()<B>(a) over the m angles: two blocks of lanes at a time,
+// then one.
+template <class Block>
+HWY_INLINE void InPairsOfBlocks(D d, size_t m, Block block) {
+  const size_t lanes = hn::Lanes(d);
+  size_t a = 0;
+  for (; a + 2 * lanes <= m; a += 2 * lanes) block.template operator()<2>(a);
+  for (; a < m; a += lanes) block.template operator()<1>(a);
+}
+
 void HeldWeightedE1Squared(const double* moments, const double* distances, size_t n, size_t m,
                            const double* w, double hmd, const double* weight_sq, double* values) {
   const D d;
-  const size_t lanes = hn::Lanes(d);
-  size_t a = 0;
-  for (; a + 2 * lanes <= m; a += 2 * lanes)
-    HeldWeightedE1SquaredBlock<2>(d, moments, distances, n, m, w, hmd, weight_sq, values, a);
-  for (; a < m; a += lanes)
-    HeldWeightedE1SquaredBlock<1>(d, moments, distances, n, m, w, hmd, weight_sq, values, a);
+  InPairsOfBlocks(d, m, [&]<size_t B>(size_t a) {
+    HeldWeightedE1SquaredBlock<B>(d, moments, distances, n, m, w, hmd, weight_sq, values, a);
+  });
 }
 
 // e1_squared_gradient's pair form (core/gradient.cpp), one angle per lane:
@@ -102,12 +109,9 @@ HWY_INLINE void HeldWeightGradientBlock(D d, const double* moments, const double
 void HeldWeightGradient(const double* moments, const double* distances, size_t n, size_t m,
                         const double* w, double hmd, double* e1sq, double* dw) {
   const D d;
-  const size_t lanes = hn::Lanes(d);
-  size_t a = 0;
-  for (; a + 2 * lanes <= m; a += 2 * lanes)
-    HeldWeightGradientBlock<2>(d, moments, distances, n, m, w, hmd, e1sq, dw, a);
-  for (; a < m; a += lanes)
-    HeldWeightGradientBlock<1>(d, moments, distances, n, m, w, hmd, e1sq, dw, a);
+  InPairsOfBlocks(d, m, [&]<size_t B>(size_t a) {
+    HeldWeightGradientBlock<B>(d, moments, distances, n, m, w, hmd, e1sq, dw, a);
+  });
 }
 
 }  // namespace HWY_NAMESPACE
