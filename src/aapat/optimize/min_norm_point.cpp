@@ -83,7 +83,7 @@ void transpose_times(const double* a, const double* v, size_t k, size_t m, doubl
 }
 
 // One Frank-Wolfe step from x = sum lambda_i g_i towards the vertex of least
-// q_i = g_i . x, with an exact line search; norm_sq_best = |g_best|^2 and
+// q_i = g_i . x, with an exact line search; norm_sq_of[i] = |g_i|^2 and
 // lq = |x|^2. Returns the step's (best, gamma), or gamma < 0 where the walk
 // ends: at the nearest point, or where a step would change nothing (each
 // later step is a function of lambda alone, so the rest would change nothing).
