@@ -233,18 +233,32 @@ void PairwiseBalanceSpread(const double* p, const double* w, size_t n, double* b
   HWY_ALIGN double padded[kPairwiseLimit] = {};
   std::memcpy(padded, p, n * sizeof(double));
   const V zero = hn::Zero(d);
-  for (size_t j = 0; j < n; j += lanes) {
-    const V pj = hn::Load(d, padded + j);
-    V b = zero, s = zero;
-    for (size_t k = 0; k < n; ++k) {
-      const V diff = hn::Sub(pj, hn::Set(d, p[k])), wk = hn::Set(d, w[k]);
-      b = hn::Add(b, hn::IfThenElse(hn::Gt(diff, zero), wk,
-                                    hn::IfThenElse(hn::Lt(diff, zero), hn::Neg(wk), zero)));
-      s = hn::Add(s, hn::Mul(wk, hn::Abs(diff)));
+  // Two blocks of samples side by side where there are two (as in
+  // PairwiseBlock): four chains of additions instead of two, each lane's
+  // sums unchanged.
+  const auto blocks = [&]<size_t B>(size_t j) {
+    V pj[B], b[B], s[B];
+    for (size_t i = 0; i < B; ++i) {
+      pj[i] = hn::Load(d, padded + j + i * lanes);
+      b[i] = s[i] = zero;
     }
-    hn::StoreU(b, d, balance + j);
-    hn::StoreU(s, d, spread + j);
-  }
+    for (size_t k = 0; k < n; ++k) {
+      const V pk = hn::Set(d, p[k]), wk = hn::Set(d, w[k]), minus_wk = hn::Neg(wk);
+      for (size_t i = 0; i < B; ++i) {
+        const V diff = hn::Sub(pj[i], pk);
+        b[i] = hn::Add(b[i], hn::IfThenElse(hn::Gt(diff, zero), wk,
+                                            hn::IfThenElse(hn::Lt(diff, zero), minus_wk, zero)));
+        s[i] = hn::Add(s[i], hn::Mul(wk, hn::Abs(diff)));
+      }
+    }
+    for (size_t i = 0; i < B; ++i) {
+      hn::StoreU(b[i], d, balance + j + i * lanes);
+      hn::StoreU(s[i], d, spread + j + i * lanes);
+    }
+  };
+  size_t j = 0;
+  for (; j + lanes < n; j += 2 * lanes) blocks.template operator()<2>(j);
+  for (; j < n; j += lanes) blocks.template operator()<1>(j);
 }
 
 // J of n values by `abs_moment`.
