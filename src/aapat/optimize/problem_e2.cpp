@@ -68,10 +68,7 @@ void ProblemE2::add_term_gradient(const Problem& pr, Workspace& ws, int k, int a
   const double* dw = ws.dw.data();
   size_t dw_stride = 1;
   if (!positions && ws.held_now[k]) {
-    if (ws.held_kernel != k) {
-      ws.held.e1_squared_weight_gradient(static_cast<size_t>(k), ker.w, ws.held_e1sq, ws.held_dw);
-      ws.held_kernel = k;
-    }
+    ws.hold_weight_gradient(k);
     e1sq = ws.held_e1sq[a];
     dw = ws.held_dw.data() + a;
     dw_stride = ws.held.stride();
@@ -173,11 +170,7 @@ void ProblemE2::heuristic_direction(const Problem& pr, Workspace& ws, double e2,
 void ProblemE2::add_held_kernel_gradient(const Problem& pr, Workspace& ws, int k,
                                          Direction& dir) const {
   const auto& reads = pr.kernels[k];
-  if (ws.held_kernel != k) {
-    ws.held.e1_squared_weight_gradient(static_cast<size_t>(k), ws.kernels[k].w, ws.held_e1sq,
-                                       ws.held_dw);
-    ws.held_kernel = k;
-  }
+  ws.hold_weight_gradient(k);
   // Each angle's factor, as add_term_gradient forms it (one loop over every
   // angle, which vectorizes), then the angles where E1 > 0 (there are none
   // where E1 = 0).

@@ -27,6 +27,15 @@ struct Workspace {
   std::vector<double> factors;   // and each angle's factor of its weight gradient
   std::vector<int> term_angles;  // a held kernel's angles with E1 > 0, and their factors
   std::vector<double> term_factors;
+
+  // Fills held_e1sq and held_dw for held kernel k at its current weights,
+  // unless they already hold them.
+  void hold_weight_gradient(int k) {
+    if (held_kernel == k) return;
+    held.e1_squared_weight_gradient(static_cast<size_t>(k), kernels[static_cast<size_t>(k)].w,
+                                    held_e1sq, held_dw);
+    held_kernel = k;
+  }
 };
 
 // A direction in parameter space: one 2D step per generator, one per weight.
