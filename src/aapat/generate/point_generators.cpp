@@ -15,6 +15,7 @@
 #include "aapat/core/interrupt.h"
 #include "aapat/core/metric.h"
 #include "aapat/core/text.h"
+#include "aapat/generate/unit_random.h"
 
 namespace aapat {
 namespace {
@@ -239,11 +240,18 @@ const std::vector<Entry>& entries() {
        {},
        [](int n, const Params&, std::mt19937_64& rng) {
          const int k = square_side(n, "jittered");
-         std::uniform_real_distribution<double> u(0, 1);
          std::vector<Vec2> p;
          p.reserve(static_cast<size_t>(n));  // a reference draws 1024 per pixel
+         // Dividing by a power of two is multiplying by its inverse, exactly:
+         // the same bits without two divisions a point (a reference's k is 32).
+         const bool power_of_two = (k & (k - 1)) == 0;
+         const double inverse = 1.0 / k;
          for (int j = 0; j < k; ++j)
-           for (int i = 0; i < k; ++i) p.push_back({(i + u(rng)) / k, (j + u(rng)) / k});
+           for (int i = 0; i < k; ++i) {
+             const double u = unit_double(rng), v = unit_double(rng);
+             p.push_back(power_of_two ? Vec2{(i + u) * inverse, (j + v) * inverse}
+                                      : Vec2{(i + u) / k, (j + v) / k});
+           }
          return p;
        }},
       {{"semi-jittered:amount=0.5",

@@ -1,10 +1,12 @@
 #include "aapat/generate/point_generators.h"
+#include "aapat/generate/unit_random.h"
 #include "testing/error_message.h"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <set>
 
@@ -156,6 +158,58 @@ TEST(Generators, BadSpecsAreNamed) {
 
 namespace aapat {
 namespace {
+
+// unit_double is std::uniform_real_distribution<double>(0, 1), bit for bit:
+// on the draws where rounding x / 2^64 is hardest (ties, the top values that
+// round to 1) and on random ones.
+struct FixedDraw {  // a 64-bit generator that returns one value
+  using result_type = uint64_t;
+  static constexpr uint64_t min() { return 0; }
+  static constexpr uint64_t max() { return ~uint64_t{0}; }
+  uint64_t x;
+  uint64_t operator()() const { return x; }
+};
+TEST(Generators, UnitDoubleIsTheStandardDistributionsDraw) {
+  std::vector<uint64_t> xs = {0,
+                              1,
+                              (uint64_t{1} << 53) - 1,
+                              (uint64_t{1} << 53) + 1,
+                              (uint64_t{1} << 63) - 1,
+                              uint64_t{1} << 63,
+                              (uint64_t{1} << 63) + 1024,  // a tie, to even
+                              (uint64_t{1} << 63) + 3072,  // a tie, to even (up)
+                              ~uint64_t{0},
+                              ~uint64_t{0} - 1023,
+                              ~uint64_t{0} - 1024,
+                              ~uint64_t{0} - 2048};
+  std::mt19937_64 rng(20261204);
+  for (int i = 0; i < 100000; ++i) xs.push_back(rng());
+  for (const uint64_t x : xs) {
+    FixedDraw g{x};
+    std::uniform_real_distribution<double> u(0, 1);
+    const double standard = u(g), ours = unit_double_of(x);
+    EXPECT_EQ(std::memcmp(&standard, &ours, sizeof(double)), 0) << x;
+    EXPECT_LT(ours, 1.0) << x;
+  }
+}
+
+// Jittered points are (i + u) / k with u the standard distribution's draws,
+// bit for bit, whether k is a power of two (multiplied by 1 / k) or not.
+TEST(Generators, JitteredIsTheStandardDrawOverK) {
+  for (const int k : {1, 3, 4, 5, 32}) {
+    const uint64_t seed = 40 + static_cast<uint64_t>(k);
+    const std::vector<Vec2> points = generate_points("jittered", k * k, seed);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    ASSERT_EQ(points.size(), static_cast<size_t>(k * k));
+    for (int j = 0, at = 0; j < k; ++j)
+      for (int i = 0; i < k; ++i, ++at) {
+        const double x = (i + u(rng)) / k, y = (j + u(rng)) / k;
+        EXPECT_EQ(points[static_cast<size_t>(at)].x, x) << k << " " << at;
+        EXPECT_EQ(points[static_cast<size_t>(at)].y, y) << k << " " << at;
+      }
+  }
+}
 
 // The grid search finds the same farthest candidates as a plain search over
 // every point (same random stream, same points).
