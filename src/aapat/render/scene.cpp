@@ -28,77 +28,126 @@ bool in_triangle(Vec2 p, Vec2 a, Vec2 b, Vec2 c) {
 
 }  // namespace
 
-Vec2 View::to_scene(Vec2 q) const {
-  const double r = radians(rotation_deg), c = std::cos(r), s = std::sin(r);
-  const double dx = (q.x - translation.x - pivot.x) / scale,
-               dy = (q.y - translation.y - pivot.y) / scale;
-  return {pivot.x + c * dx + s * dy, pivot.y - s * dx + c * dy};
+View::Inverse View::inverse() const {
+  const double r = radians(rotation_deg);
+  return {pivot, translation, scale, std::cos(r), std::sin(r)};
 }
 
+Vec2 View::to_scene(Vec2 q) const {
+  return inverse()(q);
+}
+
+namespace {
+
+// The grey level of each analytic scene kind: shader_of(scene) is a function
+// of the scene point, with what does not depend on the point (the cosines of
+// a rotation, say) computed once, before a batch of points.
+auto shader_of(const HalfPlaneScene& s) {
+  const double a = radians(s.angle_deg), c = std::cos(a), sn = std::sin(a);
+  return [&s, c, sn](Vec2 p) {
+    return (p.x - s.origin.x) * c + (p.y - s.origin.y) * sn <= s.offset ? 1.0 : 0.0;
+  };
+}
+auto shader_of(const CheckerboardScene& s) {
+  const double r = radians(s.rotation_deg), c = std::cos(r), sn = std::sin(r);
+  return [&s, c, sn](Vec2 p) {
+    // A ray through the image point meets the ground plane (below the
+    // horizon) at depth z = eye / drop; the squares are unit sized.
+    const double f = s.focal * s.width;
+    const double u = (p.x - s.width / 2) / f;
+    const double drop = (s.horizon * s.height - p.y) / f;
+    if (drop <= 0) return 0.75;  // sky
+    const double z = s.eye_height / drop, x = u * z;
+    const double gx = x * c - z * sn, gz = x * sn + z * c;
+    // Parity in doubles: near the horizon the squares' indices pass any integer type.
+    return std::fmod(std::abs(std::floor(gx) + std::floor(gz)), 2.0) == 0 ? 1.0 : 0.0;
+  };
+}
+auto shader_of(const CirclesScene& s) {
+  // Discs on a grid of cells, radius growing from 0.3 pixel to most of a cell.
+  const int cols = static_cast<int>(std::ceil(std::sqrt(double(s.count))));
+  const double cw = s.width / cols, ch = s.height / cols;
+  return [&s, cols, cw, ch](Vec2 p) {
+    const double fi = std::floor(p.x / cw), fj = std::floor(p.y / ch);
+    if (!(fi >= 0 && fj >= 0 && fi < cols && fj < cols)) return 0.0;  // before any cast
+    const int ci = static_cast<int>(fi), cj = static_cast<int>(fj);
+    const int idx = cj * cols + ci;
+    if (idx >= s.count) return 0.0;
+    const double t = s.count > 1 ? double(idx) / (s.count - 1) : 1.0;
+    const double r = 0.3 + t * (0.45 * std::min(cw, ch) - 0.3);
+    return vector_length(p.x - (ci + 0.5) * cw, p.y - (cj + 0.5) * ch) <= r ? 1.0 : 0.0;
+  };
+}
+auto shader_of(const SliverScene& s) {
+  return [&s](Vec2 p) { return in_triangle(p, s.a, s.b, s.c) ? 1.0 : 0.0; };
+}
+auto shader_of(const SpiralScene& s) {
+  return [&s](Vec2 p) {
+    const double dx = p.x - s.centre.x, dy = p.y - s.centre.y, r = vector_length(dx, dy);
+    if (r > s.max_radius) return 0.0;
+    // The arm is the set where the winding phase minus the radius phase falls in [0, arm).
+    const double phase = std::atan2(dy, dx) / (2 * kPi) - r * s.turns / s.max_radius;
+    return phase - std::floor(phase) < s.arm ? 1.0 : 0.0;
+  };
+}
+auto shader_of(const DiscScene& s) {
+  return [&s](Vec2 p) {
+    return vector_length(p.x - s.centre.x, p.y - s.centre.y) <= s.radius ? 1.0 : 0.0;
+  };
+}
+auto shader_of(const TriangleScene& s) {
+  return [&s](Vec2 p) { return in_triangle(p, s.a, s.b, s.c) ? 1.0 : 0.0; };
+}
+auto shader_of(const ZonePlateScene& s) {
+  return [&s](Vec2 p) {
+    const double r2 =
+        (p.x - s.centre.x) * (p.x - s.centre.x) + (p.y - s.centre.y) * (p.y - s.centre.y);
+    return 0.5 + 0.5 * std::cos(kPi * s.k * r2);
+  };
+}
+auto shader_of(const ShapesScene& s) {
+  return [&s](Vec2 p) {
+    const int top = top_shape_at(s, p);
+    return top < 0 ? s.background : s.shapes[static_cast<size_t>(top)].grey;
+  };
+}
+auto shader_of(const MeshScene&) {
+  return [](Vec2) { return 0.0; };  // shaded per primitive
+}
+
+// Shaded primitive by primitive (shade_primitive), not by the shape alone.
+bool shaded_per_primitive(const Scene& scene) {
+  return has_texture(scene) || std::holds_alternative<MeshScene>(scene.shape);
+}
+
+}  // namespace
+
 double shade(const Scene& scene, Vec2 image_point) {
-  if (has_texture(scene) || std::holds_alternative<MeshScene>(scene.shape)) {
+  if (shaded_per_primitive(scene)) {
     // The exact texel of a textured primitive, the grey of the others.
     static const TextureFilter kExact;
     return shade_primitive(scene, primitive_at(scene, image_point), image_point, kExact);
   }
   const Vec2 p = scene.view.identity() ? image_point : scene.view.to_scene(image_point);
-  return std::visit(
-      Overloaded{
-          [&](const HalfPlaneScene& s) {
-            const double a = radians(s.angle_deg);
-            return (p.x - s.origin.x) * std::cos(a) + (p.y - s.origin.y) * std::sin(a) <= s.offset
-                       ? 1.0
-                       : 0.0;
-          },
-          [&](const CheckerboardScene& s) {
-            // A ray through the image point meets the ground plane (below the
-            // horizon) at depth z = eye / drop; the squares are unit sized.
-            const double f = s.focal * s.width;
-            const double u = (p.x - s.width / 2) / f;
-            const double drop = (s.horizon * s.height - p.y) / f;
-            if (drop <= 0) return 0.75;  // sky
-            const double z = s.eye_height / drop, x = u * z;
-            const double r = radians(s.rotation_deg);
-            const double gx = x * std::cos(r) - z * std::sin(r),
-                         gz = x * std::sin(r) + z * std::cos(r);
-            // Parity in doubles: near the horizon the squares' indices pass any integer type.
-            return std::fmod(std::abs(std::floor(gx) + std::floor(gz)), 2.0) == 0 ? 1.0 : 0.0;
-          },
-          [&](const CirclesScene& s) {
-            // Discs on a grid of cells, radius growing from 0.3 pixel to most of a cell.
-            const int cols = static_cast<int>(std::ceil(std::sqrt(double(s.count))));
-            const double cw = s.width / cols, ch = s.height / cols;
-            const double fi = std::floor(p.x / cw), fj = std::floor(p.y / ch);
-            if (!(fi >= 0 && fj >= 0 && fi < cols && fj < cols)) return 0.0;  // before any cast
-            const int ci = static_cast<int>(fi), cj = static_cast<int>(fj);
-            const int idx = cj * cols + ci;
-            if (idx >= s.count) return 0.0;
-            const double t = s.count > 1 ? double(idx) / (s.count - 1) : 1.0;
-            const double r = 0.3 + t * (0.45 * std::min(cw, ch) - 0.3);
-            return std::hypot(p.x - (ci + 0.5) * cw, p.y - (cj + 0.5) * ch) <= r ? 1.0 : 0.0;
-          },
-          [&](const SliverScene& s) { return in_triangle(p, s.a, s.b, s.c) ? 1.0 : 0.0; },
-          [&](const SpiralScene& s) {
-            const double dx = p.x - s.centre.x, dy = p.y - s.centre.y, r = std::hypot(dx, dy);
-            if (r > s.max_radius) return 0.0;
-            // The arm is the set where the winding phase minus the radius phase falls in [0, arm).
-            const double phase = std::atan2(dy, dx) / (2 * kPi) - r * s.turns / s.max_radius;
-            return phase - std::floor(phase) < s.arm ? 1.0 : 0.0;
-          },
-          [&](const DiscScene& s) {
-            return std::hypot(p.x - s.centre.x, p.y - s.centre.y) <= s.radius ? 1.0 : 0.0;
-          },
-          [&](const TriangleScene& s) { return in_triangle(p, s.a, s.b, s.c) ? 1.0 : 0.0; },
-          [&](const ZonePlateScene& s) {
-            const double r2 =
-                (p.x - s.centre.x) * (p.x - s.centre.x) + (p.y - s.centre.y) * (p.y - s.centre.y);
-            return 0.5 + 0.5 * std::cos(kPi * s.k * r2);
-          },
-          [&](const ShapesScene& s) {
-            const int top = top_shape_at(s, p);
-            return top < 0 ? s.background : s.shapes[static_cast<size_t>(top)].grey;
-          },
-          [&](const MeshScene&) { return 0.0; }},  // shaded per primitive above
+  return std::visit([&](const auto& s) { return shader_of(s)(p); }, scene.shape);
+}
+
+void shade_points(const Scene& scene, const Vec2* points, size_t n, double* out) {
+  if (shaded_per_primitive(scene)) {
+    for (size_t k = 0; k < n; ++k) out[k] = shade(scene, points[k]);
+    return;
+  }
+  const bool identity = scene.view.identity();
+  std::visit(
+      [&](const auto& s) {
+        const auto shader = shader_of(s);
+        if (identity) {
+          for (size_t k = 0; k < n; ++k) out[k] = shader(points[k]);
+        } else {
+          const View::Inverse to_scene = scene.view.inverse();
+          for (size_t k = 0; k < n; ++k) out[k] = shader(to_scene(points[k]));
+        }
+      },
       scene.shape);
 }
 

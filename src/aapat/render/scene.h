@@ -111,6 +111,17 @@ struct View {
     return rotation_deg == 0 && scale == 1 && translation.x == 0 && translation.y == 0;
   }
   Vec2 to_scene(Vec2 image_point) const;  // the inverse map: where an image point reads the scene
+  // to_scene with the rotation's cosine and sine computed once, for many points.
+  struct Inverse {
+    Vec2 pivot, translation;
+    double scale, cos, sin;
+    Vec2 operator()(Vec2 q) const {
+      const double dx = (q.x - translation.x - pivot.x) / scale,
+                   dy = (q.y - translation.y - pivot.y) / scale;
+      return {pivot.x + cos * dx + sin * dy, pivot.y - sin * dx + cos * dy};
+    }
+  };
+  Inverse inverse() const;
 };
 
 struct Scene {
@@ -123,6 +134,8 @@ struct Scene {
 
 // The grey level of the scene at p (textures at their exact texel values).
 double shade(const Scene& scene, Vec2 p);
+// out[k] = shade(scene, points[k]) for k < n, the scene's kind looked up once.
+void shade_points(const Scene& scene, const Vec2* points, size_t n, double* out);
 
 // What reading the scene's files used but could not take (a model's missing
 // texture): each line names the file; the faces show them as warnings.

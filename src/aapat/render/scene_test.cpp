@@ -29,6 +29,26 @@ RC_GTEST_PROP(Scene, ViewRotatesScalesAndTranslates, ()) {
   }
 }
 
+// shade_points is shade at each point, bit for bit, for every scene of the
+// registry, seen through the identity view and through a moved one.
+RC_GTEST_PROP(Scene, ShadePointsIsShadeAtEachPoint, ()) {
+  const auto& entries = scene_registry().entries();
+  const auto& entry = entries[*rc::gen::inRange<size_t>(0, entries.size())];
+  Scene scene = make_scene(entry.info.name, 48, 40);
+  if (*rc::gen::arbitrary<bool>())
+    scene.view = {{24, 20},
+                  *rc::gen::inRange(-180, 180) * 1.0,
+                  *rc::gen::inRange(1, 40) / 8.0,
+                  {*rc::gen::inRange(-20, 20) / 4.0, *rc::gen::inRange(-20, 20) / 4.0}};
+  std::vector<Vec2> points;
+  for (int k = 0; k < 200; ++k)
+    points.push_back(
+        {*rc::gen::inRange(-500, 5300) / 100.0, *rc::gen::inRange(-500, 4500) / 100.0});
+  std::vector<double> batch(points.size());
+  shade_points(scene, points.data(), points.size(), batch.data());
+  for (size_t k = 0; k < points.size(); ++k) RC_ASSERT(batch[k] == shade(scene, points[k]));
+}
+
 TEST(Scene, ShapesPaintInOrderWithTheEvenOddRule) {
   ShapesScene s;
   s.background = 0.25;

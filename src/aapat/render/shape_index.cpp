@@ -104,7 +104,7 @@ ShapeIndex::ShapeIndex(const std::vector<Shape>& shapes) {
 }
 
 bool ShapeIndex::contains(const Shape& s, size_t index, Vec2 p) const {
-  if (s.polygon.empty()) return std::hypot(p.x - s.centre.x, p.y - s.centre.y) <= s.radius;
+  if (s.polygon.empty()) return vector_length(p.x - s.centre.x, p.y - s.centre.y) <= s.radius;
   const Bands& bands = bands_[index];
   if (bands.edges.empty()) return in_polygon(p, s.polygon);
   // Only an edge whose y range holds p.y can cross the ray: p's band has them all.

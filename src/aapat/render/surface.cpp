@@ -144,7 +144,7 @@ int top_shape_at(const ShapesScene& s, Vec2 p) {
   for (size_t k = s.shapes.size(); k-- > 0;) {
     const Shape& sh = s.shapes[k];
     const bool inside = sh.polygon.empty()
-                            ? std::hypot(p.x - sh.centre.x, p.y - sh.centre.y) <= sh.radius
+                            ? vector_length(p.x - sh.centre.x, p.y - sh.centre.y) <= sh.radius
                             : in_polygon(p, sh.polygon);
     if (inside) return static_cast<int>(k);
   }
