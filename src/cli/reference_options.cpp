@@ -8,16 +8,27 @@
 #include "aapat/core/filter_catalog.h"
 #include "aapat/io/reference_cache.h"
 #include "cli/app.h"
+#include "cli/progress.h"
 
 namespace aapat {
 
-ReferenceSource ReferenceOptions::source() const {
+ReferenceSource ReferenceOptions::source(bool progress) const {
+  ReferenceSource render = render_reference;
+  if (progress)
+    render = [](const Scene& scene, int width, int height, const ReferenceSettings& r,
+                double offset) {
+      Progress bar(fmt::format("reference {}x{}", width, height));
+      return render_reference_reporting(
+          scene, width, height, r, offset,
+          [&](int done, int total, const std::string&) { bar.update(done, total, "bands"); });
+    };
   // In memory for the run either way: the commands that compare several
   // patterns ask for the same references again.
-  if (no_cache) return remembered_references(render_reference);
+  if (no_cache) return remembered_references(render);
   return remembered_references(cached_references(
       cache_dir.empty() ? default_cache_dir() : cache_dir,
-      [](const std::string& message) { warnings() << "aapat: warning: " << message << "\n"; }));
+      [](const std::string& message) { warnings() << "aapat: warning: " << message << "\n"; },
+      render));
 }
 
 void add_reference_options(CLI::App* cmd, ReferenceOptions& o, int samples_default) {

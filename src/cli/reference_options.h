@@ -13,7 +13,9 @@ struct ReferenceOptions {
   ReferenceSettings settings;
   std::string cache_dir;
   bool no_cache = false;
-  ReferenceSource source() const;  // cached unless --no-cache
+  // Cached unless --no-cache; with `progress`, a reference rendered afresh
+  // shows a bar on a terminal (for a command that renders one at a time).
+  ReferenceSource source(bool progress = false) const;
 };
 
 // `samples_default` is the reference's default samples per pixel.

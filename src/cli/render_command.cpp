@@ -273,7 +273,7 @@ void run_single(const Options& o, std::ostream& out) {
     if (!f->empty() && !f->ends_with(".png")) throw Error(fmt::format("'{}' must end in .png", *f));
   const Scene scene = make_view_scene(o, w, h);
   const RenderSettings s = single_settings(o, w, h);
-  const RenderResult r = render_study(scene, s, o.reference.source());
+  const RenderResult r = render_study(scene, s, o.reference.source(/*progress=*/true));
   if (!o.output.empty()) write_png_image(o.output, r.image);
   if (!o.refinement_map.empty()) {
     const GreyRaster map = refinement_map_with_legend(r.adaptive->samples, w, h);

@@ -63,6 +63,12 @@ class MitchellCubic {
     if (x < 2) return (b3_ * x * x * x + b2_ * x * x + b1_ * x + b0_) / 6;
     return 0;
   }
+  // The coefficients, six times the cubic's: a3 x^3 + a2 x^2 + a0 on |x| < 1,
+  // b3 x^3 + b2 x^2 + b1 x + b0 on 1 <= |x| < 2 (for evaluating on vector lanes).
+  struct Coefficients {
+    double a3, a2, a0, b3, b2, b1, b0;
+  };
+  Coefficients coefficients() const { return {a3_, a2_, a0_, b3_, b2_, b1_, b0_}; }
 
  private:
   double a3_, a2_, a0_, b3_, b2_, b1_, b0_;
@@ -80,6 +86,10 @@ class Filter {
   const std::string& name() const { return name_; }
   const FilterShape& shape() const { return shape_; }
   double radius() const { return radius_; }
+  // The cubic of a Mitchell-Netravali filter (else null), and the scale that
+  // normalizes it: value(x) = scale() * (*mitchell())(x) within the radius.
+  const MitchellCubic* mitchell() const { return mitchell_ ? &*mitchell_ : nullptr; }
+  double scale() const { return scale_; }
 
   // The normalized impulse response h(x).
   double value(double x) const {

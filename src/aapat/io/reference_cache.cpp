@@ -20,8 +20,10 @@ namespace {
 
 // Version 2 adds the values' checksum: a file whose values were changed after
 // it was written is rendered afresh, not trusted. Version 3 takes it with
-// checksum64 (fnv1a cost 5% of a cached 1024² render; this, 0.3%).
-constexpr std::string_view kMagic = "aapat-reference 3\n";
+// checksum64 (fnv1a cost 5% of a cached 1024² render; this, 0.3%). Version 4:
+// references are summed pixel by pixel (render/pixel_splat.h), which moves
+// their last bits, so a version 3 entry is rendered afresh, not mixed in.
+constexpr std::string_view kMagic = "aapat-reference 4\n";
 
 // The line between the key and the values: their checksum.
 std::string checksum_line(std::string_view values) {
@@ -46,12 +48,12 @@ std::string default_cache_dir() {
   return ".aapat-cache";
 }
 
-ReferenceSource cached_references(std::string dir, Warn warn) {
+ReferenceSource cached_references(std::string dir, Warn warn, ReferenceSource render) {
   remove_orphaned_temporaries(dir);  // a killed run's half-written entries
   // Set by the first failure to write: warned once, not tried again.
   auto unwritable = std::make_shared<bool>(false);
-  return [dir = std::move(dir), warn, unwritable](const Scene& scene, int width, int height,
-                                                  const ReferenceSettings& r, double offset) {
+  return [dir = std::move(dir), warn, unwritable, render = std::move(render)](
+             const Scene& scene, int width, int height, const ReferenceSettings& r, double offset) {
     const std::string key = key_text(scene, width, height, r, offset);
     const std::string path = fmt::format("{}/reference-{:016x}.bin", dir, fnv1a(key));
     const int channels = scene_channels(scene);
@@ -95,7 +97,7 @@ ReferenceSource cached_references(std::string dir, Warn warn) {
       std::memcpy(image.values.data(), found.data() + 1, bytes);
       return image;
     }
-    Image image = render_reference(scene, width, height, r, offset);
+    Image image = render(scene, width, height, r, offset);
     if (*unwritable) return image;
     try {
       ensure_directory(dir, "reference cache");

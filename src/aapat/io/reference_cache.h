@@ -15,10 +15,12 @@ namespace aapat {
 std::string default_cache_dir();
 
 // A reference source that reads from and writes to `dir` (created when
-// needed). A folder that cannot be made or written is not an error: `warn`
-// hears why once, and the references are rendered without the cache.
+// needed), rendering with `render` what it does not hold. A folder that
+// cannot be made or written is not an error: `warn` hears why once, and the
+// references are rendered without the cache.
 using Warn = std::function<void(const std::string&)>;
-ReferenceSource cached_references(std::string dir, Warn warn = {});
+ReferenceSource cached_references(std::string dir, Warn warn = {},
+                                  ReferenceSource render = render_reference);
 
 // `source` with the references of this run kept in memory (up to 1 GiB), so
 // that patterns compared on the same scenes share each reference.

@@ -7,12 +7,17 @@
 #include "aapat/core/filter_catalog.h"
 #include "aapat/render/color_render.h"
 #include "aapat/work/byte_codec.h"
-#include "aapat/work/work_items.h"
 
 namespace aapat {
 
 Image render_reference(const Scene& scene, int width, int height, const ReferenceSettings& r,
                        double offset) {
+  return render_reference_reporting(scene, width, height, r, offset, {});
+}
+
+Image render_reference_reporting(const Scene& scene, int width, int height,
+                                 const ReferenceSettings& r, double offset,
+                                 const ItemsProgress& progress) {
   if (r.samples < 1 || r.samples > kMaxSamplesPerPixel)
     throw ParameterError("reference-samples", fmt::format(" {}: expected 1 to {} per pixel",
                                                           r.samples, kMaxSamplesPerPixel));
@@ -24,15 +29,21 @@ Image render_reference(const Scene& scene, int width, int height, const Referenc
   if (width < 1 || height < 1) return render(scene, width, height, s, filter, nullptr, offset);
   // Each block of rows is a work item (work/work_items.h): a reference may be
   // rendered by many processes, the same bits as by one.
-  const int bands = (height + kRenderBlockRows - 1) / kRenderBlockRows;
-  const std::vector<std::string> rows = run_work_items(bands, [&](int band) {
-    const int j0 = band * kRenderBlockRows;
-    const Image part = render_rows(scene, width, height, s, filter, offset, j0,
-                                   std::min(height, j0 + kRenderBlockRows));
-    ByteWriter w;
-    w.put_all(part.values);
-    return w.take();
-  });
+  // Bands of 32 rows: each draws its filter's reach of rows above and below
+  // it as well, so taller bands draw fewer twice.
+  constexpr int kBandRows = 4 * kRenderBlockRows;
+  const int bands = (height + kBandRows - 1) / kBandRows;
+  const std::vector<std::string> rows = run_work_items(
+      bands,
+      [&](int band) {
+        const int j0 = band * kBandRows;
+        const Image part = render_rows(scene, width, height, s, filter, offset, j0,
+                                       std::min(height, j0 + kBandRows));
+        ByteWriter w;
+        w.put_all(part.values);
+        return w.take();
+      },
+      progress);
   Image img{width, height, offset, {}, scene_channels(scene)};
   img.values.reserve(static_cast<size_t>(width) * height * static_cast<size_t>(img.channels));
   for (const std::string& band : rows) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "aapat/render/renderer.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 
@@ -33,6 +34,10 @@ uint64_t frame_reference_seed(uint64_t reference_seed, int frame);
 // footprint shifts it (Image::offset).
 Image render_reference(const Scene& scene, int width, int height, const ReferenceSettings& r,
                        double offset);
+// The same, telling `progress` of each band of rows as it finishes.
+Image render_reference_reporting(const Scene& scene, int width, int height,
+                                 const ReferenceSettings& r, double offset,
+                                 const ItemsProgress& progress);
 
 // Where references come from: render_reference, or a cache in front of it.
 using ReferenceSource =

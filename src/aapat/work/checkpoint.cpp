@@ -25,7 +25,9 @@ namespace {
 // seen, not only the files named on the command line. Version 4: the
 // record checksums are true FNV-1a (the offset basis had lost its last
 // digit), and the input files' contents are summed with checksum64.
-constexpr std::string_view kMagic = "aapat-checkpoint 4\n";
+// Version 5: a reference's items are bands of 32 rows, summed pixel by pixel
+// (render/reference.cpp), where version 4's were 8 rows with other last bits.
+constexpr std::string_view kMagic = "aapat-checkpoint 5\n";
 constexpr std::string_view kAnyVersion = "aapat-checkpoint ";
 
 uint64_t record_sum(int call, int item, std::string_view bytes) {
