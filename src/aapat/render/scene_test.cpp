@@ -139,5 +139,44 @@ RC_GTEST_PROP(Scene, ShapeIndexAgreesWithTheScan, ()) {
   }
 }
 
+// A few large shapes (most grid cells wholly inside or outside them), read
+// on their boundaries: points exactly on the circles (3-4-5 triangles), at
+// the polygons' vertices and edge midpoints, and on a fine grid.
+RC_GTEST_PROP(Scene, ShapeIndexAgreesWithTheScanOnTheBoundaries, ()) {
+  ShapesScene scene;
+  std::vector<Vec2> points;
+  const int count = *rc::gen::inRange(1, 7);
+  for (int i = 0; i < count; ++i) {
+    Shape s;
+    s.grey = (i + 1) / 8.0;
+    const double cx = *rc::gen::inRange(0, 64), cy = *rc::gen::inRange(0, 64);
+    if (*rc::gen::arbitrary<bool>()) {
+      const double r = 5.0 * *rc::gen::inRange(1, 9);
+      s.centre = {cx, cy};
+      s.radius = r;
+      for (const Vec2 u : {Vec2{0.6, 0.8}, Vec2{-0.8, 0.6}, Vec2{1, 0}, Vec2{-0.6, -0.8}})
+        points.push_back({cx + r * u.x, cy + r * u.y});
+    } else {
+      const int n = *rc::gen::inRange(3, 12);
+      for (int k = 0; k < n; ++k)
+        s.polygon.push_back(
+            {double(*rc::gen::inRange(-10, 74)), double(*rc::gen::inRange(-10, 74))});
+      for (int k = 0; k < n; ++k) {
+        const Vec2 a = s.polygon[static_cast<size_t>(k)],
+                   b = s.polygon[static_cast<size_t>((k + 1) % n)];
+        points.push_back(a);
+        points.push_back({(a.x + b.x) / 2, (a.y + b.y) / 2});
+      }
+    }
+    scene.shapes.push_back(std::move(s));
+  }
+  for (int i = 0; i < 400; ++i)
+    points.push_back({*rc::gen::inRange(-160, 700) / 8.0, *rc::gen::inRange(-160, 700) / 8.0});
+  ShapesScene indexed = scene;
+  index_shapes(indexed);
+  const Scene a(indexed), b(scene);
+  for (const Vec2 p : points) RC_ASSERT(shade(a, p) == shade(b, p));
+}
+
 }  // namespace
 }  // namespace aapat

@@ -29,6 +29,57 @@ bool crosses(Vec2 p, Vec2 a, Vec2 b) {
   return (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
 }
 
+// Whether segment ab may meet the closed box: false only when it surely does
+// not (its bounding box is apart, or the box's corners are all strictly on
+// one side of its line).
+bool may_meet(Vec2 a, Vec2 b, const Box& box) {
+  if (std::max(a.x, b.x) < box.x0 || std::min(a.x, b.x) > box.x1 || std::max(a.y, b.y) < box.y0 ||
+      std::min(a.y, b.y) > box.y1)
+    return false;
+  int above = 0, below = 0;
+  for (const Vec2 q :
+       {Vec2{box.x0, box.y0}, Vec2{box.x1, box.y0}, Vec2{box.x0, box.y1}, Vec2{box.x1, box.y1}}) {
+    const double side = (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x);
+    above += side > 0;
+    below += side < 0;
+  }
+  return !(above == 4 || below == 4);
+}
+
+// Where a shape stands to a whole box: every point of it inside the shape,
+// none, or some (the edge passes through it, or too near to tell).
+enum class Cover { inside, outside, partly };
+
+// Polygons with more edges than this are not classified (the cost is edges
+// times cells), nor when the shapes' cells hold more than kClassifiedEdges
+// edges in all: those cells test every point as before.
+constexpr size_t kClassifiedPolygon = 64;
+constexpr size_t kClassifiedEdges = size_t{1} << 24;
+
+Cover cover(const Shape& s, const Box& box) {
+  if (s.polygon.empty()) {
+    // A disc holds a box when it holds its farthest corner, and misses it
+    // when it misses its nearest point, with a relative slack far beyond the
+    // rounding of vector_length.
+    const double dx_far = std::max(std::abs(box.x0 - s.centre.x), std::abs(box.x1 - s.centre.x)),
+                 dy_far = std::max(std::abs(box.y0 - s.centre.y), std::abs(box.y1 - s.centre.y));
+    const double dx_near = std::max({0.0, box.x0 - s.centre.x, s.centre.x - box.x1}),
+                 dy_near = std::max({0.0, box.y0 - s.centre.y, s.centre.y - box.y1});
+    const double slack =
+        1e-9 * (1 + s.radius + std::abs(s.centre.x) + std::abs(s.centre.y) + dx_far + dy_far);
+    if (vector_length(dx_far, dy_far) < s.radius - slack) return Cover::inside;
+    if (vector_length(dx_near, dy_near) > s.radius + slack) return Cover::outside;
+    return Cover::partly;
+  }
+  // No edge meets the box: the even-odd parity is the same all over it, the
+  // box's centre's (far from every edge, so the crossing tests are exact).
+  const auto& poly = s.polygon;
+  for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+    if (may_meet(poly[i], poly[j], box)) return Cover::partly;
+  return in_polygon({(box.x0 + box.x1) / 2, (box.y0 + box.y1) / 2}, poly) ? Cover::inside
+                                                                          : Cover::outside;
+}
+
 }  // namespace
 
 bool in_polygon(Vec2 p, const std::vector<Vec2>& poly) {
@@ -51,8 +102,10 @@ ShapeIndex::ShapeIndex(const std::vector<Shape>& shapes) {
   x0_ = all.x0;
   y0_ = all.y0;
   const double w = std::max(all.x1 - all.x0, 1e-9), h = std::max(all.y1 - all.y0, 1e-9);
-  // About one shape per cell; coarser while large shapes would fill too many cells.
-  int side = std::clamp(static_cast<int>(std::ceil(std::sqrt(double(shapes.size())))), 1, 512);
+  // About one shape per cell, and at least 32 x 32 cells, so that a few
+  // large shapes leave most cells wholly inside or outside them (classified
+  // below); coarser while large shapes would fill too many cells.
+  int side = std::clamp(static_cast<int>(std::ceil(std::sqrt(double(shapes.size())))), 32, 512);
   for (;; side = std::max(1, side / 2)) {
     cols_ = rows_ = side;
     inv_cell_w_ = cols_ / w;
@@ -82,6 +135,7 @@ ShapeIndex::ShapeIndex(const std::vector<Shape>& shapes) {
       for (int c = c0; c <= c1; ++c)
         cells_[static_cast<size_t>(r) * cols_ + c].push_back(static_cast<uint32_t>(i));
   }
+  classify_cells(shapes);
   // Long polygons: each edge in every band its y range touches.
   bands_.resize(shapes.size());
   for (size_t i = 0; i < shapes.size(); ++i) {
@@ -101,6 +155,43 @@ ShapeIndex::ShapeIndex(const std::vector<Shape>& shapes) {
         bands.edges[k].push_back(static_cast<uint32_t>(e));
     }
   }
+}
+
+void ShapeIndex::classify_cells(const std::vector<Shape>& shapes) {
+  covered_.assign(cells_.size(), -1);
+  size_t edges = 0;
+  for (const auto& list : cells_)
+    for (const uint32_t i : list)
+      edges += std::min(shapes[i].polygon.size(), kClassifiedPolygon + 1);
+  if (edges > kClassifiedEdges) return;
+  // Each cell as top_shape_at reads it: the points whose floor((x - x0) /
+  // cell) is the cell, and on the grid's border the cell of slack it clamps
+  // in, grown by a margin far beyond the rounding of that lookup.
+  const double cell_w = 1 / inv_cell_w_, cell_h = 1 / inv_cell_h_;
+  const double margin = 1e-6 * std::max(cell_w, cell_h) +
+                        1e-9 * (std::abs(x0_) + std::abs(y0_) + cols_ * cell_w + rows_ * cell_h);
+  for (int r = 0; r < rows_; ++r)
+    for (int c = 0; c < cols_; ++c) {
+      const Box box{x0_ + (c - (c == 0)) * cell_w - margin, y0_ + (r - (r == 0)) * cell_h - margin,
+                    x0_ + (c + 1 + (c == cols_ - 1)) * cell_w + margin,
+                    y0_ + (r + 1 + (r == rows_ - 1)) * cell_h + margin};
+      const size_t at = static_cast<size_t>(r) * cols_ + c;
+      std::vector<uint32_t>& list = cells_[at];
+      // From the top shape down: one that holds the whole cell answers for
+      // every point the shapes above it miss, and those below never matter;
+      // one that misses the whole cell is never tested.
+      std::vector<uint32_t> kept;
+      for (size_t k = list.size(); k-- > 0;) {
+        const Shape& s = shapes[list[k]];
+        const Cover how = s.polygon.size() > kClassifiedPolygon ? Cover::partly : cover(s, box);
+        if (how == Cover::inside) {
+          covered_[at] = static_cast<int>(list[k]);
+          break;
+        }
+        if (how == Cover::partly) kept.push_back(list[k]);
+      }
+      list.assign(kept.rbegin(), kept.rend());  // painting order again
+    }
 }
 
 bool ShapeIndex::contains(const Shape& s, size_t index, Vec2 p) const {
@@ -125,10 +216,11 @@ int ShapeIndex::top_shape_at(const std::vector<Shape>& shapes, Vec2 p) const {
   if (!(cx >= -1 && cy >= -1 && cx <= cols_ + 1 && cy <= rows_ + 1)) return -1;
   const int c = std::clamp(static_cast<int>(std::floor(cx)), 0, cols_ - 1);
   const int r = std::clamp(static_cast<int>(std::floor(cy)), 0, rows_ - 1);
-  const auto& list = cells_[static_cast<size_t>(r) * cols_ + c];
+  const size_t at = static_cast<size_t>(r) * cols_ + c;
+  const auto& list = cells_[at];
   for (auto it = list.rbegin(); it != list.rend(); ++it)
     if (contains(shapes[*it], *it, p)) return static_cast<int>(*it);
-  return -1;
+  return covered_[at];
 }
 
 }  // namespace aapat
