@@ -74,7 +74,9 @@ struct RenderStats {
 Image render(const Scene& scene, int width, int height, const Sampling& sampling,
              const std::optional<Filter>& filter, RenderStats* stats = nullptr, double offset = 0);
 
-// With a filter, the rows are rendered in independent blocks of this many.
+// render_rows' bands start at a multiple of this many rows (with a filter
+// the rows are rendered in blocks of four times as many; an output pixel's
+// value does not depend on the blocks).
 inline constexpr int kRenderBlockRows = 8;
 // The largest image side render takes (pixels), and the most samples per pixel
 // of a pattern, a generator or a reference.
