@@ -70,6 +70,27 @@ HWY_INLINE Located Locate(D d, const Filter::AbsMomentTable& j, V p) {
   return l;
 }
 
+// Locate for a table of one or two pieces without the floor: for |p| /
+// width >= 0, min(floor(|p| / width), 1) is 1 exactly when |p| / width >= 1,
+// and min(floor(...), 0) is 0, so k and t are Locate's, bit for bit.
+template <int kSegments>
+HWY_INLINE Located LocateFew(D d, const Filter::AbsMomentTable& j, V p) {
+  static_assert(kSegments == 1 || kSegments == 2);
+  Located l;
+  l.ap = hn::Abs(p);
+  l.inside = hn::Lt(l.ap, hn::Set(d, j.radius));
+  if constexpr (kSegments == 1) {
+    l.k = hn::Zero(d);
+  } else {
+    const auto second = hn::Ge(hn::Mul(l.ap, hn::Set(d, j.inv_width)), hn::Set(d, 1.0));
+    l.k = hn::IfThenElseZero(hn::And(l.inside, second), hn::Set(d, 1.0));
+  }
+  l.t = hn::Sub(
+      hn::Mul(hn::Sub(l.ap, hn::Mul(l.k, hn::Set(d, j.width))), hn::Set(d, 2.0 * j.inv_width)),
+      hn::Set(d, 1.0));
+  return l;
+}
+
 // Filter::abs_moment, lane for lane: the same products, sums and Horner
 // steps, for any table (the counts read at run time).
 HWY_INLINE V AbsMoment(D d, const Pieces& pieces, V p) {
@@ -112,8 +133,7 @@ HWY_INLINE V AbsMoment(D d, const Pieces& pieces, V p) {
 // Horner steps unrolled, the piece selected by one comparison.
 template <int kCoefs, int kSegments>
 HWY_INLINE V AbsMomentOf(D d, const Pieces& pieces, V p) {
-  static_assert(kSegments == 1 || kSegments == 2);
-  const Located l = Locate(d, pieces.j, p);
+  const Located l = LocateFew<kSegments>(d, pieces.j, p);
   const hn::Mask<D> second = hn::Ge(l.k, hn::Set(d, 1.0));
   auto coef = [&](int i) {
     const double* c = pieces.coef + i * kSelectPieces;
@@ -140,7 +160,7 @@ HWY_INLINE void AbsMomentsOf(D d, const Pieces& pieces, const V* p, V* out) {
     return hn::IfThenElse(second[q], hn::Set(d, c[1]), hn::Set(d, c[0]));
   };
   for (size_t q = 0; q < M; ++q) {
-    l[q] = Locate(d, pieces.j, p[q]);
+    l[q] = LocateFew<kSegments>(d, pieces.j, p[q]);
     second[q] = hn::Ge(l[q].k, hn::Set(d, 1.0));
     r[q] = coef(q, kCoefs - 1);
   }
