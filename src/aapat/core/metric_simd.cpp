@@ -130,24 +130,10 @@ HWY_INLINE V AbsMoment(D d, const Pieces& pieces, V p) {
 
 // The same for the piecewise cubics (kCoefs = 6; one piece for box and
 // tent, two for Mitchell-Netravali) with the counts known when compiled: the
-// Horner steps unrolled, the piece selected by one comparison.
-template <int kCoefs, int kSegments>
-HWY_INLINE V AbsMomentOf(D d, const Pieces& pieces, V p) {
-  const Located l = LocateFew<kSegments>(d, pieces.j, p);
-  const hn::Mask<D> second = hn::Ge(l.k, hn::Set(d, 1.0));
-  auto coef = [&](int i) {
-    const double* c = pieces.coef + i * kSelectPieces;
-    if constexpr (kSegments == 1) return hn::Set(d, c[0]);
-    return hn::IfThenElse(second, hn::Set(d, c[1]), hn::Set(d, c[0]));
-  };
-  V r = coef(kCoefs - 1);
-  for (int i = kCoefs - 2; i >= 0; --i) r = hn::Add(hn::Mul(r, l.t), coef(i));
-  return hn::IfThenElse(l.inside, r, l.ap);
-}
-
-// J of M vectors at once with the cubic's Horner steps interleaved: each
-// lane's operations are AbsMomentOf's, in its order; M independent chains
-// side by side keep the processor busy where one chain waits on each step.
+// Horner steps unrolled, the piece selected by one comparison; for M vectors
+// at once, their Horner steps interleaved (each lane's operations in the
+// same order: M independent chains side by side keep the processor busy
+// where one chain waits on each step).
 template <int kCoefs, int kSegments, size_t M>
 HWY_INLINE void AbsMomentsOf(D d, const Pieces& pieces, const V* p, V* out) {
   static_assert(kSegments == 1 || kSegments == 2);
@@ -176,7 +162,11 @@ struct AbsMomentBy {
   D d;
   const Pieces& pieces;
   V operator()(V p) const {
-    if constexpr (kCoefs > 0) return AbsMomentOf<kCoefs, kSegments>(d, pieces, p);
+    if constexpr (kCoefs > 0) {
+      V out;
+      AbsMomentsOf<kCoefs, kSegments, 1>(d, pieces, &p, &out);
+      return out;
+    }
     return AbsMoment(d, pieces, p);
   }
   template <size_t M>
