@@ -17,6 +17,7 @@
 #include "aapat/optimize/family.h"
 #include "aapat/optimize/nlopt_guard.h"
 #include "aapat/temporal/engine_taa_settings.h"
+#include "aapat/temporal/phase_lanes.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/temporal_metrics.h"
 #include "aapat/temporal/upscale_model.h"
@@ -62,6 +63,8 @@ void radius_constraints(unsigned m, double* result, unsigned n, const double* x,
 constexpr int kMaxUpscaleEvaluations = 400;
 
 // Everything one evaluation of the epigraph's constraints needs, allocated once.
+// Each angle's terms are computed for every phase at once (phase_lanes.h),
+// per-phase values side by side in phase arrays of `stride`.
 struct Epigraph {
   const Metric& metric;
   int frames, per_frame, samples;
@@ -70,14 +73,18 @@ struct Epigraph {
   bool mean_e2;                            // the mean over phases (else the worst)
   std::vector<std::vector<double>> phase;  // phase[k][f]: frame f's weight at steady frame k
   double lambda;
-  // Scratch.
-  std::span<const double> p;  // the projections at the current angle (project())
-  std::vector<double> w, dp, dw, dq, values;
-  std::vector<double> sample_w;          // each sample's weight within its frame (sum 1 per frame)
-  std::vector<std::vector<double>> dv;   // per angle, d(term)/dp per sample
-  std::vector<std::vector<double>> dvw;  // per angle, d(term)/d(sample weight)
-  std::vector<double> gx, gy;            // a row's position gradient, x and y apart
-  std::vector<double> phase_of_sample;   // u_f of each sample's frame f at one phase
+  size_t stride;  // of the phase arrays
+  // Scratch, phase arrays unless said otherwise.
+  std::span<const double> p;     // the projections at the current angle (project())
+  std::vector<double> sample_w;  // each sample's weight within its frame (sum 1 per frame)
+  std::vector<double> w, phase_of_sample;  // E2: w_j = u_f sample_w_j, and u_f
+  std::vector<double> c, change;           // flicker: c_j = change_f sample_w_j, and change_f
+  std::vector<double> term;                // [stride]: one angle's terms
+  std::vector<double> dp, dw;              // their derivatives in p and in w (or c)
+  std::vector<double> values;              // [phase * angles + angle]: W^2 times the term
+  std::vector<double> coefficient;         // [angle * stride + phase]: d(row)/d(value)
+  std::vector<double> gx, gy;              // rows' position gradients, x and y apart
+  std::vector<double> gw;  // [weight variable * stride + phase]: rows' weight gradients
   // The positions' share, the same for every phase at one angle, computed
   // once per evaluation: projections, J, g0 and the sorted order per angle.
   std::vector<double> projected, moment, step;  // [angle * samples + j]
@@ -93,17 +100,30 @@ struct Epigraph {
         free_weights(s.samples_per_frame > 1 && s.optimize_weights),
         maximum(std::isinf(m.norm())),
         mean_e2(s.frame_measure == FrameMeasure::mean),
-        lambda(s.flicker_weight) {
+        lambda(s.flicker_weight),
+        stride(phase_stride(static_cast<size_t>(s.frames))) {
     for (int k = 0; k < frames; ++k) phase.push_back(phase_weights(s.model, frames, k, true));
     const size_t n = static_cast<size_t>(samples), angles = static_cast<size_t>(m.angle_count());
-    w.resize(n), dp.resize(n), dw.resize(n), dq.resize(n), gx.resize(n), gy.resize(n);
-    phase_of_sample.resize(n);
     sample_w.assign(n, 1.0 / per_frame);
-    values.resize(angles);
+    for (auto* a : {&w, &phase_of_sample, &c, &change, &dp, &dw, &gx, &gy})
+      a->assign(n * stride, 0.0);
+    term.assign(stride, 0.0);
+    values.resize(static_cast<size_t>(frames) * angles);
+    coefficient.assign(angles * stride, 0.0);
+    gw.assign(weight_variables() * stride, 0.0);
+    // The phases' frame weights and their changes; the padding's stay 0.
+    for (int k = 0; k < frames; ++k) {
+      const auto& now = phase[static_cast<size_t>(k)];
+      const auto& before = phase[static_cast<size_t>((k + frames - 1) % frames)];
+      for (size_t j = 0; j < n; ++j) {
+        const size_t f = j / static_cast<size_t>(per_frame),
+                     at = j * stride + static_cast<size_t>(k);
+        phase_of_sample[at] = now[f];
+        change[at] = now[f] - before[f];
+      }
+    }
     projected.resize(angles * n), moment.resize(angles * n), step.resize(angles * n);
     sorted.resize(angles);
-    dv.assign(angles, std::vector<double>(n));
-    dvw.assign(angles, std::vector<double>(n));
   }
   // Weight variables: per frame, all its weights but the last (which is 1
   // minus the others), after the positions.
@@ -128,7 +148,6 @@ struct Epigraph {
   // Terms per E2 block and per flicker block.
   int terms() const { return maximum ? angles() : 1; }
   size_t constraint_count() const { return static_cast<size_t>(2 * frames * terms()); }
-  // The positions, s, and one flicker bound t_k per transition.
   // The positions, then the E2 bounds (one s for the worst frame, or s_k per
   // phase for the mean), then one flicker bound t_k per transition.
   size_t e2_bounds() const { return mean_e2 ? static_cast<size_t>(frames) : 1; }
@@ -137,15 +156,17 @@ struct Epigraph {
   size_t e2_bound(int k) const { return s_index() + (mean_e2 ? static_cast<size_t>(k) : 0); }
   size_t flicker_bound(int k) const { return s_index() + e2_bounds() + static_cast<size_t>(k); }
 
-  // Every angle's projections and the filter's values at them.
-  void hold_positions(const double* x) {
+  // Every angle's projections and the filter's values at them (g0, which
+  // only the derivatives read, when `derivatives`).
+  void hold_positions(const double* x, bool derivatives) {
     const size_t n = static_cast<size_t>(samples);
     for (int a = 0; a < angles(); ++a) {
       const double nx = -metric.sin(a), ny = metric.cos(a);
       double* pa = projected.data() + static_cast<size_t>(a) * n;
       for (size_t j = 0; j < n; ++j) pa[j] = x[2 * j] * nx + x[2 * j + 1] * ny;
       const size_t at = static_cast<size_t>(a) * n;
-      filter_values_at(metric.filter(), {pa, n}, {moment.data() + at, n}, {step.data() + at, n});
+      filter_values_at(metric.filter(), {pa, n}, {moment.data() + at, n},
+                       {step.data() + at, derivatives ? n : 0});
       sort_samples({pa, n}, sorted[static_cast<size_t>(a)]);
     }
   }
@@ -165,147 +186,161 @@ struct Epigraph {
                                : std::span<const size_t>()};
   }
 
-  // The change of the step response between two frames (weights c):
-  // F = sum_j |R_j| (p_(j+1) - p_(j)) over the sorted projections, R_j the
-  // running sum, so dF/dp_(j) = |R_(j-1)| - |R_j| and dF/dc_(j) = the sum
-  // of sign(R_i) gap_i over i >= j. Returns F^2, d(F^2)/dp and d(F^2)/dc (dq).
-  double flicker_squared(const std::vector<double>& c) {
-    const std::vector<size_t>& order = sorted[static_cast<size_t>(angle)];
-    double running = 0, f = 0;
-    for (size_t j = 0; j < order.size(); ++j) {
-      const size_t m = order[j];
-      const double left = std::abs(running);
-      running += c[m];
-      dp[m] = left - (j + 1 < order.size() ? std::abs(running) : 0.0);
-      if (j + 1 < order.size()) f += std::abs(running) * (p[order[j + 1]] - p[m]);
-    }
-    // Backwards: the suffix sums of sign(R_i) gap_i.
-    running = 0;
-    for (size_t j = 0; j < order.size(); ++j) running += c[order[j]];
-    double suffix = 0;
-    for (size_t j = order.size(); j-- > 0;) {
-      const size_t m = order[j];
-      if (j + 1 < order.size()) {
-        const double gap = p[order[j + 1]] - p[m];
-        suffix += (running > 0 ? 1.0 : running < 0 ? -1.0 : 0.0) * gap;
+  // The weights of every phase's samples: w_j = u_f sample_w_j for E2, and
+  // for flicker c_j = (u_f now - u_f before) sample_w_j.
+  void weigh_samples() {
+    for (size_t j = 0; j < static_cast<size_t>(samples); ++j)
+      for (size_t k = 0; k < static_cast<size_t>(frames); ++k) {
+        const size_t at = j * stride + k;
+        w[at] = phase_of_sample[at] * sample_w[j];
+        c[at] = change[at] * sample_w[j];
       }
-      dq[m] = 2 * f * suffix;
-      running -= c[m];
-    }
-    for (double& d : dp) d *= 2 * f;
-    return f * f;
   }
 
-  // Writes one block of constraint values (term - bound) and their gradients:
-  // `value` fills values[angle] = W^2 X^2 and dv[angle] = its derivative in p.
-  template <class Value>
-  void block(const double* x, size_t bound, size_t first, double* result, double* grad,
-             Value&& value) {
-    const size_t n = variable_count();
+  // A block of rows: each steady frame's E2 or each transition's flicker.
+  enum class Block { e2, flicker };
+  // The block's terms at the current angle into term.
+  void terms_here(Block b) {
+    const size_t phases = static_cast<size_t>(frames);
+    if (b == Block::e2)
+      e1_squared_phases(metric.filter().half_mean_distance(), held(), w.data(), stride, phases,
+                        term.data());
+    else
+      flicker_squared_phases(p, sorted[static_cast<size_t>(angle)], c.data(), stride, phases,
+                             term.data());
+  }
+  // Their derivatives into dp and, with free weights, dw.
+  void derivatives_here(Block b) {
+    const size_t phases = static_cast<size_t>(frames);
+    if (b == Block::e2)
+      e1_squared_derivatives_phases(held(), w.data(), stride, phases, dp.data(),
+                                    free_weights ? dw.data() : nullptr);
+    else
+      flicker_squared_derivatives_phases(p, sorted[static_cast<size_t>(angle)], c.data(), stride,
+                                         phases, dp.data(), dw.data());
+  }
+  // With free weights: phase k's W^2 d(term)/d(sample weight j), through
+  // the weight's (or change's) dw_j/d sample_w_j, as the row sums it.
+  double weight_derivative(Block b, double wsq, size_t j, size_t k) const {
+    const size_t at = j * stride + k;
+    return wsq * ((b == Block::e2 ? phase_of_sample : change)[at] * dw[at]);
+  }
+  // Adds coef times phase k's weight gradient at the current angle to g
+  // (indexed as weight_variable, `step` apart); the last weight of a frame
+  // is 1 minus the others.
+  void add_weight_gradient(Block b, double wsq, size_t k, double coef, double* g,
+                           size_t step_between) const {
+    for (int f = 0; f < frames; ++f) {
+      const double last =
+          weight_derivative(b, wsq, static_cast<size_t>(f * per_frame + per_frame - 1), k);
+      for (int i = 0; i + 1 < per_frame; ++i)
+        g[static_cast<size_t>(f * (per_frame - 1) + i) * step_between] +=
+            coef * (weight_derivative(b, wsq, static_cast<size_t>(f * per_frame + i), k) - last);
+    }
+  }
+
+  // Writes block b's rows (term - bound) and their gradients. Every
+  // angle's value first, since a row's L_p mean weighs each angle's
+  // derivative by all of them; then, angle by angle, the derivatives.
+  void block(Block b, const double* x, double* result, double* grad) {
+    const size_t n = variable_count(), count = static_cast<size_t>(samples),
+                 phases = static_cast<size_t>(frames);
+    const auto first = [&](int k) {
+      return static_cast<size_t>((b == Block::e2 ? k : frames + k) * terms());
+    };
+    const auto bound = [&](int k) { return b == Block::e2 ? e2_bound(k) : flicker_bound(k); };
+    const auto value = [&](int k, int a) -> double& {
+      return values[static_cast<size_t>(k * angles() + a)];
+    };
     for (int a = 0; a < angles(); ++a) {
       project(a);
-      values[static_cast<size_t>(a)] = metric.weight_sq(a) * value();
-      for (int j = 0; j < samples; ++j) {
-        dv[static_cast<size_t>(a)][static_cast<size_t>(j)] =
-            metric.weight_sq(a) * dp[static_cast<size_t>(j)];
-        dvw[static_cast<size_t>(a)][static_cast<size_t>(j)] =
-            metric.weight_sq(a) * dq[static_cast<size_t>(j)];
-      }
+      terms_here(b);
+      for (int k = 0; k < frames; ++k)
+        value(k, a) = metric.weight_sq(a) * term[static_cast<size_t>(k)];
     }
-    // d(term)/d(v_a) for each angle.
-    auto emit = [&](size_t row, double term, auto&& coefficient) {
-      result[row] = term - x[bound];
+    if (maximum) {  // a row per angle, its gradient that angle's alone
+      for (int k = 0; k < frames; ++k)
+        for (int a = 0; a < angles(); ++a)
+          result[first(k) + static_cast<size_t>(a)] = std::sqrt(value(k, a)) - x[bound(k)];
       if (!grad) return;
-      double* g = grad + row * n;
-      std::fill(g, g + n, 0.0);
-      // The position gradient summed over angles in x and y apart (contiguous:
-      // the loop over samples vectorizes), then interleaved into g.
-      std::fill(gx.begin(), gx.end(), 0.0);
-      std::fill(gy.begin(), gy.end(), 0.0);
       for (int a = 0; a < angles(); ++a) {
-        const double c = coefficient(a);
-        if (c == 0) continue;
-        const double nx = -metric.sin(a), ny = metric.cos(a);
-        const double* dva = dv[static_cast<size_t>(a)].data();
-        for (size_t j = 0; j < gx.size(); ++j) {
-          const double d = c * dva[j];
-          gx[j] += d * nx;
-          gy[j] += d * ny;
-        }
-        if (free_weights)  // the last weight of a frame is 1 minus the others
-          for (int f = 0; f < frames; ++f) {
-            const auto& dw_a = dvw[static_cast<size_t>(a)];
-            const double last = dw_a[static_cast<size_t>(f * per_frame + per_frame - 1)];
-            for (int i = 0; i + 1 < per_frame; ++i)
-              g[weight_variable(f, i)] += c * (dw_a[static_cast<size_t>(f * per_frame + i)] - last);
+        project(a);
+        derivatives_here(b);
+        const double wsq = metric.weight_sq(a), nx = -metric.sin(a), ny = metric.cos(a);
+        for (int k = 0; k < frames; ++k) {
+          const double v = value(k, a), coef = v > 1e-300 ? 0.5 / std::sqrt(v) : 0.0;
+          double* g = grad + (first(k) + static_cast<size_t>(a)) * n;
+          std::fill(g, g + n, 0.0);
+          if (coef != 0) {
+            for (size_t j = 0; j < count; ++j) {
+              const double d = coef * (wsq * dp[j * stride + static_cast<size_t>(k)]);
+              g[2 * j] = 0.0 + d * nx;
+              g[2 * j + 1] = 0.0 + d * ny;
+            }
+            if (free_weights)
+              add_weight_gradient(b, wsq, static_cast<size_t>(k), coef, g + weight_variable(0, 0),
+                                  1);
           }
-      }
-      for (size_t j = 0; j < gx.size(); ++j) {
-        g[2 * j] = gx[j];
-        g[2 * j + 1] = gy[j];
-      }
-      g[bound] = -1;
-    };
-    if (maximum) {
-      for (int a = 0; a < angles(); ++a) {
-        const double v = values[static_cast<size_t>(a)], root = std::sqrt(v);
-        emit(first + static_cast<size_t>(a), root,
-             [&](int b) { return b == a && v > 1e-300 ? 0.5 / root : 0.0; });
+          g[bound(k)] = -1;
+        }
       }
       return;
     }
     // ((1/M) sum v^(p/2))^(1/p), scaled by the largest v.
-    const double norm = metric.norm(), top = *std::max_element(values.begin(), values.end());
-    const double combined = combine_over_angles(values, norm);
-    if (!(top > 1e-300)) {
-      emit(first, combined, [](int) { return 0.0; });
-      return;
+    const double norm = metric.norm();
+    for (int k = 0; k < frames; ++k) {
+      const std::span<const double> v(&value(k, 0), static_cast<size_t>(angles()));
+      const double top = *std::max_element(v.begin(), v.end());
+      result[first(k)] = combine_over_angles(v, norm) - x[bound(k)];
+      double scale = 0;
+      if (top > 1e-300) {
+        double mean = 0;
+        for (double e : v) mean += norm_power(e / top, norm / 2);
+        mean /= angles();
+        scale = 0.5 / angles() / std::sqrt(top) * std::pow(mean, 1 / norm - 1);
+      }
+      // v^(p/2 - 1) is 1 for p = 2 (norm_power's), with no division to make it.
+      const double power = norm / 2 - 1;
+      for (int a = 0; a < angles(); ++a)
+        coefficient[static_cast<size_t>(a) * stride + static_cast<size_t>(k)] =
+            top > 1e-300 && v[static_cast<size_t>(a)] > 0
+                ? scale * (power == 0 ? 1.0 : norm_power(v[static_cast<size_t>(a)] / top, power))
+                : 0.0;
     }
-    double mean = 0;
-    for (double v : values) mean += norm_power(v / top, norm / 2);
-    mean /= angles();
-    const double scale = 0.5 / angles() / std::sqrt(top) * std::pow(mean, 1 / norm - 1);
-    emit(first, combined, [&](int a) {
-      const double v = values[static_cast<size_t>(a)];
-      return v > 0 ? scale * norm_power(v / top, norm / 2 - 1) : 0.0;
-    });
+    if (!grad) return;
+    std::fill(gx.begin(), gx.end(), 0.0);
+    std::fill(gy.begin(), gy.end(), 0.0);
+    std::fill(gw.begin(), gw.end(), 0.0);
+    for (int a = 0; a < angles(); ++a) {
+      project(a);
+      derivatives_here(b);
+      const double* coef = coefficient.data() + static_cast<size_t>(a) * stride;
+      const double wsq = metric.weight_sq(a);
+      add_row_gradients(coef, wsq, dp.data(), count, stride, phases, -metric.sin(a), metric.cos(a),
+                        gx.data(), gy.data());
+      if (free_weights)
+        for (size_t k = 0; k < phases; ++k)
+          if (coef[k] != 0) add_weight_gradient(b, wsq, k, coef[k], gw.data() + k, stride);
+    }
+    for (int k = 0; k < frames; ++k) {
+      double* g = grad + first(k) * n;
+      std::fill(g, g + n, 0.0);
+      for (size_t i = 0; i < weight_variables(); ++i)
+        g[weight_variable(0, 0) + i] = gw[i * stride + static_cast<size_t>(k)];
+      for (size_t j = 0; j < count; ++j) {
+        g[2 * j] = gx[j * stride + static_cast<size_t>(k)];
+        g[2 * j + 1] = gy[j * stride + static_cast<size_t>(k)];
+      }
+      g[bound(k)] = -1;
+    }
   }
 
   void constraints(const double* x, double* result, double* grad) {
     read_weights(x);
-    hold_positions(x);
-    for (int k = 0; k < frames; ++k) {
-      const auto& u = phase[static_cast<size_t>(k)];
-      for (int j = 0; j < samples; ++j) {
-        phase_of_sample[static_cast<size_t>(j)] = u[static_cast<size_t>(j / per_frame)];
-        w[static_cast<size_t>(j)] =
-            phase_of_sample[static_cast<size_t>(j)] * sample_w[static_cast<size_t>(j)];
-      }
-      block(x, e2_bound(k), static_cast<size_t>(k * terms()), result, grad, [&] {
-        const double e1 =
-            e1_squared_gradient(metric.filter().half_mean_distance(), held(), w, dp, dw);
-        for (size_t j = 0; j < dq.size(); ++j)  // through w_j = u_f sample_w_j
-          dq[j] = phase_of_sample[j] * dw[j];
-        return e1;
-      });
-    }
-    std::vector<double> c(static_cast<size_t>(samples)), change(static_cast<size_t>(samples));
-    for (int k = 0; k < frames; ++k) {
-      const auto& now = phase[static_cast<size_t>(k)];
-      const auto& before = phase[static_cast<size_t>((k + frames - 1) % frames)];
-      for (int j = 0; j < samples; ++j) {
-        const size_t f = static_cast<size_t>(j / per_frame);
-        change[static_cast<size_t>(j)] = now[f] - before[f];
-        c[static_cast<size_t>(j)] =
-            change[static_cast<size_t>(j)] * sample_w[static_cast<size_t>(j)];
-      }
-      block(x, flicker_bound(k), static_cast<size_t>((frames + k) * terms()), result, grad, [&] {
-        const double f2 = flicker_squared(c);
-        for (int j = 0; j < samples; ++j)  // through c_j = change_f sample_w_j
-          dq[static_cast<size_t>(j)] *= change[static_cast<size_t>(j)];
-        return f2;
-      });
-    }
+    hold_positions(x, grad != nullptr);
+    weigh_samples();
+    block(Block::e2, x, result, grad);
+    block(Block::flicker, x, result, grad);
   }
 };
 

@@ -1,0 +1,57 @@
+// The sequence search's terms at one angle for every steady phase at once
+// (sequence_optimizer.cpp). A sequence's phases share the samples'
+// positions and differ only in their weights, so each pair's sign and
+// distance, and each angle's sorted order, serve all of them: the SIMD lanes
+// run over phases, each lane doing one phase's arithmetic in the one-phase
+// code's order (Highway, -ffp-contract=off), so every result has the same
+// bits as that code's, on every path, for finite weights.
+//
+// Values and derivatives are separate calls: the search needs every angle's
+// value before it knows how much each angle's derivative counts, and
+// computing the derivatives again then is cheaper than keeping them all.
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+#include "aapat/core/gradient.h"
+
+namespace aapat {
+
+// Phase arrays: for each sample j, `stride` values, phase k's at
+// [j * stride + k]. The stride is a multiple of kPhaseLanes (the widest
+// vector of doubles), so every path reads whole vectors; lanes past
+// `phases` are computed from the arrays' padding and mean nothing.
+inline constexpr size_t kPhaseLanes = 8;
+inline size_t phase_stride(size_t phases) {
+  return (phases + kPhaseLanes - 1) / kPhaseLanes * kPhaseLanes;
+}
+
+// For each phase k < phases, with w_k column k of the phase array w: e1[k]
+// = e1_squared_gradient(half_mean_distance, at, w_k, ...)'s value, and
+// e1_squared_derivatives_phases its dp (a phase array) and, unless dw is
+// null, its dw; the same bits.
+void e1_squared_phases(double half_mean_distance, const HeldSamples& at, const double* w,
+                       size_t stride, size_t phases, double* e1);
+void e1_squared_derivatives_phases(const HeldSamples& at, const double* w, size_t stride,
+                                   size_t phases, double* dp, double* dw);
+
+// For each phase, the change of the step response between two frames whose
+// samples' weights change by c (a phase array): F = sum_j |R_j| (p_(j+1) -
+// p_(j)) over the samples in `order` (sorted by p), R_j the running sum of
+// c, so dF/dp_(j) = |R_(j-1)| - |R_j| and dF/dc_(j) = the sum of sign(R_i)
+// gap_i over i >= j. f2[k] = F^2; the derivatives, phase arrays dp = dF^2/dp
+// and dc = dF^2/dc.
+void flicker_squared_phases(std::span<const double> p, std::span<const size_t> order,
+                            const double* c, size_t stride, size_t phases, double* f2);
+void flicker_squared_derivatives_phases(std::span<const double> p, std::span<const size_t> order,
+                                        const double* c, size_t stride, size_t phases, double* dp,
+                                        double* dc);
+
+// One angle's share of each phase's constraint row: for every sample j and
+// phase k with coef[k] != 0, d = coef[k] * (scale * dp[j * stride + k]),
+// then gx[j * stride + k] += d * nx and gy likewise with ny.
+void add_row_gradients(const double* coef, double scale, const double* dp, size_t n, size_t stride,
+                       size_t phases, double nx, double ny, double* gx, double* gy);
+
+}  // namespace aapat

@@ -1,0 +1,173 @@
+#include "aapat/temporal/phase_lanes.h"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "aapat/core/filter_catalog.h"
+#include "aapat/core/metric.h"
+#include "testing/every_simd_path.h"
+
+namespace aapat {
+namespace {
+
+// Random projections, some of them equal (ties take the sign 0 and form a
+// group of the sorted path), and their filter values and sorted order.
+struct Held {
+  std::vector<double> p, moment, step;
+  std::vector<size_t> order;
+  HeldSamples at() const {
+    return {p, moment, step,
+            p.size() > kPairwiseLimit ? std::span<const size_t>(order) : std::span<const size_t>()};
+  }
+};
+Held random_held(const Filter& filter, size_t n, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-0.7, 0.7);
+  Held h;
+  for (size_t j = 0; j < n; ++j) h.p.push_back(j > 0 && rng() % 5 == 0 ? h.p[rng() % j] : u(rng));
+  h.moment.resize(n), h.step.resize(n);
+  filter_values_at(filter, h.p, h.moment, h.step);
+  sort_samples(h.p, h.order);
+  return h;
+}
+
+// A phase array of random weights (negative ones too), zero past `phases`.
+std::vector<double> random_phases(size_t n, size_t phases, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-0.3, 1);
+  std::vector<double> w(n * phase_stride(phases), 0.0);
+  for (size_t j = 0; j < n; ++j)
+    for (size_t k = 0; k < phases; ++k) w[j * phase_stride(phases) + k] = u(rng);
+  return w;
+}
+
+std::vector<double> column(const std::vector<double>& a, size_t n, size_t stride, size_t k) {
+  std::vector<double> c(n);
+  for (size_t j = 0; j < n; ++j) c[j] = a[j * stride + k];
+  return c;
+}
+
+bool same_bits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+// Every phase's E1^2, dp and dw are e1_squared_gradient's bits for that
+// phase's weights, on every SIMD path, through the pair form (up to
+// kPairwiseLimit samples) and the sorted one (past it).
+RC_GTEST_PROP(PhaseLanes, E1SquaredIsTheOnePhaseGradientsBits, ()) {
+  const char* filters[] = {"mitchell", "gaussian", "lanczos:lobes=2", "box", "tent"};
+  const Filter filter = make_filter(filters[*rc::gen::inRange<size_t>(0, std::size(filters))]);
+  const size_t n = *rc::gen::inRange<size_t>(1, 40), phases = *rc::gen::inRange<size_t>(1, 21);
+  std::mt19937_64 rng(*rc::gen::arbitrary<uint64_t>());
+  const Held h = random_held(filter, n, rng);
+  const std::vector<double> w = random_phases(n, phases, rng);
+  const size_t stride = phase_stride(phases);
+  testing::EveryPath paths;
+  paths.run([&] {
+    std::vector<double> e1(stride), dp(n * stride), dw(n * stride), dp_only(n * stride);
+    e1_squared_phases(filter.half_mean_distance(), h.at(), w.data(), stride, phases, e1.data());
+    e1_squared_derivatives_phases(h.at(), w.data(), stride, phases, dp.data(), dw.data());
+    e1_squared_derivatives_phases(h.at(), w.data(), stride, phases, dp_only.data(), nullptr);
+    for (size_t k = 0; k < phases; ++k) {
+      std::vector<double> dpk(n), dwk(n);
+      const double e = e1_squared_gradient(filter.half_mean_distance(), h.at(),
+                                           column(w, n, stride, k), dpk, dwk);
+      RC_ASSERT(same_bits(e1[k], e));
+      for (size_t j = 0; j < n; ++j) {
+        RC_ASSERT(same_bits(dp[j * stride + k], dpk[j]));
+        RC_ASSERT(same_bits(dp_only[j * stride + k], dpk[j]));
+        RC_ASSERT(same_bits(dw[j * stride + k], dwk[j]));
+      }
+    }
+  });
+}
+
+// The flicker's F = sum_j |R_j| (p_(j+1) - p_(j)) by its definition, and its
+// derivatives by central differences (positions apart, so that no small
+// step reorders them).
+RC_GTEST_PROP(PhaseLanes, FlickerIsItsDefinitionWithItsDerivatives, ()) {
+  const size_t n = *rc::gen::inRange<size_t>(1, 30), phases = *rc::gen::inRange<size_t>(1, 21);
+  std::mt19937_64 rng(*rc::gen::arbitrary<uint64_t>());
+  std::vector<double> p;
+  for (size_t j = 0; j < n; ++j) p.push_back(0.05 * static_cast<double>(j) + 0.01 * (rng() % 3));
+  std::shuffle(p.begin(), p.end(), rng);
+  std::vector<size_t> order;
+  sort_samples(p, order);
+  const std::vector<double> c = random_phases(n, phases, rng);
+  const size_t stride = phase_stride(phases);
+  const auto flicker = [&](const std::vector<double>& at, const std::vector<double>& ck) {
+    std::vector<size_t> o;
+    sort_samples(at, o);
+    double running = 0, f = 0;
+    for (size_t j = 0; j + 1 < n; ++j) {
+      running += ck[o[j]];
+      f += std::abs(running) * (at[o[j + 1]] - at[o[j]]);
+    }
+    return f * f;
+  };
+  std::vector<double> first;
+  testing::EveryPath paths;
+  paths.run([&] {
+    std::vector<double> f2(stride), f2_again(stride), dp(n * stride), dc(n * stride);
+    flicker_squared_phases(p, order, c.data(), stride, phases, f2.data());
+    flicker_squared_derivatives_phases(p, order, c.data(), stride, phases, dp.data(), dc.data());
+    std::vector<double> all = f2;
+    all.insert(all.end(), dp.begin(), dp.end());
+    all.insert(all.end(), dc.begin(), dc.end());
+    if (first.empty()) first = all;
+    for (size_t i = 0; i < all.size(); ++i) RC_ASSERT(same_bits(all[i], first[i]));
+    const double h = 1e-6;
+    for (size_t k = 0; k < phases; ++k) {
+      std::vector<double> ck = column(c, n, stride, k);
+      const double f = flicker(p, ck);
+      RC_ASSERT(std::abs(f2[k] - f) <= 1e-12 * (1 + f));
+      for (size_t j = 0; j < n; ++j) {
+        std::vector<double> up = p, down = p;
+        up[j] += h, down[j] -= h;
+        const double by_p = (flicker(up, ck) - flicker(down, ck)) / (2 * h);
+        RC_ASSERT(std::abs(dp[j * stride + k] - by_p) <= 1e-5 * (1 + std::abs(by_p)));
+        std::vector<double> c_up = ck, c_down = ck;
+        c_up[j] += h, c_down[j] -= h;
+        const double by_c = (flicker(p, c_up) - flicker(p, c_down)) / (2 * h);
+        RC_ASSERT(std::abs(dc[j * stride + k] - by_c) <= 1e-5 * (1 + std::abs(by_c)));
+      }
+    }
+  });
+}
+
+// A row's gradient adds coef (scale dp) times the normal's components where
+// coef is not zero, in the order of the calls, with the same bits on every path.
+TEST(PhaseLanes, RowGradientsAddEachAngleScaledShares) {
+  std::mt19937_64 rng(3);
+  const size_t n = 7, phases = 11, stride = phase_stride(phases);
+  std::vector<double> dp = random_phases(n, phases, rng), coef(stride, 0.0);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (size_t k = 0; k < phases; ++k) coef[k] = k % 4 == 1 ? 0.0 : u(rng);
+  std::vector<double> want_x(n * stride, 0.0), want_y(n * stride, 0.0);
+  for (int angle = 0; angle < 3; ++angle)
+    for (size_t j = 0; j < n; ++j)
+      for (size_t k = 0; k < phases; ++k) {
+        if (coef[k] == 0) continue;
+        const double d = coef[k] * ((0.5 + angle) * dp[j * stride + k]);
+        want_x[j * stride + k] += d * std::cos(angle);
+        want_y[j * stride + k] += d * std::sin(angle);
+      }
+  testing::EveryPath paths;
+  paths.run([&] {
+    std::vector<double> gx(n * stride, 0.0), gy(n * stride, 0.0);
+    for (int angle = 0; angle < 3; ++angle)
+      add_row_gradients(coef.data(), 0.5 + angle, dp.data(), n, stride, phases, std::cos(angle),
+                        std::sin(angle), gx.data(), gy.data());
+    for (size_t j = 0; j < n; ++j)
+      for (size_t k = 0; k < phases; ++k) {
+        EXPECT_TRUE(same_bits(gx[j * stride + k], want_x[j * stride + k]));
+        EXPECT_TRUE(same_bits(gy[j * stride + k], want_y[j * stride + k]));
+      }
+  });
+}
+
+}  // namespace
+}  // namespace aapat
