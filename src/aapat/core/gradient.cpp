@@ -23,6 +23,19 @@ void sort_samples(std::span<const double> p, std::vector<size_t>& order) {
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return p[a] < p[b]; });
 }
 
+void resort_samples(std::span<const double> p, std::vector<size_t>& order) {
+  if (order.size() != p.size()) return sort_samples(p, order);
+  for (size_t i = 1; i < order.size(); ++i) {
+    const size_t moving = order[i];
+    size_t j = i;
+    for (; j > 0 && p[moving] < p[order[j - 1]]; --j) order[j] = order[j - 1];
+    order[j] = moving;
+  }
+  // Distinct, ordered positions have one sorted order, std::sort's too.
+  for (size_t i = 1; i < order.size(); ++i)
+    if (!(p[order[i - 1]] < p[order[i]])) return sort_samples(p, order);
+}
+
 double e1_squared_gradient(const Filter& filter, std::span<const double> p,
                            std::span<const double> w, std::span<double> dp, std::span<double> dw) {
   // The filter's values at the samples, then the sums (scratch kept per thread).

@@ -41,5 +41,10 @@ void filter_values_at(const Filter& filter, std::span<const double> p, std::span
                       std::span<double> step);
 // Fills `order` with 0..n-1 sorted by p, as the gradient's sorted path needs.
 void sort_samples(std::span<const double> p, std::vector<size_t>& order);
+// The same order from `order` as it stands (a permutation of 0..n-1 by a
+// nearby p, such as the last evaluation's): insertion sort, O(n) when few
+// samples changed places. Where two positions are equal (or one is NaN) the
+// order among them is std::sort's, so it sorts afresh with sort_samples.
+void resort_samples(std::span<const double> p, std::vector<size_t>& order);
 
 }  // namespace aapat

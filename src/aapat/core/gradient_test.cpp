@@ -4,6 +4,8 @@
 #include <rapidcheck/gtest.h>
 
 #include <cmath>
+#include <numeric>
+#include <vector>
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/metric.h"
@@ -66,6 +68,32 @@ TEST(E1Gradient, AgreesWithLaineAilaEquation6) {
     EXPECT_NEAR(dp[i], w[i] * (2 * f.step_response(p[i]) - 2 * below - w[i]), 1e-14);
     below += w[i];
   }
+}
+
+}  // namespace
+}  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// Re-sorting from any permutation gives sort_samples's order, ties and NaN
+// included (where std::sort's order among equals is the one kept).
+RC_GTEST_PROP(SortSamples, ResortingFromAnyOrderIsSortingAfresh, ()) {
+  const size_t n = *rc::gen::inRange<size_t>(0, 40);
+  std::vector<double> p;
+  for (size_t j = 0; j < n; ++j) {
+    const int kind = *rc::gen::inRange(0, 10);
+    p.push_back(kind == 0 && j > 0 ? p[*rc::gen::inRange<size_t>(0, j)]
+                : kind == 1        ? std::nan("")
+                                   : *rc::gen::inRange(-1000, 1000) / 997.0);
+  }
+  std::vector<size_t> order(n), want;
+  std::iota(order.begin(), order.end(), 0);
+  for (size_t i = n; i > 1; --i) std::swap(order[i - 1], order[*rc::gen::inRange<size_t>(0, i)]);
+  if (*rc::gen::inRange(0, 4) == 0) order.clear();  // no order yet
+  resort_samples(p, order);
+  sort_samples(p, want);
+  RC_ASSERT(order == want);
 }
 
 }  // namespace

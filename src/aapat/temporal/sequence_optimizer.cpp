@@ -167,7 +167,7 @@ struct Epigraph {
       const size_t at = static_cast<size_t>(a) * n;
       filter_values_at(metric.filter(), {pa, n}, {moment.data() + at, n},
                        {step.data() + at, derivatives ? n : 0});
-      sort_samples({pa, n}, sorted[static_cast<size_t>(a)]);
+      resort_samples({pa, n}, sorted[static_cast<size_t>(a)]);  // from the last evaluation's
     }
   }
   // Chooses angle a: p becomes its held projections.
