@@ -48,5 +48,24 @@ void TemporalFrameE2(benchmark::State& state) {
 }
 BENCHMARK(TemporalFrameE2)->Arg(8)->Arg(16)->Arg(64)->Unit(benchmark::kMicrosecond);
 
+// One evaluation of the sequence search's constraints and their Jacobian
+// (optimize --sequence K's inner step: every phase's E2 and every
+// transition's flicker at 180 angles, with gradients) at Halton's jitter.
+void SequenceConstraints(benchmark::State& state) {
+  const Metric metric(make_filter("mitchell"), make_acuity("uniform:step=1"), 2.0);
+  SequenceSearch search;
+  search.frames = static_cast<int>(state.range(0));
+  search.flicker_weight = 5;
+  std::vector<double> x, values, jacobian;
+  for (const Pattern& f : make_sequence("halton:frames=" + std::to_string(search.frames)).frames)
+    x.push_back(f.sets[0][0].x), x.push_back(f.sets[0][0].y);
+  for (auto _ : state) {
+    sequence_terms(search, metric, x, values, jacobian);
+    benchmark::DoNotOptimize(values.data());
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(SequenceConstraints)->Arg(8)->Arg(18)->Arg(32)->Arg(72)->Unit(benchmark::kMicrosecond);
+
 }  // namespace
 }  // namespace aapat

@@ -145,6 +145,13 @@ void Filter::tabulate(int segments) {
     for (size_t i = 0; i < j_pieces[k].c.size() && i < size_t(coefs_); ++i)
       abs_moment_coef_[k * coefs_ + i] = j_pieces[k].c[i];
   }
+  step_coefs_ = static_cast<int>(pieces_[0].g.c.size());
+  step_coef_.clear();
+  for (const Segment& seg : pieces_) {
+    if (seg.g.c.size() != static_cast<size_t>(step_coefs_))
+      throw Error("filter " + name_ + ": step response pieces of unequal degrees");
+    step_coef_.insert(step_coef_.end(), seg.g.c.begin(), seg.g.c.end());
+  }
   // int_{-R}^{R} g0^2 - R = -(1/2) E|S - T| (the energy identity of the metric).
   half_mean_distance_ = radius_ - (q_total_ + s_total_);
 }

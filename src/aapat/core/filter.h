@@ -127,6 +127,13 @@ class Filter {
   AbsMomentTable abs_moment_table() const {
     return {abs_moment_coef_.data(), segments_, coefs_, width_, inv_width_, radius_};
   }
+  // g0's pieces in the same form, for step_response at many points
+  // (core/metric_simd.h): inside the radius, g0(|a|) by Horner from the top
+  // coefficient (1 - that for a < 0); 1 at and past the radius, 0 at and
+  // before -radius.
+  AbsMomentTable step_response_table() const {
+    return {step_coef_.data(), segments_, step_coefs_, width_, inv_width_, radius_};
+  }
   // Half the mean distance of two independent draws from h: (1/2) E|S - T|.
   double half_mean_distance() const { return half_mean_distance_; }
 
@@ -160,6 +167,8 @@ class Filter {
   double width_ = 0, inv_width_ = 0;
   std::vector<Segment> pieces_;
   std::vector<double> abs_moment_coef_;
+  std::vector<double> step_coef_;  // each piece's g, step_coefs_ apiece
+  int step_coefs_ = 0;
   double half_mean_distance_ = 0;
   double q_total_ = 0, s_total_ = 0;
 };

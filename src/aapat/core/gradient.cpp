@@ -14,7 +14,7 @@ namespace aapat {
 void filter_values_at(const Filter& filter, std::span<const double> p, std::span<double> moment,
                       std::span<double> step) {
   abs_moments(filter.abs_moment_table(), p.data(), p.size(), moment.data());
-  for (size_t j = 0; j < step.size(); ++j) step[j] = filter.step_response(p[j]);
+  if (!step.empty()) step_responses(filter, p.data(), p.size(), step.data());
 }
 
 void sort_samples(std::span<const double> p, std::vector<size_t>& order) {

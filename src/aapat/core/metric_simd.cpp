@@ -91,12 +91,12 @@ HWY_INLINE Located LocateFew(D d, const Filter::AbsMomentTable& j, V p) {
   return l;
 }
 
-// Filter::abs_moment, lane for lane: the same products, sums and Horner
-// steps, for any table (the counts read at run time).
-HWY_INLINE V AbsMoment(D d, const Pieces& pieces, V p) {
+// Piece l.k's polynomial at l.t by Horner from its top coefficient, lane
+// for lane as Filter::abs_moment (and step_response) evaluate it, for any
+// table (the counts read at run time).
+HWY_INLINE V PieceAt(D d, const Pieces& pieces, const Located& l) {
   const Filter::AbsMomentTable& j = pieces.j;
   const hn::RebindToSigned<D> di;
-  const Located l = Locate(d, j, p);
   V r;
   if (pieces.by_select) {
     // Lane by lane the coefficient of piece k: piece 0's, replaced by piece
@@ -125,7 +125,13 @@ HWY_INLINE V AbsMoment(D d, const Pieces& pieces, V p) {
     for (int i = j.coefs - 2; i >= 0; --i)
       r = hn::Add(hn::Mul(r, l.t), hn::GatherIndex(d, j.coef + i, index));
   }
-  return hn::IfThenElse(l.inside, r, l.ap);
+  return r;
+}
+
+// Filter::abs_moment, lane for lane: the same products, sums and Horner steps.
+HWY_INLINE V AbsMoment(D d, const Pieces& pieces, V p) {
+  const Located l = Locate(d, pieces.j, p);
+  return hn::IfThenElse(l.inside, PieceAt(d, pieces, l), l.ap);
 }
 
 // The same for the piecewise cubics (kCoefs = 6; one piece for box and
@@ -352,6 +358,29 @@ void AbsMoments(const Filter::AbsMomentTable& j, const double* p, size_t n, doub
   WithAbsMoment(d, pieces, [&](auto abs_moment) { AbsMomentBlocks(d, abs_moment, p, n, out); });
 }
 
+// Filter::step_response, lane for lane, from its table (g0's pieces): g0(|a|)
+// inside the radius, 1 minus that for a < 0; 1 at and past the radius, 0 at
+// and before -radius.
+void StepResponses(const Filter::AbsMomentTable& g, const double* p, size_t n, double* out) {
+  const D d;
+  const Pieces pieces(d, g);
+  const V zero = hn::Zero(d), one = hn::Set(d, 1.0), radius = hn::Set(d, g.radius);
+  const auto step = [&](V a) {
+    const Located l = Locate(d, g, a);
+    const V r = PieceAt(d, pieces, l);
+    const V inside = hn::IfThenElse(hn::Lt(a, zero), hn::Sub(one, r), r);
+    return hn::IfThenElse(l.inside, inside, hn::IfThenElseZero(hn::Ge(a, radius), one));
+  };
+  const size_t lanes = hn::Lanes(d);
+  size_t i = 0;
+  for (; i + lanes <= n; i += lanes) hn::StoreU(step(hn::LoadU(d, p + i)), d, out + i);
+  if (i == n) return;
+  HWY_ALIGN double in[kMaxLanes] = {}, result[kMaxLanes];
+  std::memcpy(in, p + i, (n - i) * sizeof(double));
+  hn::Store(step(hn::Load(d, in)), d, result);
+  std::memcpy(out + i, result, (n - i) * sizeof(double));
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace aapat
 HWY_AFTER_NAMESPACE();
@@ -362,6 +391,7 @@ namespace aapat {
 HWY_EXPORT(PairwiseWeightedE1Squared);
 HWY_EXPORT(AbsMoments);
 HWY_EXPORT(PairwiseBalanceSpread);
+HWY_EXPORT(StepResponses);
 
 void pairwise_weighted_e1_squared(const Filter::AbsMomentTable& j, double half_mean_distance,
                                   const AngleTable& angles, const double* x, const double* y,
@@ -372,6 +402,10 @@ void pairwise_weighted_e1_squared(const Filter::AbsMomentTable& j, double half_m
 
 void abs_moments(const Filter::AbsMomentTable& j, const double* p, size_t n, double* out) {
   HWY_DYNAMIC_DISPATCH(AbsMoments)(j, p, n, out);
+}
+
+void step_responses(const Filter& filter, const double* p, size_t n, double* out) {
+  HWY_DYNAMIC_DISPATCH(StepResponses)(filter.step_response_table(), p, n, out);
 }
 
 void pairwise_balance_spread(const double* p, const double* w, size_t n, double* balance,

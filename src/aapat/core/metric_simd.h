@@ -34,6 +34,10 @@ void pairwise_weighted_e1_squared(const Filter::AbsMomentTable& j, double half_m
 // J(p_i) for every p into out: Filter::abs_moment, the lanes running over p.
 void abs_moments(const Filter::AbsMomentTable& j, const double* p, size_t n, double* out);
 
+// g0(p_i) for every p into out: Filter::step_response's bits, the lanes
+// running over p.
+void step_responses(const Filter& filter, const double* p, size_t n, double* out);
+
 // For n <= kPairwiseLimit samples, each j's balance_j = sum_k w_k sign(p_j -
 // p_k) and spread_j = sum_k w_k |p_j - p_k|, summed over k in order, the lanes
 // running over j; balance and spread have room for kPairwiseLimit values.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <random>
@@ -101,6 +102,36 @@ TEST(MetricSimd, AbsMomentsAreFilterAbsMomentBitForBit) {
             EXPECT_TRUE(std::isnan(out[i])) << spec << " p " << p[i];
           else
             EXPECT_EQ(out[i], expected) << spec << " p " << p[i];
+        }
+      }
+    });
+  }
+}
+
+// Step responses: Filter::step_response's bits on every path, for every
+// filter of the registry, at the pieces' ends (and an ulp either side), on
+// both sides of zero, at and past the radius, and between.
+TEST(MetricSimd, StepResponsesAreFilterStepResponseBitForBit) {
+  EveryPath paths;
+  for (const auto& entry : filter_registry().entries()) {
+    const Filter f = make_filter(entry.info.name);
+    const Filter::AbsMomentTable t = f.step_response_table();
+    std::vector<double> p;
+    for (int k = 0; k <= t.segments; ++k)
+      for (const double sign : {-1.0, 1.0}) {
+        const double at = sign * k * t.width;
+        p.insert(p.end(), {at, std::nextafter(at, -HUGE_VAL), std::nextafter(at, HUGE_VAL)});
+      }
+    for (int i = 0; i < 301; ++i) p.push_back(-1.5 * f.radius() + 3 * f.radius() * i / 300.0);
+    p.insert(p.end(), {0.0, -0.0, f.radius(), -f.radius(), HUGE_VAL, -HUGE_VAL});
+    paths.run([&] {
+      for (size_t length : {p.size(), p.size() - 1, size_t{3}}) {
+        std::vector<double> out(length);
+        step_responses(f, p.data(), length, out.data());
+        for (size_t i = 0; i < length; ++i) {
+          const double expected = f.step_response(p[i]);
+          EXPECT_EQ(std::memcmp(&out[i], &expected, sizeof expected), 0)
+              << entry.info.name << " a " << p[i] << ": " << out[i] << " against " << expected;
         }
       }
     });
