@@ -7,7 +7,9 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include "aapat/core/metric.h"
 #include "aapat/temporal/phase_lanes.h"
@@ -84,6 +86,29 @@ HWY_INLINE void PairSums(D d, const double* w, size_t stride, size_t v, const do
   }
 }
 
+// Adds one angle's share to the rows' gradients (RowShare): for the phases
+// of the vector at v, term = coef (scale dp), then gx += term nx and gy +=
+// term ny at phase-array index `at`; a phase whose coef is 0 adds nothing.
+struct RowAdder {
+  const double* coef;
+  V scale, nx, ny;
+  double* HWY_RESTRICT gx;
+  double* HWY_RESTRICT gy;
+  RowAdder(D d, const RowShare& row)
+      : coef(row.coef),
+        scale(hn::Set(d, row.scale)),
+        nx(hn::Set(d, row.nx)),
+        ny(hn::Set(d, row.ny)),
+        gx(row.gx),
+        gy(row.gy) {}
+  HWY_INLINE void add(D d, size_t v, size_t at, V dp) const {
+    const V c = hn::LoadU(d, coef + v);
+    const V term = hn::IfThenZeroElse(hn::Eq(c, hn::Zero(d)), hn::Mul(c, hn::Mul(scale, dp)));
+    hn::StoreU(hn::Add(hn::LoadU(d, gx + at), hn::Mul(term, nx)), d, gx + at);
+    hn::StoreU(hn::Add(hn::LoadU(d, gy + at), hn::Mul(term, ny)), d, gy + at);
+  }
+};
+
 // E1^2 = -E|S - T|/2 + sum_j w_j (J(p_j) - spread_j / 2), then max(0, .).
 void E1SquaredPairs(double half_mean_distance, const double* p, const double* moment, size_t n,
                     const double* w, size_t stride, size_t phases, double* e1) {
@@ -109,14 +134,16 @@ void E1SquaredPairs(double half_mean_distance, const double* p, const double* mo
   });
 }
 
-// dp_j = w_j (2 g0(p_j) - 1 - balance_j) and dw_j = J(p_j) - spread_j.
+// dp_j = w_j (2 g0(p_j) - 1 - balance_j), added to the rows, and dw_j =
+// J(p_j) - spread_j.
 void E1SquaredDerivativesPairs(const double* p, const double* moment, const double* step, size_t n,
-                               const double* w, size_t stride, size_t phases, double* dp,
+                               const double* w, size_t stride, size_t phases, const RowShare& row,
                                double* dw) {
   const D d;
   const size_t lanes = hn::Lanes(d);
   HWY_ALIGN double sign[kRow * kRow], distance[kRow * kRow];
   Pairs(d, p, n, sign, dw ? distance : nullptr);
+  const RowAdder rows(d, row);
   InPhaseVectors(d, phases, [&]<size_t P>(size_t v) {
     InBlocks<8 / P>(n, [&]<size_t B>(size_t j) {
       V sums[B][P];
@@ -124,9 +151,9 @@ void E1SquaredDerivativesPairs(const double* p, const double* moment, const doub
       for (size_t i = 0; i < B; ++i)
         for (size_t q = 0; q < P; ++q) {
           const size_t at = (j + i) * stride + v + q * lanes;
-          hn::StoreU(
-              hn::Mul(hn::LoadU(d, w + at), hn::Sub(hn::Set(d, 2 * step[j + i] - 1), sums[i][q])),
-              d, dp + at);
+          rows.add(
+              d, v + q * lanes, at,
+              hn::Mul(hn::LoadU(d, w + at), hn::Sub(hn::Set(d, 2 * step[j + i] - 1), sums[i][q])));
         }
       if (!dw) return;
       PairSums(d, w, stride, v, distance, n, j, sums);
@@ -143,9 +170,10 @@ void E1SquaredDerivativesPairs(const double* p, const double* moment, const doub
 // of equal positions, in `order`; e1 (unless null) sums in that order.
 void E1SquaredSorted(double half_mean_distance, const double* p, const double* moment,
                      const double* step, const size_t* order, size_t n, const double* w,
-                     size_t stride, size_t phases, double* e1, double* dp, double* dw) {
+                     size_t stride, size_t phases, double* e1, const RowShare* row, double* dw) {
   const D d;
   const V zero = hn::Zero(d), half = hn::Set(d, 0.5);
+  const RowAdder rows(d, row ? *row : RowShare{});
   for (size_t v = 0; v < phases; v += hn::Lanes(d)) {
     V total_w = zero, total_wp = zero;
     for (size_t j = 0; j < n; ++j) {
@@ -170,7 +198,7 @@ void E1SquaredSorted(double half_mean_distance, const double* p, const double* m
         const size_t j = order[g], at = j * stride + v;
         const V spread = hn::Sub(hn::Mul(hn::Set(d, p[j]), balance), hn::Sub(below_wp, above_wp));
         const V wj = hn::LoadU(d, w + at), jm = hn::Set(d, moment[j]);
-        if (dp) hn::StoreU(hn::Mul(wj, hn::Sub(hn::Set(d, 2 * step[j] - 1), balance)), d, dp + at);
+        if (row) rows.add(d, v, at, hn::Mul(wj, hn::Sub(hn::Set(d, 2 * step[j] - 1), balance)));
         if (dw) hn::StoreU(hn::Sub(jm, spread), d, dw + at);
         e = hn::Add(e, hn::Mul(wj, hn::Sub(jm, hn::Mul(spread, half))));
       }
@@ -184,10 +212,12 @@ void E1SquaredSorted(double half_mean_distance, const double* p, const double* m
 
 // The flicker sweep of B vectors of phases side by side (their chains
 // overlap), as the one-phase sweep did it: forwards for F and |R_(j-1)| -
-// |R_j|; with derivatives, backwards for the suffix sums of sign(R_i) gap_i.
+// |R_j| (held in dc until the backward pass replaces it); with a row,
+// backwards for dF^2/dc, the suffix sums of sign(R_i) gap_i, and dF^2/dp =
+// 2 F (|R_(j-1)| - |R_j|) into the row.
 template <size_t B>
 HWY_INLINE void FlickerSweep(D d, const double* p, const size_t* order, size_t n, const double* c,
-                             size_t stride, size_t v, double* f2, double* dp, double* dc) {
+                             size_t stride, size_t v, double* f2, const RowShare* row, double* dc) {
   const size_t lanes = hn::Lanes(d);
   const V zero = hn::Zero(d);
   V running[B], f[B];
@@ -200,13 +230,14 @@ HWY_INLINE void FlickerSweep(D d, const double* p, const size_t* order, size_t n
       const V left = hn::Abs(running[b]);
       running[b] = hn::Add(running[b], hn::LoadU(d, c + at));
       const V magnitude = j + 1 < n ? hn::Abs(running[b]) : zero;
-      if (dp) hn::StoreU(hn::Sub(left, magnitude), d, dp + at);
+      if (row) hn::StoreU(hn::Sub(left, magnitude), d, dc + at);
       if (j + 1 < n) f[b] = hn::Add(f[b], hn::Mul(magnitude, gap));
     }
   }
   if (f2)
     for (size_t b = 0; b < B; ++b) hn::StoreU(hn::Mul(f[b], f[b]), d, f2 + v + b * lanes);
-  if (!dp) return;
+  if (!row) return;
+  const RowAdder rows(d, *row);
   const V one = hn::Set(d, 1.0), minus_one = hn::Set(d, -1.0);
   V twice_f[B], suffix[B];
   for (size_t b = 0; b < B; ++b) {
@@ -226,37 +257,23 @@ HWY_INLINE void FlickerSweep(D d, const double* p, const size_t* order, size_t n
                                       hn::IfThenElse(hn::Lt(running[b], zero), minus_one, zero));
         suffix[b] = hn::Add(suffix[b], hn::Mul(sign, gap));
       }
+      const V change = hn::LoadU(d, dc + at);  // |R_(j-1)| - |R_j|
       hn::StoreU(hn::Mul(twice_f[b], suffix[b]), d, dc + at);
       running[b] = hn::Sub(running[b], hn::LoadU(d, c + at));
-      hn::StoreU(hn::Mul(hn::LoadU(d, dp + at), twice_f[b]), d, dp + at);
+      rows.add(d, v + b * lanes, at, hn::Mul(change, twice_f[b]));
     }
   }
 }
 
 void FlickerSquaredPhases(const double* p, const size_t* order, size_t n, const double* c,
-                          size_t stride, size_t phases, double* f2, double* dp, double* dc) {
+                          size_t stride, size_t phases, double* f2, const RowShare* row,
+                          double* dc) {
   const D d;
   const size_t lanes = hn::Lanes(d);
   size_t v = 0;
   for (; v + lanes < phases; v += 2 * lanes)
-    FlickerSweep<2>(d, p, order, n, c, stride, v, f2, dp, dc);
-  for (; v < phases; v += lanes) FlickerSweep<1>(d, p, order, n, c, stride, v, f2, dp, dc);
-}
-
-void AddRowGradients(const double* coef, double scale, const double* dp, size_t n, size_t stride,
-                     size_t phases, double nx, double ny, double* gx, double* gy) {
-  const D d;
-  const V zero = hn::Zero(d), s = hn::Set(d, scale), vx = hn::Set(d, nx), vy = hn::Set(d, ny);
-  for (size_t v = 0; v < phases; v += hn::Lanes(d)) {
-    const V c = hn::LoadU(d, coef + v);
-    const auto skip = hn::Eq(c, zero);  // a term without weight adds nothing
-    for (size_t j = 0; j < n; ++j) {
-      const size_t at = j * stride + v;
-      const V term = hn::IfThenZeroElse(skip, hn::Mul(c, hn::Mul(s, hn::LoadU(d, dp + at))));
-      hn::StoreU(hn::Add(hn::LoadU(d, gx + at), hn::Mul(term, vx)), d, gx + at);
-      hn::StoreU(hn::Add(hn::LoadU(d, gy + at), hn::Mul(term, vy)), d, gy + at);
-    }
-  }
+    FlickerSweep<2>(d, p, order, n, c, stride, v, f2, row, dc);
+  for (; v < phases; v += lanes) FlickerSweep<1>(d, p, order, n, c, stride, v, f2, row, dc);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -270,7 +287,6 @@ HWY_EXPORT(E1SquaredPairs);
 HWY_EXPORT(E1SquaredDerivativesPairs);
 HWY_EXPORT(E1SquaredSorted);
 HWY_EXPORT(FlickerSquaredPhases);
-HWY_EXPORT(AddRowGradients);
 
 void e1_squared_phases(double half_mean_distance, const HeldSamples& at, const double* w,
                        size_t stride, size_t phases, double* e1) {
@@ -284,14 +300,14 @@ void e1_squared_phases(double half_mean_distance, const HeldSamples& at, const d
 }
 
 void e1_squared_derivatives_phases(const HeldSamples& at, const double* w, size_t stride,
-                                   size_t phases, double* dp, double* dw) {
+                                   size_t phases, const RowShare& row, double* dw) {
   const size_t n = at.p.size();
   if (n > kPairwiseLimit)
     return HWY_DYNAMIC_DISPATCH(E1SquaredSorted)(0, at.p.data(), at.moment.data(), at.step.data(),
-                                                 at.order.data(), n, w, stride, phases, nullptr, dp,
-                                                 dw);
+                                                 at.order.data(), n, w, stride, phases, nullptr,
+                                                 &row, dw);
   HWY_DYNAMIC_DISPATCH(E1SquaredDerivativesPairs)
-  (at.p.data(), at.moment.data(), at.step.data(), n, w, stride, phases, dp, dw);
+  (at.p.data(), at.moment.data(), at.step.data(), n, w, stride, phases, row, dw);
 }
 
 void flicker_squared_phases(std::span<const double> p, std::span<const size_t> order,
@@ -301,15 +317,10 @@ void flicker_squared_phases(std::span<const double> p, std::span<const size_t> o
 }
 
 void flicker_squared_derivatives_phases(std::span<const double> p, std::span<const size_t> order,
-                                        const double* c, size_t stride, size_t phases, double* dp,
-                                        double* dc) {
+                                        const double* c, size_t stride, size_t phases,
+                                        const RowShare& row, double* dc) {
   HWY_DYNAMIC_DISPATCH(FlickerSquaredPhases)
-  (p.data(), order.data(), p.size(), c, stride, phases, nullptr, dp, dc);
-}
-
-void add_row_gradients(const double* coef, double scale, const double* dp, size_t n, size_t stride,
-                       size_t phases, double nx, double ny, double* gx, double* gy) {
-  HWY_DYNAMIC_DISPATCH(AddRowGradients)(coef, scale, dp, n, stride, phases, nx, ny, gx, gy);
+  (p.data(), order.data(), p.size(), c, stride, phases, nullptr, &row, dc);
 }
 
 }  // namespace aapat

@@ -27,31 +27,36 @@ inline size_t phase_stride(size_t phases) {
   return (phases + kPhaseLanes - 1) / kPhaseLanes * kPhaseLanes;
 }
 
+// One angle's share of each phase's constraint row gradient: phase k's
+// derivative d in sample j's projection counts as term = coef[k] * (scale *
+// d) where coef[k] != 0, and the row's gradient (the phase arrays gx, gy)
+// gains term * nx in x_j and term * ny in y_j, as the row sums its angles.
+struct RowShare {
+  const double* coef;  // [phase]
+  double scale, nx, ny;
+  double* gx;
+  double* gy;
+};
+
 // For each phase k < phases, with w_k column k of the phase array w: e1[k]
-// = e1_squared_gradient(half_mean_distance, at, w_k, ...)'s value, and
-// e1_squared_derivatives_phases its dp (a phase array) and, unless dw is
-// null, its dw; the same bits.
+// = e1_squared_gradient(half_mean_distance, at, w_k, dp_k, dw_k)'s value;
+// e1_squared_derivatives_phases adds dp_k to the row and, unless dw is
+// null, writes dw_k (a phase array). The same bits.
 void e1_squared_phases(double half_mean_distance, const HeldSamples& at, const double* w,
                        size_t stride, size_t phases, double* e1);
 void e1_squared_derivatives_phases(const HeldSamples& at, const double* w, size_t stride,
-                                   size_t phases, double* dp, double* dw);
+                                   size_t phases, const RowShare& row, double* dw);
 
 // For each phase, the change of the step response between two frames whose
 // samples' weights change by c (a phase array): F = sum_j |R_j| (p_(j+1) -
 // p_(j)) over the samples in `order` (sorted by p), R_j the running sum of
 // c, so dF/dp_(j) = |R_(j-1)| - |R_j| and dF/dc_(j) = the sum of sign(R_i)
-// gap_i over i >= j. f2[k] = F^2; the derivatives, phase arrays dp = dF^2/dp
-// and dc = dF^2/dc.
+// gap_i over i >= j. f2[k] = F^2; the derivatives add dF^2/dp to the row
+// and write dc = dF^2/dc (a phase array).
 void flicker_squared_phases(std::span<const double> p, std::span<const size_t> order,
                             const double* c, size_t stride, size_t phases, double* f2);
 void flicker_squared_derivatives_phases(std::span<const double> p, std::span<const size_t> order,
-                                        const double* c, size_t stride, size_t phases, double* dp,
-                                        double* dc);
-
-// One angle's share of each phase's constraint row: for every sample j and
-// phase k with coef[k] != 0, d = coef[k] * (scale * dp[j * stride + k]),
-// then gx[j * stride + k] += d * nx and gy likewise with ny.
-void add_row_gradients(const double* coef, double scale, const double* dp, size_t n, size_t stride,
-                       size_t phases, double nx, double ny, double* gx, double* gy);
+                                        const double* c, size_t stride, size_t phases,
+                                        const RowShare& row, double* dc);
 
 }  // namespace aapat

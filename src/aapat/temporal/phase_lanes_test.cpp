@@ -65,21 +65,32 @@ RC_GTEST_PROP(PhaseLanes, E1SquaredIsTheOnePhaseGradientsBits, ()) {
   const Held h = random_held(filter, n, rng);
   const std::vector<double> w = random_phases(n, phases, rng);
   const size_t stride = phase_stride(phases);
+  // The rows' share: coef 0 for some phases (they add nothing).
+  std::vector<double> coef(stride, 0.0);
+  for (size_t k = 0; k < phases; ++k) coef[k] = k % 3 == 2 ? 0.0 : 0.25 + 0.125 * k;
+  const double scale = 0.75, nx = -0.6, ny = 0.8;
   testing::EveryPath paths;
   paths.run([&] {
-    std::vector<double> e1(stride), dp(n * stride), dw(n * stride), dp_only(n * stride);
+    std::vector<double> e1(stride), dw(n * stride), gx(n * stride, 0.5), gy(n * stride, -0.5),
+        gx_only(n * stride, 0.5), gy_only(n * stride, -0.5);
     e1_squared_phases(filter.half_mean_distance(), h.at(), w.data(), stride, phases, e1.data());
-    e1_squared_derivatives_phases(h.at(), w.data(), stride, phases, dp.data(), dw.data());
-    e1_squared_derivatives_phases(h.at(), w.data(), stride, phases, dp_only.data(), nullptr);
+    e1_squared_derivatives_phases(h.at(), w.data(), stride, phases,
+                                  {coef.data(), scale, nx, ny, gx.data(), gy.data()}, dw.data());
+    e1_squared_derivatives_phases(h.at(), w.data(), stride, phases,
+                                  {coef.data(), scale, nx, ny, gx_only.data(), gy_only.data()},
+                                  nullptr);
     for (size_t k = 0; k < phases; ++k) {
       std::vector<double> dpk(n), dwk(n);
       const double e = e1_squared_gradient(filter.half_mean_distance(), h.at(),
                                            column(w, n, stride, k), dpk, dwk);
       RC_ASSERT(same_bits(e1[k], e));
       for (size_t j = 0; j < n; ++j) {
-        RC_ASSERT(same_bits(dp[j * stride + k], dpk[j]));
-        RC_ASSERT(same_bits(dp_only[j * stride + k], dpk[j]));
-        RC_ASSERT(same_bits(dw[j * stride + k], dwk[j]));
+        const size_t at = j * stride + k;
+        const double term = coef[k] == 0 ? 0.0 : coef[k] * (scale * dpk[j]);
+        RC_ASSERT(same_bits(gx[at], 0.5 + term * nx));
+        RC_ASSERT(same_bits(gy[at], -0.5 + term * ny));
+        RC_ASSERT(same_bits(gx_only[at], gx[at]));
+        RC_ASSERT(same_bits(dw[at], dwk[j]));
       }
     }
   });
@@ -111,9 +122,13 @@ RC_GTEST_PROP(PhaseLanes, FlickerIsItsDefinitionWithItsDerivatives, ()) {
   std::vector<double> first;
   testing::EveryPath paths;
   paths.run([&] {
-    std::vector<double> f2(stride), f2_again(stride), dp(n * stride), dc(n * stride);
+    // dF^2/dp through a row that adds it as it is: 0 + (1 (1 d)) 1.
+    std::vector<double> f2(stride), dp(n * stride, 0.0), unused(n * stride, 0.0), dc(n * stride),
+        ones(stride, 1.0);
     flicker_squared_phases(p, order, c.data(), stride, phases, f2.data());
-    flicker_squared_derivatives_phases(p, order, c.data(), stride, phases, dp.data(), dc.data());
+    flicker_squared_derivatives_phases(p, order, c.data(), stride, phases,
+                                       {ones.data(), 1.0, 1.0, 0.0, dp.data(), unused.data()},
+                                       dc.data());
     std::vector<double> all = f2;
     all.insert(all.end(), dp.begin(), dp.end());
     all.insert(all.end(), dc.begin(), dc.end());
@@ -135,37 +150,6 @@ RC_GTEST_PROP(PhaseLanes, FlickerIsItsDefinitionWithItsDerivatives, ()) {
         RC_ASSERT(std::abs(dc[j * stride + k] - by_c) <= 1e-5 * (1 + std::abs(by_c)));
       }
     }
-  });
-}
-
-// A row's gradient adds coef (scale dp) times the normal's components where
-// coef is not zero, in the order of the calls, with the same bits on every path.
-TEST(PhaseLanes, RowGradientsAddEachAngleScaledShares) {
-  std::mt19937_64 rng(3);
-  const size_t n = 7, phases = 11, stride = phase_stride(phases);
-  std::vector<double> dp = random_phases(n, phases, rng), coef(stride, 0.0);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for (size_t k = 0; k < phases; ++k) coef[k] = k % 4 == 1 ? 0.0 : u(rng);
-  std::vector<double> want_x(n * stride, 0.0), want_y(n * stride, 0.0);
-  for (int angle = 0; angle < 3; ++angle)
-    for (size_t j = 0; j < n; ++j)
-      for (size_t k = 0; k < phases; ++k) {
-        if (coef[k] == 0) continue;
-        const double d = coef[k] * ((0.5 + angle) * dp[j * stride + k]);
-        want_x[j * stride + k] += d * std::cos(angle);
-        want_y[j * stride + k] += d * std::sin(angle);
-      }
-  testing::EveryPath paths;
-  paths.run([&] {
-    std::vector<double> gx(n * stride, 0.0), gy(n * stride, 0.0);
-    for (int angle = 0; angle < 3; ++angle)
-      add_row_gradients(coef.data(), 0.5 + angle, dp.data(), n, stride, phases, std::cos(angle),
-                        std::sin(angle), gx.data(), gy.data());
-    for (size_t j = 0; j < n; ++j)
-      for (size_t k = 0; k < phases; ++k) {
-        EXPECT_TRUE(same_bits(gx[j * stride + k], want_x[j * stride + k]));
-        EXPECT_TRUE(same_bits(gy[j * stride + k], want_y[j * stride + k]));
-      }
   });
 }
 

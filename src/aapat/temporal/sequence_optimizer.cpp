@@ -80,7 +80,7 @@ struct Epigraph {
   std::vector<double> w, phase_of_sample;  // E2: w_j = u_f sample_w_j, and u_f
   std::vector<double> c, change;           // flicker: c_j = change_f sample_w_j, and change_f
   std::vector<double> term;                // [stride]: one angle's terms
-  std::vector<double> dp, dw;              // their derivatives in p and in w (or c)
+  std::vector<double> dw;                  // their derivatives in w (or c)
   std::vector<double> values;              // [phase * angles + angle]: W^2 times the term
   std::vector<double> coefficient;         // [angle * stride + phase]: d(row)/d(value)
   std::vector<double> gx, gy;              // rows' position gradients, x and y apart
@@ -105,8 +105,7 @@ struct Epigraph {
     for (int k = 0; k < frames; ++k) phase.push_back(phase_weights(s.model, frames, k, true));
     const size_t n = static_cast<size_t>(samples), angles = static_cast<size_t>(m.angle_count());
     sample_w.assign(n, 1.0 / per_frame);
-    for (auto* a : {&w, &phase_of_sample, &c, &change, &dp, &dw, &gx, &gy})
-      a->assign(n * stride, 0.0);
+    for (auto* a : {&w, &phase_of_sample, &c, &change, &dw, &gx, &gy}) a->assign(n * stride, 0.0);
     term.assign(stride, 0.0);
     values.resize(static_cast<size_t>(frames) * angles);
     coefficient.assign(angles * stride, 0.0);
@@ -209,15 +208,16 @@ struct Epigraph {
       flicker_squared_phases(p, sorted[static_cast<size_t>(angle)], c.data(), stride, phases,
                              term.data());
   }
-  // Their derivatives into dp and, with free weights, dw.
-  void derivatives_here(Block b) {
+  // Their derivatives: in p added to the rows by `row`, in w (or c) into
+  // dw with free weights.
+  void derivatives_here(Block b, const RowShare& row) {
     const size_t phases = static_cast<size_t>(frames);
     if (b == Block::e2)
-      e1_squared_derivatives_phases(held(), w.data(), stride, phases, dp.data(),
+      e1_squared_derivatives_phases(held(), w.data(), stride, phases, row,
                                     free_weights ? dw.data() : nullptr);
     else
       flicker_squared_derivatives_phases(p, sorted[static_cast<size_t>(angle)], c.data(), stride,
-                                         phases, dp.data(), dw.data());
+                                         phases, row, dw.data());
   }
   // With free weights: phase k's W^2 d(term)/d(sample weight j), through
   // the weight's (or change's) dw_j/d sample_w_j, as the row sums it.
@@ -265,22 +265,25 @@ struct Epigraph {
       if (!grad) return;
       for (int a = 0; a < angles(); ++a) {
         project(a);
-        derivatives_here(b);
-        const double wsq = metric.weight_sq(a), nx = -metric.sin(a), ny = metric.cos(a);
+        const double wsq = metric.weight_sq(a);
+        double* coef = coefficient.data();  // this angle's, per phase
         for (int k = 0; k < frames; ++k) {
-          const double v = value(k, a), coef = v > 1e-300 ? 0.5 / std::sqrt(v) : 0.0;
+          const double v = value(k, a);
+          coef[k] = v > 1e-300 ? 0.5 / std::sqrt(v) : 0.0;
+        }
+        std::fill(gx.begin(), gx.end(), 0.0);
+        std::fill(gy.begin(), gy.end(), 0.0);
+        derivatives_here(b, {coef, wsq, -metric.sin(a), metric.cos(a), gx.data(), gy.data()});
+        for (int k = 0; k < frames; ++k) {
           double* g = grad + (first(k) + static_cast<size_t>(a)) * n;
           std::fill(g, g + n, 0.0);
-          if (coef != 0) {
-            for (size_t j = 0; j < count; ++j) {
-              const double d = coef * (wsq * dp[j * stride + static_cast<size_t>(k)]);
-              g[2 * j] = 0.0 + d * nx;
-              g[2 * j + 1] = 0.0 + d * ny;
-            }
-            if (free_weights)
-              add_weight_gradient(b, wsq, static_cast<size_t>(k), coef, g + weight_variable(0, 0),
-                                  1);
+          for (size_t j = 0; j < count; ++j) {
+            g[2 * j] = gx[j * stride + static_cast<size_t>(k)];
+            g[2 * j + 1] = gy[j * stride + static_cast<size_t>(k)];
           }
+          if (free_weights && coef[k] != 0)
+            add_weight_gradient(b, wsq, static_cast<size_t>(k), coef[k], g + weight_variable(0, 0),
+                                1);
           g[bound(k)] = -1;
         }
       }
@@ -313,11 +316,9 @@ struct Epigraph {
     std::fill(gw.begin(), gw.end(), 0.0);
     for (int a = 0; a < angles(); ++a) {
       project(a);
-      derivatives_here(b);
-      const double* coef = coefficient.data() + static_cast<size_t>(a) * stride;
+      double* coef = coefficient.data() + static_cast<size_t>(a) * stride;
       const double wsq = metric.weight_sq(a);
-      add_row_gradients(coef, wsq, dp.data(), count, stride, phases, -metric.sin(a), metric.cos(a),
-                        gx.data(), gy.data());
+      derivatives_here(b, {coef, wsq, -metric.sin(a), metric.cos(a), gx.data(), gy.data()});
       if (free_weights)
         for (size_t k = 0; k < phases; ++k)
           if (coef[k] != 0) add_weight_gradient(b, wsq, k, coef[k], gw.data() + k, stride);
