@@ -239,11 +239,9 @@ HWY_INLINE void FlickerSweep(D d, const double* p, const size_t* order, size_t n
   if (!row) return;
   const RowAdder rows(d, *row);
   const V one = hn::Set(d, 1.0), minus_one = hn::Set(d, -1.0);
+  // running holds the sum of c in order, the backward pass's start.
   V twice_f[B], suffix[B];
   for (size_t b = 0; b < B; ++b) {
-    running[b] = zero;
-    for (size_t j = 0; j < n; ++j)
-      running[b] = hn::Add(running[b], hn::LoadU(d, c + order[j] * stride + v + b * lanes));
     twice_f[b] = hn::Add(f[b], f[b]);  // 2 f, exactly
     suffix[b] = zero;
   }
