@@ -339,23 +339,24 @@ void PairwiseBalanceSpread(const double* p, const double* w, size_t n, double* b
   for (; j < n; j += lanes) blocks.template operator()<1>(j);
 }
 
-// J of n values by `abs_moment`.
-template <class AbsMomentOfP>
-void AbsMomentBlocks(D d, AbsMomentOfP abs_moment, const double* p, size_t n, double* out) {
+// out[i] = f(p[i]) for n values, a vector at a time (the last one padded
+// with zeros).
+template <class F>
+void EachValue(D d, F f, const double* p, size_t n, double* out) {
   const size_t lanes = hn::Lanes(d);
   size_t i = 0;
-  for (; i + lanes <= n; i += lanes) hn::StoreU(abs_moment(hn::LoadU(d, p + i)), d, out + i);
+  for (; i + lanes <= n; i += lanes) hn::StoreU(f(hn::LoadU(d, p + i)), d, out + i);
   if (i == n) return;
   HWY_ALIGN double in[kMaxLanes] = {}, result[kMaxLanes];
   std::memcpy(in, p + i, (n - i) * sizeof(double));
-  hn::Store(abs_moment(hn::Load(d, in)), d, result);
+  hn::Store(f(hn::Load(d, in)), d, result);
   std::memcpy(out + i, result, (n - i) * sizeof(double));
 }
 
 void AbsMoments(const Filter::AbsMomentTable& j, const double* p, size_t n, double* out) {
   const D d;
   const Pieces pieces(d, j);
-  WithAbsMoment(d, pieces, [&](auto abs_moment) { AbsMomentBlocks(d, abs_moment, p, n, out); });
+  WithAbsMoment(d, pieces, [&](auto abs_moment) { EachValue(d, abs_moment, p, n, out); });
 }
 
 // Filter::step_response, lane for lane, from its table (g0's pieces): g0(|a|)
@@ -371,14 +372,7 @@ void StepResponses(const Filter::AbsMomentTable& g, const double* p, size_t n, d
     const V inside = hn::IfThenElse(hn::Lt(a, zero), hn::Sub(one, r), r);
     return hn::IfThenElse(l.inside, inside, hn::IfThenElseZero(hn::Ge(a, radius), one));
   };
-  const size_t lanes = hn::Lanes(d);
-  size_t i = 0;
-  for (; i + lanes <= n; i += lanes) hn::StoreU(step(hn::LoadU(d, p + i)), d, out + i);
-  if (i == n) return;
-  HWY_ALIGN double in[kMaxLanes] = {}, result[kMaxLanes];
-  std::memcpy(in, p + i, (n - i) * sizeof(double));
-  hn::Store(step(hn::Load(d, in)), d, result);
-  std::memcpy(out + i, result, (n - i) * sizeof(double));
+  EachValue(d, step, p, n, out);
 }
 
 }  // namespace HWY_NAMESPACE
