@@ -17,7 +17,7 @@
 #include "aapat/optimize/family.h"
 #include "aapat/optimize/nlopt_guard.h"
 #include "aapat/temporal/engine_taa_settings.h"
-#include "aapat/temporal/phase_lanes.h"
+#include "aapat/temporal/sequence_epigraph.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/temporal_metrics.h"
 #include "aapat/temporal/upscale_model.h"
@@ -62,289 +62,6 @@ void radius_constraints(unsigned m, double* result, unsigned n, const double* x,
 // Subplex's evaluations of the upscale's J per start (each a few tens of ms).
 constexpr int kMaxUpscaleEvaluations = 400;
 
-// Everything one evaluation of the epigraph's constraints needs, allocated once.
-// Each angle's terms are computed for every phase at once (phase_lanes.h),
-// per-phase values side by side in phase arrays of `stride`.
-struct Epigraph {
-  const Metric& metric;
-  int frames, per_frame, samples;
-  bool free_weights;                       // each frame's weights move (summing to 1)
-  bool maximum;                            // the max over angles (else an L_p mean)
-  bool mean_e2;                            // the mean over phases (else the worst)
-  std::vector<std::vector<double>> phase;  // phase[k][f]: frame f's weight at steady frame k
-  double lambda;
-  size_t stride;  // of the phase arrays
-  // Scratch, phase arrays unless said otherwise.
-  std::span<const double> p;     // the projections at the current angle (project())
-  std::vector<double> sample_w;  // each sample's weight within its frame (sum 1 per frame)
-  std::vector<double> w, phase_of_sample;  // E2: w_j = u_f sample_w_j, and u_f
-  std::vector<double> c, change;           // flicker: c_j = change_f sample_w_j, and change_f
-  std::vector<double> term;                // [stride]: one angle's terms
-  std::vector<double> dw;                  // their derivatives in w (or c)
-  std::vector<double> values;              // [phase * angles + angle]: W^2 times the term
-  std::vector<double> coefficient;         // [angle * stride + phase]: d(row)/d(value)
-  std::vector<double> gx, gy;              // rows' position gradients, x and y apart
-  std::vector<double> gw;  // [weight variable * stride + phase]: rows' weight gradients
-  // The positions' share, the same for every phase at one angle, computed
-  // once per evaluation: projections, J, g0 and the sorted order per angle.
-  std::vector<double> projected, moment, step;  // [angle * samples + j]
-  std::vector<std::vector<size_t>> sorted;      // per angle
-  int angle = 0;                                // the angle project() chose
-  NloptGuard guard;
-
-  Epigraph(const Metric& m, const SequenceSearch& s)
-      : metric(m),
-        frames(s.frames),
-        per_frame(s.samples_per_frame),
-        samples(s.frames * s.samples_per_frame),
-        free_weights(s.samples_per_frame > 1 && s.optimize_weights),
-        maximum(std::isinf(m.norm())),
-        mean_e2(s.frame_measure == FrameMeasure::mean),
-        lambda(s.flicker_weight),
-        stride(phase_stride(static_cast<size_t>(s.frames))) {
-    for (int k = 0; k < frames; ++k) phase.push_back(phase_weights(s.model, frames, k, true));
-    const size_t n = static_cast<size_t>(samples), angles = static_cast<size_t>(m.angle_count());
-    sample_w.assign(n, 1.0 / per_frame);
-    for (auto* a : {&w, &phase_of_sample, &c, &change, &dw, &gx, &gy}) a->assign(n * stride, 0.0);
-    term.assign(stride, 0.0);
-    values.resize(static_cast<size_t>(frames) * angles);
-    coefficient.assign(angles * stride, 0.0);
-    gw.assign(weight_variables() * stride, 0.0);
-    // The phases' frame weights and their changes; the padding's stay 0.
-    for (int k = 0; k < frames; ++k) {
-      const auto& now = phase[static_cast<size_t>(k)];
-      const auto& before = phase[static_cast<size_t>((k + frames - 1) % frames)];
-      for (size_t j = 0; j < n; ++j) {
-        const size_t f = j / static_cast<size_t>(per_frame),
-                     at = j * stride + static_cast<size_t>(k);
-        phase_of_sample[at] = now[f];
-        change[at] = now[f] - before[f];
-      }
-    }
-    projected.resize(angles * n), moment.resize(angles * n), step.resize(angles * n);
-    sorted.resize(angles);
-  }
-  // Weight variables: per frame, all its weights but the last (which is 1
-  // minus the others), after the positions.
-  size_t weight_variables() const {
-    return free_weights ? static_cast<size_t>(frames * (per_frame - 1)) : 0;
-  }
-  size_t weight_variable(int f, int i) const {
-    return static_cast<size_t>(2 * samples) + static_cast<size_t>(f * (per_frame - 1) + i);
-  }
-  void read_weights(const double* x) {
-    if (!free_weights) return;
-    for (int f = 0; f < frames; ++f) {
-      double rest = 1;
-      for (int i = 0; i + 1 < per_frame; ++i) {
-        sample_w[static_cast<size_t>(f * per_frame + i)] = x[weight_variable(f, i)];
-        rest -= x[weight_variable(f, i)];
-      }
-      sample_w[static_cast<size_t>(f * per_frame + per_frame - 1)] = rest;
-    }
-  }
-  int angles() const { return metric.angle_count(); }
-  // Terms per E2 block and per flicker block.
-  int terms() const { return maximum ? angles() : 1; }
-  size_t constraint_count() const { return static_cast<size_t>(2 * frames * terms()); }
-  // The positions, then the E2 bounds (one s for the worst frame, or s_k per
-  // phase for the mean), then one flicker bound t_k per transition.
-  size_t e2_bounds() const { return mean_e2 ? static_cast<size_t>(frames) : 1; }
-  size_t variable_count() const { return s_index() + static_cast<size_t>(frames) + e2_bounds(); }
-  size_t s_index() const { return static_cast<size_t>(2 * samples) + weight_variables(); }
-  size_t e2_bound(int k) const { return s_index() + (mean_e2 ? static_cast<size_t>(k) : 0); }
-  size_t flicker_bound(int k) const { return s_index() + e2_bounds() + static_cast<size_t>(k); }
-
-  // Every angle's projections and the filter's values at them (g0, which
-  // only the derivatives read, when `derivatives`).
-  void hold_positions(const double* x, bool derivatives) {
-    const size_t n = static_cast<size_t>(samples);
-    for (int a = 0; a < angles(); ++a) {
-      const double nx = -metric.sin(a), ny = metric.cos(a);
-      double* pa = projected.data() + static_cast<size_t>(a) * n;
-      for (size_t j = 0; j < n; ++j) pa[j] = x[2 * j] * nx + x[2 * j + 1] * ny;
-      const size_t at = static_cast<size_t>(a) * n;
-      filter_values_at(metric.filter(), {pa, n}, {moment.data() + at, n},
-                       {step.data() + at, derivatives ? n : 0});
-      resort_samples({pa, n}, sorted[static_cast<size_t>(a)]);  // from the last evaluation's
-    }
-  }
-  // Chooses angle a: p becomes its held projections.
-  void project(int a) {
-    angle = a;
-    const size_t n = static_cast<size_t>(samples);
-    p = {projected.data() + static_cast<size_t>(a) * n, n};
-  }
-  // The held samples at the current angle, for e1_squared_gradient.
-  HeldSamples held() const {
-    const size_t n = static_cast<size_t>(samples), at = static_cast<size_t>(angle) * n;
-    return {p,
-            {moment.data() + at, n},
-            {step.data() + at, n},
-            n > kPairwiseLimit ? std::span<const size_t>(sorted[static_cast<size_t>(angle)])
-                               : std::span<const size_t>()};
-  }
-
-  // The weights of every phase's samples: w_j = u_f sample_w_j for E2, and
-  // for flicker c_j = (u_f now - u_f before) sample_w_j.
-  void weigh_samples() {
-    for (size_t j = 0; j < static_cast<size_t>(samples); ++j)
-      for (size_t k = 0; k < static_cast<size_t>(frames); ++k) {
-        const size_t at = j * stride + k;
-        w[at] = phase_of_sample[at] * sample_w[j];
-        c[at] = change[at] * sample_w[j];
-      }
-  }
-
-  // A block of rows: each steady frame's E2 or each transition's flicker.
-  enum class Block { e2, flicker };
-  // The block's terms at the current angle into term.
-  void terms_here(Block b) {
-    const size_t phases = static_cast<size_t>(frames);
-    if (b == Block::e2)
-      e1_squared_phases(metric.filter().half_mean_distance(), held(), w.data(), stride, phases,
-                        term.data());
-    else
-      flicker_squared_phases(p, sorted[static_cast<size_t>(angle)], c.data(), stride, phases,
-                             term.data());
-  }
-  // Their derivatives: in p added to the rows by `row`, in w (or c) into
-  // dw with free weights.
-  void derivatives_here(Block b, const RowShare& row) {
-    const size_t phases = static_cast<size_t>(frames);
-    if (b == Block::e2)
-      e1_squared_derivatives_phases(held(), w.data(), stride, phases, row,
-                                    free_weights ? dw.data() : nullptr);
-    else
-      flicker_squared_derivatives_phases(p, sorted[static_cast<size_t>(angle)], c.data(), stride,
-                                         phases, row, dw.data());
-  }
-  // With free weights: phase k's W^2 d(term)/d(sample weight j), through
-  // the weight's (or change's) dw_j/d sample_w_j, as the row sums it.
-  double weight_derivative(Block b, double wsq, size_t j, size_t k) const {
-    const size_t at = j * stride + k;
-    return wsq * ((b == Block::e2 ? phase_of_sample : change)[at] * dw[at]);
-  }
-  // Adds coef times phase k's weight gradient at the current angle to g
-  // (indexed as weight_variable, `step` apart); the last weight of a frame
-  // is 1 minus the others.
-  void add_weight_gradient(Block b, double wsq, size_t k, double coef, double* g,
-                           size_t step_between) const {
-    for (int f = 0; f < frames; ++f) {
-      const double last =
-          weight_derivative(b, wsq, static_cast<size_t>(f * per_frame + per_frame - 1), k);
-      for (int i = 0; i + 1 < per_frame; ++i)
-        g[static_cast<size_t>(f * (per_frame - 1) + i) * step_between] +=
-            coef * (weight_derivative(b, wsq, static_cast<size_t>(f * per_frame + i), k) - last);
-    }
-  }
-
-  // Writes block b's rows (term - bound) and their gradients. Every
-  // angle's value first, since a row's L_p mean weighs each angle's
-  // derivative by all of them; then, angle by angle, the derivatives.
-  void block(Block b, const double* x, double* result, double* grad) {
-    const size_t n = variable_count(), count = static_cast<size_t>(samples),
-                 phases = static_cast<size_t>(frames);
-    const auto first = [&](int k) {
-      return static_cast<size_t>((b == Block::e2 ? k : frames + k) * terms());
-    };
-    const auto bound = [&](int k) { return b == Block::e2 ? e2_bound(k) : flicker_bound(k); };
-    const auto value = [&](int k, int a) -> double& {
-      return values[static_cast<size_t>(k * angles() + a)];
-    };
-    for (int a = 0; a < angles(); ++a) {
-      project(a);
-      terms_here(b);
-      for (int k = 0; k < frames; ++k)
-        value(k, a) = metric.weight_sq(a) * term[static_cast<size_t>(k)];
-    }
-    if (maximum) {  // a row per angle, its gradient that angle's alone
-      for (int k = 0; k < frames; ++k)
-        for (int a = 0; a < angles(); ++a)
-          result[first(k) + static_cast<size_t>(a)] = std::sqrt(value(k, a)) - x[bound(k)];
-      if (!grad) return;
-      for (int a = 0; a < angles(); ++a) {
-        project(a);
-        const double wsq = metric.weight_sq(a);
-        double* coef = coefficient.data();  // this angle's, per phase
-        for (int k = 0; k < frames; ++k) {
-          const double v = value(k, a);
-          coef[k] = v > 1e-300 ? 0.5 / std::sqrt(v) : 0.0;
-        }
-        std::fill(gx.begin(), gx.end(), 0.0);
-        std::fill(gy.begin(), gy.end(), 0.0);
-        derivatives_here(b, {coef, wsq, -metric.sin(a), metric.cos(a), gx.data(), gy.data()});
-        for (int k = 0; k < frames; ++k) {
-          double* g = grad + (first(k) + static_cast<size_t>(a)) * n;
-          std::fill(g, g + n, 0.0);
-          for (size_t j = 0; j < count; ++j) {
-            g[2 * j] = gx[j * stride + static_cast<size_t>(k)];
-            g[2 * j + 1] = gy[j * stride + static_cast<size_t>(k)];
-          }
-          if (free_weights && coef[k] != 0)
-            add_weight_gradient(b, wsq, static_cast<size_t>(k), coef[k], g + weight_variable(0, 0),
-                                1);
-          g[bound(k)] = -1;
-        }
-      }
-      return;
-    }
-    // ((1/M) sum v^(p/2))^(1/p), scaled by the largest v.
-    const double norm = metric.norm();
-    for (int k = 0; k < frames; ++k) {
-      const std::span<const double> v(&value(k, 0), static_cast<size_t>(angles()));
-      const double top = *std::max_element(v.begin(), v.end());
-      result[first(k)] = combine_over_angles(v, norm) - x[bound(k)];
-      double scale = 0;
-      if (top > 1e-300) {
-        double mean = 0;
-        for (double e : v) mean += norm_power(e / top, norm / 2);
-        mean /= angles();
-        scale = 0.5 / angles() / std::sqrt(top) * std::pow(mean, 1 / norm - 1);
-      }
-      // v^(p/2 - 1) is 1 for p = 2 (norm_power's), with no division to make it.
-      const double power = norm / 2 - 1;
-      for (int a = 0; a < angles(); ++a)
-        coefficient[static_cast<size_t>(a) * stride + static_cast<size_t>(k)] =
-            top > 1e-300 && v[static_cast<size_t>(a)] > 0
-                ? scale * (power == 0 ? 1.0 : norm_power(v[static_cast<size_t>(a)] / top, power))
-                : 0.0;
-    }
-    if (!grad) return;
-    std::fill(gx.begin(), gx.end(), 0.0);
-    std::fill(gy.begin(), gy.end(), 0.0);
-    std::fill(gw.begin(), gw.end(), 0.0);
-    for (int a = 0; a < angles(); ++a) {
-      project(a);
-      double* coef = coefficient.data() + static_cast<size_t>(a) * stride;
-      const double wsq = metric.weight_sq(a);
-      derivatives_here(b, {coef, wsq, -metric.sin(a), metric.cos(a), gx.data(), gy.data()});
-      if (free_weights)
-        for (size_t k = 0; k < phases; ++k)
-          if (coef[k] != 0) add_weight_gradient(b, wsq, k, coef[k], gw.data() + k, stride);
-    }
-    for (int k = 0; k < frames; ++k) {
-      double* g = grad + first(k) * n;
-      std::fill(g, g + n, 0.0);
-      for (size_t i = 0; i < weight_variables(); ++i)
-        g[weight_variable(0, 0) + i] = gw[i * stride + static_cast<size_t>(k)];
-      for (size_t j = 0; j < count; ++j) {
-        g[2 * j] = gx[j * stride + static_cast<size_t>(k)];
-        g[2 * j + 1] = gy[j * stride + static_cast<size_t>(k)];
-      }
-      g[bound(k)] = -1;
-    }
-  }
-
-  void constraints(const double* x, double* result, double* grad) {
-    read_weights(x);
-    hold_positions(x, grad != nullptr);
-    weigh_samples();
-    block(Block::e2, x, result, grad);
-    block(Block::flicker, x, result, grad);
-  }
-};
-
 // The sequence of the free variables x (positions, then weight variables).
 Sequence sequence_of(const std::vector<double>& x, const SequenceSearch& s,
                      const std::string& name) {
@@ -370,35 +87,10 @@ Sequence sequence_of(const std::vector<double>& x, const SequenceSearch& s,
   return out;
 }
 
-double nlopt_objective(unsigned n, const double* x, double* grad, void* data) {
-  const auto& e = *static_cast<const Epigraph*>(data);
-  // s + lambda * the mean of the transitions' flicker bounds.
-  const double each = e.lambda / e.frames;
-  const double per_e2 = 1.0 / static_cast<double>(e.e2_bounds());
-  if (grad) std::fill(grad, grad + n, 0.0);
-  double value = 0;
-  for (size_t i = 0; i < e.e2_bounds(); ++i) {
-    value += per_e2 * x[e.s_index() + i];
-    if (grad) grad[e.s_index() + i] = per_e2;
-  }
-  for (int k = 0; k < e.frames; ++k) {
-    value += each * x[e.flicker_bound(k)];
-    if (grad) grad[e.flicker_bound(k)] = each;
-  }
-  return value;
-}
-
-void nlopt_constraints(unsigned m, double* result, unsigned, const double* x, double* grad,
-                       void* data) {
-  auto& e = *static_cast<Epigraph*>(data);
-  if (!e.guard.call([&] { e.constraints(x, result, grad); }))
-    std::fill(result, result + m, 0.0);  // NLopt stops; the values are not used
-}
-
 // One start: SLSQP from `start`, never ending worse than it began.
 std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
                               std::vector<double> x) {
-  Epigraph e(metric, s);
+  SequenceEpigraph e(metric, s);
   const size_t n = e.variable_count(), m = e.constraint_count();
   // s and t start at the largest term, so the start is feasible.
   x.resize(n, 0.0);
@@ -420,10 +112,10 @@ std::vector<double> run_start(const SequenceSearch& s, const Metric& metric,
   e.guard.attach(opt.get());
   nlopt_set_lower_bounds(opt.get(), lo.data());
   nlopt_set_upper_bounds(opt.get(), hi.data());
-  nlopt_set_min_objective(opt.get(), nlopt_objective, &e);
+  nlopt_set_min_objective(opt.get(), SequenceEpigraph::nlopt_objective, &e);
   const std::vector<double> tolerance(m, 1e-12);
-  nlopt_add_inequality_mconstraint(opt.get(), static_cast<unsigned>(m), nlopt_constraints, &e,
-                                   tolerance.data());
+  nlopt_add_inequality_mconstraint(opt.get(), static_cast<unsigned>(m),
+                                   SequenceEpigraph::nlopt_constraints, &e, tolerance.data());
   double radius = s.jitter_radius.value_or(0);
   if (s.jitter_radius) {
     into_disc(s, x.data(), static_cast<size_t>(e.samples));  // a feasible start
@@ -772,7 +464,7 @@ void sequence_terms(const SequenceSearch& s, const Metric& metric,
                     const std::vector<double>& variables, std::vector<double>& values,
                     std::vector<double>& jacobian) {
   validate(s);
-  Epigraph e(metric, s);
+  SequenceEpigraph e(metric, s);
   const size_t n = e.variable_count(), m = e.constraint_count(), free = e.s_index();
   if (variables.size() != free)
     throw Error(fmt::format("sequence_terms: {} variables for {} samples (expected {})",
