@@ -1,5 +1,5 @@
 // The sequence search's terms at one angle for every steady phase at once
-// (sequence_optimizer.cpp). A sequence's phases share the samples'
+// (sequence_epigraph.h). A sequence's phases share the samples'
 // positions and differ only in their weights, so each pair's sign and
 // distance, and each angle's sorted order, serve all of them: the SIMD lanes
 // run over phases, each lane doing one phase's arithmetic in the one-phase
