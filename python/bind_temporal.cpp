@@ -99,8 +99,8 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
          const py::object& jitter_radius, const std::string& measure, int starts, uint64_t seed,
          int iterations, bool equal_weights, const std::string& api, const std::string& model,
          double alpha, int window, const py::object& ratio, const std::string& reconstruct,
-         const py::object& objective, const py::object& filter, const py::object& acuity,
-         const py::object& norm) {
+         const py::object& progress, const py::object& objective, const py::object& filter,
+         const py::object& acuity, const py::object& norm) {
         SequenceSearch s;
         if (!ratio.is_none()) {
           s.ratio = ratio.cast<double>();
@@ -122,7 +122,8 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
         s.model = make_accumulation(model, alpha, window, "");
         const Objective o = make_objective(objective, filter, acuity, norm);
         const Metric metric = o.metric();
-        const auto r = interruptible([&] { return optimize_sequence(s, metric); });
+        const auto report = progress_of(progress);
+        const auto r = interruptible([&] { return optimize_sequence(s, metric, report); });
         py::dict d = to_python(sequence_search_json(s, accumulation_text(s.model), o, r));
         d["result"] = r.best;
         return d;
@@ -136,14 +137,15 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
       py::arg("iterations") = SequenceSearch{}.iterations, py::arg("equal_weights") = false,
       py::arg("api") = "", py::arg("model") = "ema", py::arg("alpha") = 0.1, py::arg("window") = 0,
       py::arg("ratio") = py::none(), py::arg("reconstruct") = "lanczos:lobes=2",
-      AAPAT_OBJECTIVE_ARGS,
+      py::arg("progress") = py::none(), AAPAT_OBJECTIVE_ARGS,
       R"doc(aapat optimize --sequence: the positions of every frame's samples minimizing
 worst (or mean) steady E2 + flicker_weight x flicker under the model. The same
 sequence as the command line for the same settings and seed. A dict with the
 keys of `aapat optimize --sequence --json` (j, worst_e2, mean_e2, flicker,
 halton_j, ...), its "result" the aapat.Sequence found. ratio: optimize the
 jitter of an upscale (`--ratio`), each display pixel reconstructed by
-`reconstruct` from the render pixels around it.)doc");
+`reconstruct` from the render pixels around it. progress: a callable
+f(done, total, note), called as starts finish ("best J ..."), or None.)doc");
 
   m.def(
       "sequence_pan",

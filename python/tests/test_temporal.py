@@ -34,6 +34,20 @@ def test_optimize_equals_the_cli_file(aapat_cli, tmp_path):
     assert r["j"] <= r["halton_j"]
 
 
+def test_optimize_reports_each_start_and_a_raising_callback_stops_it():
+    calls = []
+    r = aapat.optimize_sequence(frames=4, starts=3,
+                                progress=lambda done, total, note: calls.append((done, total, note)))
+    assert [c[:2] for c in calls] == [(1, 3), (2, 3), (3, 3)]
+    assert calls[-1][2] == f"best J {r['j']:.5f}"
+
+    def boom(done, total, note):
+        raise KeyboardInterrupt("stop")
+
+    with pytest.raises(KeyboardInterrupt):
+        aapat.optimize_sequence(frames=4, starts=3, progress=boom)
+
+
 @pytest.mark.parametrize("key,distance", [
     ("jitter_bound", lambda j: np.abs(j).max(axis=1)),
     ("jitter_radius", lambda j: np.hypot(j[:, 0], j[:, 1]))])

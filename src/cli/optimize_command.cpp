@@ -145,7 +145,8 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   SequenceSearchResult r;
   try {
     tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
-    arena.execute([&] { r = optimize_sequence(s, metric); });
+    Progress bar("sequence");
+    arena.execute([&] { r = optimize_sequence(s, metric, bar.callback()); });
   } catch (const ParameterError& e) {
     throw Error(fmt::format("--{}{}", e.parameter(), e.detail()));
   }

@@ -480,7 +480,8 @@ void sequence_terms(const SequenceSearch& s, const Metric& metric,
               jacobian.begin() + static_cast<long>(i * free));
 }
 
-SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& metric) {
+SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& metric,
+                                       const ItemsProgress& progress) {
   validate(s);
   const std::string name = s.reconstruction ? fmt::format("aapat-upscale-{:g}", s.ratio)
                            : s.samples_per_frame == 1
@@ -498,21 +499,31 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
   if (s.samples_per_frame > 1 && s.optimize_weights)  // every frame's weights start equal
     halton.resize(positions + static_cast<size_t>(s.frames * (s.samples_per_frame - 1)),
                   1.0 / s.samples_per_frame);
+  // Each start's result begins with its J: the best so far for progress.
+  double best_so_far = std::numeric_limits<double>::infinity();
+  const auto report = [&](int done, int total, const std::string& result) {
+    if (!progress) return;
+    if (!result.empty()) best_so_far = std::min(best_so_far, ByteReader(result).get<double>());
+    progress(done, total, fmt::format("best J {:.5f}", best_so_far));
+  };
   // Each start is a work item (work/work_items.h): on any rank of a cluster
   // run, or from a checkpoint, with the same result.
-  const std::vector<std::string> results = run_work_items(s.starts, [&](int start) {
-    std::vector<double> x = halton;
-    if (start > 0) {
-      std::mt19937_64 rng = start_rng(s.seed, static_cast<uint64_t>(start));
-      std::uniform_real_distribution<double> u(-bound, bound);
-      for (size_t i = 0; i < positions; ++i) x[i] = u(rng);
-      into_disc(s, x.data(), positions / 2);
-    }
-    x = s.reconstruction ? run_upscale_start(s, metric, name, x) : run_start(s, metric, x);
-    ByteWriter w;
-    w.put(sequence_objective(sequence_of(x, s, name), s, metric).objective).put_all(x);
-    return w.take();
-  });
+  const std::vector<std::string> results = run_work_items(
+      s.starts,
+      [&](int start) {
+        std::vector<double> x = halton;
+        if (start > 0) {
+          std::mt19937_64 rng = start_rng(s.seed, static_cast<uint64_t>(start));
+          std::uniform_real_distribution<double> u(-bound, bound);
+          for (size_t i = 0; i < positions; ++i) x[i] = u(rng);
+          into_disc(s, x.data(), positions / 2);
+        }
+        x = s.reconstruction ? run_upscale_start(s, metric, name, x) : run_start(s, metric, x);
+        ByteWriter w;
+        w.put(sequence_objective(sequence_of(x, s, name), s, metric).objective).put_all(x);
+        return w.take();
+      },
+      report);
   std::vector<std::vector<double>> found;
   std::vector<double> objective;
   for (const std::string& result : results) {

@@ -32,6 +32,7 @@
 #include "aapat/core/hardware_layout.h"
 #include "aapat/core/metric.h"
 #include "aapat/temporal/accumulation.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 
@@ -93,7 +94,10 @@ struct SequenceObjective {
 SequenceObjective sequence_objective(const Sequence& s, const SequenceSearch& search,
                                      const Metric& metric);
 
-SequenceSearchResult optimize_sequence(const SequenceSearch& search, const Metric& metric);
+// progress: (starts done, starts, "best J ...") as each start finishes, one
+// call at a time (the command line's bar, Python's callable).
+SequenceSearchResult optimize_sequence(const SequenceSearch& search, const Metric& metric,
+                                       const ItemsProgress& progress = {});
 
 // The epigraph's constraints (each term minus its bound) at the free
 // variables (x, y per sample, frame by frame; then, when the weights move,

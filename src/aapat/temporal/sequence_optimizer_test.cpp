@@ -86,6 +86,26 @@ TEST(SequenceOptimizer, BeatsItsHaltonStartDeterministically) {
   }
 }
 
+// Progress: one call per start, done counting up to the starts, the last
+// note the best J, which is the J returned; the result is the same with or
+// without it.
+TEST(SequenceOptimizer, ReportsEachFinishedStartAndTheBestJ) {
+  SequenceSearch s;
+  s.frames = 5;
+  s.starts = 4;
+  std::vector<std::pair<int, int>> calls;
+  std::string last;
+  const SequenceSearchResult r =
+      optimize_sequence(s, uniform_l2(), [&](int done, int total, const std::string& note) {
+        calls.emplace_back(done, total);
+        last = note;
+      });
+  ASSERT_EQ(calls.size(), 4u);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(calls[static_cast<size_t>(i)], std::make_pair(i + 1, 4));
+  EXPECT_EQ(last, fmt::format("best J {:.5f}", r.objective));
+  EXPECT_EQ(sequence_to_json(r.best), sequence_to_json(optimize_sequence(s, uniform_l2()).best));
+}
+
 // The one-pixel fast path (one sort per angle for every phase) against the
 // accumulated kernels' E2 and flicker, phase by phase.
 TEST(SequenceOptimizer, TheObjectiveIsTheAccumulatedKernelsErrors) {
