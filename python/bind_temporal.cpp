@@ -152,8 +152,8 @@ f(done, total, note), called as starts finish ("best J ..."), or None.)doc");
       [](const std::vector<py::object>& sequences, const std::string& taa, double ratio,
          const py::dict& settings,
          const std::optional<std::vector<std::pair<double, double>>>& velocities,
-         const py::object& objective, const py::object& filter, const py::object& acuity,
-         const py::object& norm) {
+         const py::object& progress, const py::object& objective, const py::object& filter,
+         const py::object& acuity, const py::object& norm) {
         const EngineTaa t = make_engine_taa(taa, ratio, taa_overrides_of(settings));
         std::vector<Sequence> seqs;
         for (const py::object& q : sequences)
@@ -167,14 +167,16 @@ f(done, total, note), called as starts finish ("best J ..."), or None.)doc");
           for (const auto& [dx, dy] : *velocities) vs.push_back({dx, dy});
         }
         const Metric metric = make_metric(objective, filter, acuity, norm);
-        const auto rows = interruptible([&] { return evaluate_pans(seqs, t, vs, metric); });
+        const auto report = progress_of(progress);
+        const auto rows = interruptible([&] { return evaluate_pans(seqs, t, vs, metric, report); });
         py::list out;
         for (size_t i = 0; i < seqs.size(); ++i)
           out.append(to_python(pan_row_json(seqs[i], vs, rows[i])));
         return out;
       },
       py::arg("sequences"), py::kw_only(), py::arg("taa"), py::arg("ratio") = 1.0,
-      py::arg("settings") = py::dict(), py::arg("velocities") = py::none(), AAPAT_OBJECTIVE_ARGS,
+      py::arg("settings") = py::dict(), py::arg("velocities") = py::none(),
+      py::arg("progress") = py::none(), AAPAT_OBJECTIVE_ARGS,
       with_metric_args(R"doc(aapat sequence pan: the steady mean E2 and flicker of each sequence (a
 Sequence or a spec; a generator without frames= takes the upscaler's phases
 for ratio) under an engine preset's reconstruction, history sampler and blend
@@ -183,7 +185,9 @@ while the scene pans at each velocity ((dx, dy) display pixels per frame;
 (0, 0): still; default the command line's), by the linear model before
 rectification (docs/temporal.md). A list with one dict per sequence, the rows
 of `aapat sequence pan --json`: sequence, phases, mean_e2, flicker (the means
-over the velocities), velocities [{velocity, mean_e2, flicker}].)doc"));
+over the velocities), velocities [{velocity, mean_e2, flicker}]. progress: a
+callable f(done, total, note) called as each sequence and velocity finishes,
+or None.)doc"));
 }
 
 }  // namespace aapat::python

@@ -69,6 +69,12 @@ def test_sequence_pan_rows_are_the_cli_rows(aapat_cli):
     assert py == cli["rows"]
     with pytest.raises(aapat.Error, match="velocity"):
         aapat.sequence_pan(["r2"], taa="fsr2", velocities=[(float("nan"), 0.0)])
+    calls = []
+    again = aapat.sequence_pan(["aapat-taa-8", "halton:frames=8"], taa="ue4",
+                               settings={"history": "catmull-rom-9"}, velocities=[(0.37, 0.21)],
+                               acuity="uniform:step=30",
+                               progress=lambda done, total, note: calls.append((done, total)))
+    assert again == py and sorted(calls) == [(1, 2), (2, 2)]
 
 
 def test_optimize_sequence_at_8_frames_and_8_starts_equals_the_cli(aapat_cli, tmp_path):

@@ -23,6 +23,7 @@
 #include "cli/app.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
+#include "cli/progress.h"
 #include "cli/sequence_options.h"
 
 namespace aapat {
@@ -207,7 +208,11 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
           resolve_sequence_for_ratio(spec, o->ratio, ratio->count() ? &warning : nullptr));
       if (!warning.empty()) warnings() << "aapat: warning: " << warning << "\n";
     }
-    const auto rows = evaluate_pans(sequences, taa, velocities, metric);
+    std::vector<std::vector<PanReport>> rows;
+    {
+      Progress bar("pan");
+      rows = evaluate_pans(sequences, taa, velocities, metric, bar.callback());
+    }
     if (o->json) {
       JsonObject js = json_report("sequence pan");
       js.update(objective_json(objective));

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <string>
 #include <unordered_map>
 
@@ -305,15 +306,23 @@ Vec2 parse_velocity(std::string_view text) {
 std::vector<std::vector<PanReport>> evaluate_pans(const std::vector<Sequence>& sequences,
                                                   const EngineTaa& taa,
                                                   const std::vector<Vec2>& velocities,
-                                                  const Metric& metric) {
+                                                  const Metric& metric,
+                                                  const ItemsProgress& progress) {
   for (const Vec2 v : velocities) check_velocity(v);  // before any work starts
   std::vector<std::vector<PanReport>> rows(sequences.size(),
                                            std::vector<PanReport>(velocities.size()));
-  tbb::parallel_for(size_t{0}, rows.size() * velocities.size(), [&](size_t at) {
+  const size_t pairs = rows.size() * velocities.size();
+  std::mutex reporting;
+  int done = 0;
+  tbb::parallel_for(size_t{0}, pairs, [&](size_t at) {
     const size_t i = at / velocities.size(), k = at % velocities.size();
     const Vec2 v = velocities[k];
     const PanModel m{taa.ratio, taa.reconstruction, taa.history, v};
     rows[i][k] = evaluate_pan(sequences[i], m, steady_alpha(taa, v.x != 0 || v.y != 0), metric);
+    if (!progress) return;
+    const std::lock_guard lock(reporting);
+    progress(++done, static_cast<int>(pairs),
+             fmt::format("{} at {:g},{:g}", sequences[i].name, v.x, v.y));
   });
   return rows;
 }

@@ -29,6 +29,7 @@
 #include "aapat/temporal/history_sampling.h"
 #include "aapat/temporal/sequence.h"
 #include "aapat/temporal/upscale_model.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 
@@ -99,10 +100,13 @@ PanReport evaluate_pan(const Sequence& s, PanModel m, double alpha, const Metric
 // Every sequence at every velocity under an engine preset's reconstruction,
 // history sampler and steady blend (moving or, at velocity 0, still), as
 // `aapat sequence pan` and Python's sequence_pan report it: rows[sequence][velocity].
+// progress: (pairs done, pairs, "SEQUENCE at DX,DY") as each (sequence,
+// velocity) finishes, one call at a time.
 struct EngineTaa;
 std::vector<std::vector<PanReport>> evaluate_pans(const std::vector<Sequence>& sequences,
                                                   const EngineTaa& taa,
                                                   const std::vector<Vec2>& velocities,
-                                                  const Metric& metric);
+                                                  const Metric& metric,
+                                                  const ItemsProgress& progress = {});
 
 }  // namespace aapat
