@@ -17,6 +17,7 @@ SequenceEpigraph::SequenceEpigraph(const Metric& m, const SequenceSearch& s)
       mean_e2(s.frame_measure == FrameMeasure::mean),
       lambda(s.flicker_weight),
       stride(phase_stride(static_cast<size_t>(s.frames))) {
+  std::vector<std::vector<double>> phase;  // phase[k][f]: frame f's weight at steady frame k
   for (int k = 0; k < frames; ++k) phase.push_back(phase_weights(s.model, frames, k, true));
   const size_t n = static_cast<size_t>(samples), angles = static_cast<size_t>(m.angle_count());
   sample_w.assign(n, 1.0 / per_frame);
@@ -113,6 +114,15 @@ double SequenceEpigraph::weight_derivative(Block b, double wsq, size_t j, size_t
   return wsq * ((b == Block::e2 ? phase_of_sample : change)[at] * dw[at]);
 }
 
+void SequenceEpigraph::write_row(double* g, int k, size_t bound) const {
+  std::fill(g, g + variable_count(), 0.0);
+  for (size_t j = 0; j < static_cast<size_t>(samples); ++j) {
+    g[2 * j] = gx[j * stride + static_cast<size_t>(k)];
+    g[2 * j + 1] = gy[j * stride + static_cast<size_t>(k)];
+  }
+  g[bound] = -1;
+}
+
 void SequenceEpigraph::add_weight_gradient(Block b, double wsq, size_t k, double coef, double* g,
                                            size_t step_between) const {
   for (int f = 0; f < frames; ++f) {
@@ -125,8 +135,7 @@ void SequenceEpigraph::add_weight_gradient(Block b, double wsq, size_t k, double
 }
 
 void SequenceEpigraph::block(Block b, const double* x, double* result, double* grad) {
-  const size_t n = variable_count(), count = static_cast<size_t>(samples),
-               phases = static_cast<size_t>(frames);
+  const size_t n = variable_count(), phases = static_cast<size_t>(frames);
   const auto first = [&](int k) {
     return static_cast<size_t>((b == Block::e2 ? k : frames + k) * terms());
   };
@@ -158,15 +167,10 @@ void SequenceEpigraph::block(Block b, const double* x, double* result, double* g
       derivatives_here(b, {coef, wsq, -metric.sin(a), metric.cos(a), gx.data(), gy.data()});
       for (int k = 0; k < frames; ++k) {
         double* g = grad + (first(k) + static_cast<size_t>(a)) * n;
-        std::fill(g, g + n, 0.0);
-        for (size_t j = 0; j < count; ++j) {
-          g[2 * j] = gx[j * stride + static_cast<size_t>(k)];
-          g[2 * j + 1] = gy[j * stride + static_cast<size_t>(k)];
-        }
+        write_row(g, k, bound(k));
         if (free_weights && coef[k] != 0)
           add_weight_gradient(b, wsq, static_cast<size_t>(k), coef[k], g + weight_variable(0, 0),
                               1);
-        g[bound(k)] = -1;
       }
     }
     return;
@@ -207,14 +211,9 @@ void SequenceEpigraph::block(Block b, const double* x, double* result, double* g
   }
   for (int k = 0; k < frames; ++k) {
     double* g = grad + first(k) * n;
-    std::fill(g, g + n, 0.0);
+    write_row(g, k, bound(k));
     for (size_t i = 0; i < weight_variables(); ++i)
       g[weight_variable(0, 0) + i] = gw[i * stride + static_cast<size_t>(k)];
-    for (size_t j = 0; j < count; ++j) {
-      g[2 * j] = gx[j * stride + static_cast<size_t>(k)];
-      g[2 * j + 1] = gy[j * stride + static_cast<size_t>(k)];
-    }
-    g[bound(k)] = -1;
   }
 }
 

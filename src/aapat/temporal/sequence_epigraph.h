@@ -27,10 +27,9 @@ namespace aapat {
 struct SequenceEpigraph {
   const Metric& metric;
   int frames, per_frame, samples;
-  bool free_weights;                       // each frame's weights move (summing to 1)
-  bool maximum;                            // the max over angles (else an L_p mean)
-  bool mean_e2;                            // the mean over phases (else the worst)
-  std::vector<std::vector<double>> phase;  // phase[k][f]: frame f's weight at steady frame k
+  bool free_weights;  // each frame's weights move (summing to 1)
+  bool maximum;       // the max over angles (else an L_p mean)
+  bool mean_e2;       // the mean over phases (else the worst)
   double lambda;
   size_t stride;  // of the phase arrays
   // Scratch, phase arrays unless said otherwise.
@@ -95,6 +94,9 @@ struct SequenceEpigraph {
   // With free weights: phase k's W^2 d(term)/d(sample weight j), through
   // the weight's (or change's) dw_j/d sample_w_j, as the row sums it.
   double weight_derivative(Block b, double wsq, size_t j, size_t k) const;
+  // Row g (variable_count() wide): zeros, then phase k's position gradient
+  // from gx and gy, and -1 for its bound.
+  void write_row(double* g, int k, size_t bound) const;
   // Adds coef times phase k's weight gradient at the current angle to g
   // (indexed as weight_variable, `step` apart); the last weight of a frame
   // is 1 minus the others.
