@@ -23,6 +23,13 @@ using D = hn::ScalableTag<double>;
 using V = hn::Vec<D>;
 static_assert(HWY_LANES(double) <= kPhaseLanes, "a phase array's stride holds whole vectors");
 
+// sign(x) as 1, -1 or 0 on each lane (0 for NaN too).
+HWY_INLINE V SignOf(D d, V x) {
+  const V zero = hn::Zero(d);
+  return hn::IfThenElse(hn::Gt(x, zero), hn::Set(d, 1.0),
+                        hn::IfThenElse(hn::Lt(x, zero), hn::Set(d, -1.0), zero));
+}
+
 // Each pair's sign(p_j - p_k) as 1, -1 or 0, and |p_j - p_k|, at
 // [j * kPairwiseLimit + k] (rows of whole vectors).
 constexpr size_t kRow = kPairwiseLimit;
@@ -30,15 +37,11 @@ static_assert(kRow % HWY_LANES(double) == 0, "whole vectors per row");
 void Pairs(D d, const double* p, size_t n, double* sign, double* distance) {
   HWY_ALIGN double padded[kRow] = {};
   std::copy(p, p + n, padded);
-  const V zero = hn::Zero(d), one = hn::Set(d, 1.0), minus_one = hn::Set(d, -1.0);
   for (size_t j = 0; j < n; ++j) {
     const V pj = hn::Set(d, p[j]);
     for (size_t k = 0; k < n; k += hn::Lanes(d)) {
       const V diff = hn::Sub(pj, hn::Load(d, padded + k));
-      if (sign)
-        hn::Store(hn::IfThenElse(hn::Gt(diff, zero), one,
-                                 hn::IfThenElse(hn::Lt(diff, zero), minus_one, zero)),
-                  d, sign + j * kRow + k);
+      if (sign) hn::Store(SignOf(d, diff), d, sign + j * kRow + k);
       if (distance) hn::Store(hn::Abs(diff), d, distance + j * kRow + k);
     }
   }
@@ -238,7 +241,6 @@ HWY_INLINE void FlickerSweep(D d, const double* p, const size_t* order, size_t n
     for (size_t b = 0; b < B; ++b) hn::StoreU(hn::Mul(f[b], f[b]), d, f2 + v + b * lanes);
   if (!row) return;
   const RowAdder rows(d, *row);
-  const V one = hn::Set(d, 1.0), minus_one = hn::Set(d, -1.0);
   // running holds the sum of c in order, the backward pass's start.
   V twice_f[B], suffix[B];
   for (size_t b = 0; b < B; ++b) {
@@ -250,11 +252,7 @@ HWY_INLINE void FlickerSweep(D d, const double* p, const size_t* order, size_t n
     const V gap = j + 1 < n ? hn::Set(d, p[order[j + 1]] - p[m]) : zero;
     for (size_t b = 0; b < B; ++b) {
       const size_t at = m * stride + v + b * lanes;
-      if (j + 1 < n) {
-        const V sign = hn::IfThenElse(hn::Gt(running[b], zero), one,
-                                      hn::IfThenElse(hn::Lt(running[b], zero), minus_one, zero));
-        suffix[b] = hn::Add(suffix[b], hn::Mul(sign, gap));
-      }
+      if (j + 1 < n) suffix[b] = hn::Add(suffix[b], hn::Mul(SignOf(d, running[b]), gap));
       const V change = hn::LoadU(d, dc + at);  // |R_(j-1)| - |R_j|
       hn::StoreU(hn::Mul(twice_f[b], suffix[b]), d, dc + at);
       running[b] = hn::Sub(running[b], hn::LoadU(d, c + at));
