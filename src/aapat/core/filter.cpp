@@ -119,18 +119,19 @@ void Filter::tabulate(int segments) {
 
   // Step response, its square integrals, and J(p) = 2 * int g0 - p, piece by piece.
   double g_start = 0.5, j_start = 0, q = 0, s = 0;
-  std::vector<Polynomial> j_pieces(segments_);
+  std::vector<Polynomial> g_pieces(segments_), j_pieces(segments_);
   for (int k = 0; k < segments_; ++k) {
     Segment& seg = pieces_[k];
     seg.h = scale_ * seg.h;
-    seg.g = constant(g_start) + half * antiderivative(seg.h);
-    const Polynomial one_minus_g = constant(1.0) + (-1.0) * seg.g;
+    g_pieces[k] = constant(g_start) + half * antiderivative(seg.h);
+    const Polynomial& g = g_pieces[k];
+    const Polynomial one_minus_g = constant(1.0) + (-1.0) * g;
     seg.one_minus_g_sq_int = half * antiderivative(one_minus_g * one_minus_g);
-    seg.g_sq_int = half * antiderivative(seg.g * seg.g);
+    seg.g_sq_int = half * antiderivative(g * g);
     seg.q0 = q;
     seg.s0 = s;
-    j_pieces[k] = constant(j_start) + half * antiderivative(2.0 * seg.g + constant(-1.0));
-    g_start = seg.g(1.0);
+    j_pieces[k] = constant(j_start) + half * antiderivative(2.0 * g + constant(-1.0));
+    g_start = g(1.0);
     j_start = j_pieces[k](1.0);
     q += seg.one_minus_g_sq_int(1.0);
     s += seg.g_sq_int(1.0);
@@ -145,12 +146,12 @@ void Filter::tabulate(int segments) {
     for (size_t i = 0; i < j_pieces[k].c.size() && i < size_t(coefs_); ++i)
       abs_moment_coef_[k * coefs_ + i] = j_pieces[k].c[i];
   }
-  step_coefs_ = static_cast<int>(pieces_[0].g.c.size());
+  step_coefs_ = static_cast<int>(g_pieces[0].c.size());
   step_coef_.clear();
-  for (const Segment& seg : pieces_) {
-    if (seg.g.c.size() != static_cast<size_t>(step_coefs_))
+  for (const Polynomial& g : g_pieces) {
+    if (g.c.size() != static_cast<size_t>(step_coefs_))
       throw Error("filter " + name_ + ": step response pieces of unequal degrees");
-    step_coef_.insert(step_coef_.end(), seg.g.c.begin(), seg.g.c.end());
+    step_coef_.insert(step_coef_.end(), g.c.begin(), g.c.end());
   }
   // int_{-R}^{R} g0^2 - R = -(1/2) E|S - T| (the energy identity of the metric).
   half_mean_distance_ = radius_ - (q_total_ + s_total_);
@@ -172,7 +173,7 @@ double Filter::step_response(double a) const {
   if (a < 0) return 1.0 - step_response(-a);
   double t;
   const int k = locate(a, &t);
-  return pieces_[k].g(t);
+  return horner(&step_coef_[static_cast<size_t>(k) * step_coefs_], step_coefs_, t);
 }
 
 double Filter::step_integral(double a) const {

@@ -110,10 +110,7 @@ class Filter {
     int k = static_cast<int>(p * inv_width_);
     if (k >= segments_) k = segments_ - 1;
     const double t = (p - k * width_) * (2.0 * inv_width_) - 1.0;
-    const double* c = &abs_moment_coef_[static_cast<size_t>(k) * coefs_];
-    double r = c[coefs_ - 1];
-    for (int i = coefs_ - 2; i >= 0; --i) r = r * t + c[i];
-    return r;
+    return horner(&abs_moment_coef_[static_cast<size_t>(k) * coefs_], coefs_, t);
   }
   // J's pieces, for evaluating many J at once (core/metric_simd.h) with the
   // arithmetic of abs_moment: for |p| < radius, k = min(floor(|p| / width),
@@ -148,9 +145,16 @@ class Filter {
 
  private:
   struct Segment {
-    Polynomial h, g, one_minus_g_sq_int, g_sq_int;  // in t over the segment
+    Polynomial h, one_minus_g_sq_int, g_sq_int;  // in t over the segment (g: step_coef_)
     double q0 = 0, s0 = 0;  // integrals of (1-g)^2 and g^2 from 0 to the segment start
   };
+  // sum_i c[i] t^i by Horner from the top coefficient, as the tables' vector
+  // evaluations (core/metric_simd.cpp) take it.
+  static double horner(const double* c, int coefs, double t) {
+    double r = c[coefs - 1];
+    for (int i = coefs - 2; i >= 0; --i) r = r * t + c[i];
+    return r;
+  }
   int locate(double x, double* t) const;
   double shape_value_at(double x) const;
   void tabulate(int segments);
@@ -167,7 +171,7 @@ class Filter {
   double width_ = 0, inv_width_ = 0;
   std::vector<Segment> pieces_;
   std::vector<double> abs_moment_coef_;
-  std::vector<double> step_coef_;  // each piece's g, step_coefs_ apiece
+  std::vector<double> step_coef_;  // each piece's g0, step_coefs_ apiece
   int step_coefs_ = 0;
   double half_mean_distance_ = 0;
   double q_total_ = 0, s_total_ = 0;
