@@ -15,6 +15,8 @@
 #include "aapat/core/interrupt.h"
 #include "aapat/core/metric.h"
 #include "aapat/core/text.h"
+#include "aapat/generate/dart_grid.h"
+#include "aapat/generate/maximal_poisson.h"
 #include "aapat/generate/unit_random.h"
 
 namespace aapat {
@@ -27,14 +29,6 @@ int square_side(int n, std::string_view name) {
   if (k * k != n)
     throw Error(fmt::format("{}: n = {} must be a square number (k x k strata)", name, n));
   return k;
-}
-
-// Distance on the unit torus, so that tiled point sets keep their spacing.
-double torus_distance(Vec2 a, Vec2 b) {
-  double dx = std::abs(a.x - b.x), dy = std::abs(a.y - b.y);
-  dx = std::min(dx, 1 - dx);
-  dy = std::min(dy, 1 - dy);
-  return std::hypot(dx, dy);
 }
 
 // The radius of the densest (hexagonal) packing of n points in the unit square.
@@ -81,35 +75,6 @@ class TorusGrid {
   std::vector<std::vector<Vec2>> cells_;
 };
 
-// Dart throwing's occupancy grid on the unit torus: cells of side below
-// r / sqrt(2), so each holds at most one point and a dart looks at the 5 x 5
-// cells around its own, in one flat array.
-class DartGrid {
- public:
-  explicit DartGrid(double r)
-      : g_(std::clamp(static_cast<int>(std::sqrt(2.0) / r) + 1, 1, 8192)),
-        cells_(static_cast<size_t>(g_) * g_, Vec2{NAN, NAN}) {}
-  bool any_within(Vec2 c, double r) const {
-    const int cx = cell(c.x), cy = cell(c.y);
-    const int reach = std::min(g_ / 2, static_cast<int>(std::ceil(r * g_)));
-    for (int dy = -reach; dy <= reach; ++dy) {
-      const size_t row = static_cast<size_t>(wrap(cy + dy)) * g_;
-      for (int dx = -reach; dx <= reach; ++dx) {
-        const Vec2& e = cells_[row + wrap(cx + dx)];
-        if (!std::isnan(e.x) && torus_distance(e, c) < r) return true;
-      }
-    }
-    return false;
-  }
-  void add(Vec2 p) { cells_[static_cast<size_t>(cell(p.y)) * g_ + cell(p.x)] = p; }
-
- private:
-  int cell(double v) const { return std::min(g_ - 1, static_cast<int>(v * g_)); }
-  int wrap(int i) const { return (i % g_ + g_) % g_; }
-  int g_;
-  std::vector<Vec2> cells_;
-};
-
 // Dart throwing near its jamming density takes tens of darts per point and
 // grows faster than n once the grid leaves the cache: larger sets are refused.
 void check_dart_count(int n, std::string_view name) {
@@ -120,13 +85,13 @@ void check_dart_count(int n, std::string_view name) {
         name, n, kMaxPoissonPoints));
 }
 
-std::vector<Vec2> poisson(int n, double radius, bool maximal, std::mt19937_64& rng) {
+std::vector<Vec2> poisson(int n, double radius, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<Vec2> pts;
   DartGrid grid(radius);
   // Dart throwing with rejection; give up after many misses in a row.
   const int patience = 1000 + 100 * n;
-  for (int misses = 0; misses < patience && (maximal || static_cast<int>(pts.size()) < n);) {
+  for (int misses = 0; misses < patience && static_cast<int>(pts.size()) < n;) {
     throw_if_interrupted();
     const Vec2 c{u(rng), u(rng)};
     if (!grid.any_within(c, radius)) {
@@ -301,12 +266,12 @@ const std::vector<Entry>& entries() {
          double r = given ? prm.at("radius") : 0.75 * packing_radius(n);
          if (given && !(r > 0 && r <= 1))
            throw Error(fmt::format("poisson: radius = {} is out of range (0, 1]", r));
-         auto p = poisson(n, r, false, rng);
+         auto p = poisson(n, r, rng);
          // The default radius shrinks by 5% until n points fit (dart throwing
          // jams near 55% coverage, so an unlucky draw can stop short).
          while (!given && static_cast<int>(p.size()) < n) {
            r *= 0.95;
-           p = poisson(n, r, false, rng);
+           p = poisson(n, r, rng);
          }
          if (static_cast<int>(p.size()) < n)
            throw Error(
@@ -316,18 +281,17 @@ const std::vector<Entry>& entries() {
          return p;
        }},
       {{"poisson-maximal:radius=R", "dart throwing until no more points fit (n sets R by default)",
-        "maximal Poisson disk"},
+        "maximal Poisson disk; Ebeida et al. 2011"},
        {{"radius", NAN}},
        [](int n, const Params& prm, std::mt19937_64& rng) {
-         const double r =
-             std::isnan(prm.at("radius")) ? 0.75 * packing_radius(n) : prm.at("radius");
+         const bool given = !std::isnan(prm.at("radius"));
+         const double r = given ? prm.at("radius") : 0.75 * packing_radius(n);
          if (!(r >= 1e-3 && r <= 1))
            throw Error(fmt::format(
-               "poisson-maximal: radius = {} is out of range [0.001, 1] (a maximal set of "
+               "poisson-maximal: radius = {}{} is out of range [0.001, 1] (a maximal set of "
                "radius r has about 0.7 / r^2 points)",
-               r));
-         check_dart_count(static_cast<int>(0.7 / (r * r)), "poisson-maximal");
-         return poisson(n, r, true, rng);
+               r, given ? "" : fmt::format(" (from n = {})", n)));
+         return maximal_poisson_disk(r, rng);
        }},
       {{"best-candidate:q=10",
         "Mitchell's best candidate: of q x (points so far) random candidates, the farthest",

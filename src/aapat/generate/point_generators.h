@@ -25,7 +25,8 @@ inline constexpr int kMaxGeneratedPoints = 1'000'000;
 inline constexpr int kMaxNQueens = 20;
 inline constexpr double kMaxBestCandidateQueries = 5e7;  // about 7 s on one core
 
-// Dart throwing (poisson, poisson-maximal) past this many points is refused.
+// Dart throwing (poisson) past this many points is refused; poisson-maximal
+// is bounded by its radius (r >= 0.001: about 700,000 points).
 inline constexpr int kMaxPoissonPoints = 200'000;  // about 8 s on one core
 
 // The point generator `spec` with its parameters parsed once, for drawing many

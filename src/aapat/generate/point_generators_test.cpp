@@ -75,25 +75,6 @@ RC_GTEST_PROP(Generators, PoissonDiskKeepsItsMinimumDistance, ()) {
     }
 }
 
-TEST(Generators, MaximalPoissonCannotTakeAnotherDart) {
-  const double r = 0.1;
-  const auto p = generate_points("poisson-maximal:radius=0.1", 100, 5);
-  EXPECT_GT(p.size(), 40u);  // random sequential packing fills well past half the densest
-  int free_spots = 0;
-  for (int i = 0; i < 200; ++i)
-    for (int j = 0; j < 200; ++j) {
-      const Vec2 c{(i + 0.5) / 200, (j + 0.5) / 200};
-      bool ok = true;
-      for (const Vec2& q : p) {
-        double dx = std::abs(q.x - c.x), dy = std::abs(q.y - c.y);
-        dx = std::min(dx, 1 - dx), dy = std::min(dy, 1 - dy);
-        ok = ok && std::hypot(dx, dy) >= r;
-      }
-      free_spots += ok;
-    }
-  EXPECT_LT(free_spots, 200 * 200 / 500);  // almost no room left
-}
-
 // Radical inverses (Pelikan): g_2(1) = 1/2, g_2(2) = 1/4, g_2(3) = 3/4, g_3(1) = 1/3, ...
 TEST(Generators, HaltonAndHammersleyMatchTheRadicalInverse) {
   EXPECT_DOUBLE_EQ(radical_inverse(1, 2), 0.5);
