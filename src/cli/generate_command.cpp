@@ -11,6 +11,7 @@
 #include "aapat/io/point_set_file.h"
 #include "cli/commands.h"
 #include "cli/point_options.h"
+#include "cli/progress.h"
 
 namespace aapat {
 namespace {
@@ -33,7 +34,11 @@ void write_generated(const PointOptions& src, const std::string& output, int set
     out << fmt::format("wrote {} ({} points, {})\n", output, points.size(), family(p));
     return;
   }
-  const PointSets all = generate_point_sets(src.source, src.n, src.seed, sets);
+  PointSets all;
+  {
+    Progress bar("sets");
+    all = generate_point_sets(src.source, src.n, src.seed, sets, bar.callback());
+  }
   save_point_sets(all, output, src.format);
   out << fmt::format("wrote {} ({} points{})\n", output, all[0].size(),
                      sets > 1 ? fmt::format(" in each of {} sets", sets) : "");
@@ -55,7 +60,7 @@ Action add_generate_command(CLI::App& app) {
                   ".xyw: P(1,1,n)); default: CSV on stdout");
   cmd->add_option("--sets", *sets, "realizations (seeds seed, seed+1, ...) into a .dat or .bin")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
+      ->check(CLI::Range(1, kMaxPointSets));
   cmd->add_option(
       "--tile", *tile,
       "with a .json output: a K x K tile of pixel sets, each generated anew: P(K^2,1,n)");

@@ -131,6 +131,10 @@ TEST(Hardening, NoSilentlyWrongAnswers) {
 TEST(Hardening, UnboundedWorkIsFastOrRefusedWithTheLimit) {
   expect_error(run({"generate", "best-candidate", "--n", "10000"}), kExitError,
                "over the limit of 5e+07 (n <= 3162 at q = 10)");
+  const std::string sets = temp_path("many-sets.bin");
+  expect_error(run({"generate", "random", "--n", "1000000", "--sets", "51", "-o", sets}),
+               kExitError, "51000000 points in all, over the limit of 50000000");
+  EXPECT_FALSE(fs::exists(sets));
   std::string rows;
   for (int i = 0; i < 200000; ++i) rows += std::to_string(i * 0.0009) + ",1\n";
   expect_error(run({"eval", "rgss", "--acuity", write("long.csv", rows)}), kExitError,

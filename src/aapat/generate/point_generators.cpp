@@ -18,6 +18,7 @@
 #include "aapat/generate/dart_grid.h"
 #include "aapat/generate/maximal_poisson.h"
 #include "aapat/generate/unit_random.h"
+#include "aapat/work/byte_codec.h"
 
 namespace aapat {
 namespace {
@@ -443,12 +444,27 @@ std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed) {
 }
 
 std::vector<std::vector<Vec2>> generate_point_sets(std::string_view spec, int n, uint64_t seed,
-                                                   int sets) {
-  if (!(sets >= 1 && sets <= 100000))
-    throw ParameterError("sets", fmt::format(" {}: expected 1 to 100000", sets));
+                                                   int sets, const ItemsProgress& progress) {
+  if (!(sets >= 1 && sets <= kMaxPointSets))
+    throw ParameterError("sets", fmt::format(" {}: expected 1 to {}", sets, kMaxPointSets));
+  if (static_cast<int64_t>(sets) * n > kMaxGeneratedPointsInAll)
+    throw ParameterError(
+        "sets", fmt::format(" {} of {} points each: {} points in all, over the limit of {} (16 "
+                            "bytes each in memory)",
+                            sets, n, static_cast<int64_t>(sets) * n, kMaxGeneratedPointsInAll));
   const PointGenerator generator = make_point_generator(spec);
+  const std::vector<std::string> bytes = run_work_items(
+      sets,
+      [&](int r) {
+        return ByteWriter().put_all(generator(n, seed + static_cast<uint64_t>(r))).take();
+      },
+      progress);
   std::vector<std::vector<Vec2>> out;
-  for (int r = 0; r < sets; ++r) out.push_back(generator(n, seed + static_cast<uint64_t>(r)));
+  for (const std::string& b : bytes) {
+    ByteReader reader(b);
+    out.push_back(reader.get_all<Vec2>());
+    reader.finish();
+  }
   return out;
 }
 

@@ -14,6 +14,7 @@
 #include "aapat/core/geometry.h"
 #include "aapat/core/pattern.h"
 #include "aapat/core/spec.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 
@@ -22,6 +23,9 @@ namespace aapat {
 // Points one generator makes, and the largest N of the N-queens search (the
 // lexicographic search takes 40 s at N = 32).
 inline constexpr int kMaxGeneratedPoints = 1'000'000;
+// Realizations at once, and their points in all (16 bytes each: 800 MB).
+inline constexpr int kMaxPointSets = 100'000;
+inline constexpr int64_t kMaxGeneratedPointsInAll = 50'000'000;
 inline constexpr int kMaxNQueens = 20;
 inline constexpr double kMaxBestCandidateQueries = 5e7;  // about 7 s on one core
 
@@ -39,9 +43,12 @@ const GeneratorRegistry& generator_registry();
 // n points in [0,1)^2 by the generator `spec`; throws Error naming the
 // generator, parameter or n that does not fit.
 std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed);
-// `sets` realizations, with seeds seed, seed + 1, ... (as `aapat generate --sets`).
+// `sets` realizations, with seeds seed, seed + 1, ... (as `aapat generate
+// --sets`), at most kMaxPointSets of them and kMaxGeneratedPointsInAll points
+// in all; each set is a work item (work/work_items.h), so they run on every
+// core with the same result, and `progress` hears of each.
 std::vector<std::vector<Vec2>> generate_point_sets(std::string_view spec, int n, uint64_t seed,
-                                                   int sets);
+                                                   int sets, const ItemsProgress& progress = {});
 
 PointGenerator make_point_generator(std::string_view spec);
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <cstring>
@@ -132,6 +133,32 @@ TEST(Generators, BadSpecsAreNamed) {
   EXPECT_NE(
       msg("poisson:radius=0.5", 50).find("of 50 points fit at radius 0.5; use a smaller radius"),
       std::string::npos);
+}
+
+// Realizations are work items: set r is generate_points with seed + r, the
+// same on one thread as on all, and progress hears of each.
+TEST(Generators, PointSetsAreTheSeededSetsOnAnyThreadCount) {
+  int calls = 0, last_total = 0;
+  const auto all =
+      generate_point_sets("poisson", 50, 7, 12, [&](int, int total, const std::string&) {
+        ++calls;
+        last_total = total;
+      });
+  ASSERT_EQ(all.size(), 12u);
+  EXPECT_EQ(calls, 12);
+  EXPECT_EQ(last_total, 12);
+  for (size_t r = 0; r < all.size(); ++r) EXPECT_EQ(all[r], generate_points("poisson", 50, 7 + r));
+  tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+  EXPECT_EQ(generate_point_sets("poisson", 50, 7, 12), all);
+}
+
+TEST(Generators, PointSetsKeepToTheirLimits) {
+  EXPECT_EQ(testing::error_parameter([] { generate_point_sets("random", 1000, 1, 0); }), "sets");
+  EXPECT_EQ(testing::error_parameter([] { generate_point_sets("random", 1000, 1, 100001); }),
+            "sets");
+  EXPECT_EQ(testing::error_message([] { generate_point_sets("random", 1000000, 1, 51); }),
+            "sets 51 of 1000000 points each: 51000000 points in all, over the limit of 50000000 "
+            "(16 bytes each in memory)");
 }
 
 }  // namespace
