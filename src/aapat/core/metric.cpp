@@ -209,6 +209,7 @@ double Metric::kernel_terms(const Kernel& k, std::span<double> proj,
 }
 
 int Metric::worst_term(std::span<const double> values) {
+  if (const int clear = clear_maximum(values); clear >= 0) return clear;
   // The threshold kept, not recomputed from values[worst] at every angle.
   int worst = 0;
   double threshold = values.empty() ? 0 : values[0] * (1 + 1e-12);

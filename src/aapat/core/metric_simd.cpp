@@ -375,6 +375,33 @@ void StepResponses(const Filter::AbsMomentTable& g, const double* p, size_t n, d
   EachValue(d, step, p, n, out);
 }
 
+// clear_maximum (metric_simd.h), a vector at a time: the largest value as
+// `v > m ? v : m` takes it (NaN skipped; the last vector overlaps the one
+// before, which a maximum does not mind), then the values not clearly below
+// it, NaN included, counted over whole vectors and the rest one by one.
+int64_t ClearMaximum(const double* values, size_t n) {
+  const D d;
+  const size_t lanes = hn::Lanes(d);
+  if (n < lanes) return -1;
+  V m = hn::LoadU(d, values);
+  for (size_t a = lanes; a < n; a += lanes) {
+    const V x = hn::LoadU(d, values + std::min(a, n - lanes));
+    m = hn::IfThenElse(hn::Gt(x, m), x, m);
+  }
+  HWY_ALIGN double lane[kMaxLanes];
+  hn::Store(m, d, lane);
+  double top = lane[0];
+  for (size_t k = 1; k < lanes; ++k) top = lane[k] > top ? lane[k] : top;
+  if (!(top > 0 && top < INFINITY)) return -1;
+  const V tolerance = hn::Set(d, 1 + 1e-12), vtop = hn::Set(d, top);
+  size_t near = 0, a = 0;
+  for (; a + lanes <= n; a += lanes)
+    near += hn::CountTrue(d, hn::Not(hn::Lt(hn::Mul(hn::LoadU(d, values + a), tolerance), vtop)));
+  for (; a < n; ++a) near += !(values[a] * (1 + 1e-12) < top);
+  if (near != 1) return -1;
+  return std::find(values, values + n, top) - values;
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace aapat
 HWY_AFTER_NAMESPACE();
@@ -386,6 +413,7 @@ HWY_EXPORT(PairwiseWeightedE1Squared);
 HWY_EXPORT(AbsMoments);
 HWY_EXPORT(PairwiseBalanceSpread);
 HWY_EXPORT(StepResponses);
+HWY_EXPORT(ClearMaximum);
 
 void pairwise_weighted_e1_squared(const Filter::AbsMomentTable& j, double half_mean_distance,
                                   const AngleTable& angles, const double* x, const double* y,
@@ -405,6 +433,10 @@ void step_responses(const Filter& filter, const double* p, size_t n, double* out
 void pairwise_balance_spread(const double* p, const double* w, size_t n, double* balance,
                              double* spread) {
   HWY_DYNAMIC_DISPATCH(PairwiseBalanceSpread)(p, w, n, balance, spread);
+}
+
+int clear_maximum(std::span<const double> values) {
+  return static_cast<int>(HWY_DYNAMIC_DISPATCH(ClearMaximum)(values.data(), values.size()));
 }
 
 // A build with one Highway target (the WebAssembly build's HWY_COMPILE_ONLY_EMU128)

@@ -44,6 +44,13 @@ void step_responses(const Filter& filter, const double* p, size_t n, double* out
 void pairwise_balance_spread(const double* p, const double* w, size_t n, double* balance,
                              double* spread);
 
+// Where Metric::worst_term's scan ends when one value stands clear of the
+// rest: the largest, m > 0 and finite, with no NaN and every other value v
+// short of it by the scan's tolerance, v (1 + 1e-12) < m (the scan takes m
+// when it meets it and nothing after); -1 otherwise, and for fewer values
+// than a vector holds.
+int clear_maximum(std::span<const double> values);
+
 // The code path that runs here ("AVX3", "AVX2", "EMU128", ...).
 std::string simd_target();
 // Every path compiled into this binary that this processor can run, best

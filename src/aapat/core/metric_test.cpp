@@ -7,6 +7,7 @@
 #include <random>
 
 #include "aapat/core/filter_catalog.h"
+#include "aapat/core/metric_simd.h"
 #include "testing/quadrature.h"
 
 namespace aapat {
@@ -250,6 +251,56 @@ TEST(E2Profile, IsWeightTimesE1AtEachAngle) {
   EXPECT_NEAR(profile[0], 3.93 * e1_1d(metric.filter(), {0.2, 0.05}, {0.6, 0.4}), 1e-14);
   // Edge angle 90: the normal is -x.
   EXPECT_NEAR(profile[2], 3.93 * e1_1d(metric.filter(), {-0.1, 0.3}, {0.6, 0.4}), 1e-14);
+}
+
+// worst_term is the record-breaking scan with its 1e-12 tolerance (the first
+// of near-ties, NaN skipped), whichever way it finds it (a shortcut on SIMD
+// lanes where one value stands clear), on every code path: on values drawn
+// to hold clear maxima, near-ties, exact ties, zeros, negatives, NaN and inf.
+RC_GTEST_PROP(WorstTerm, IsTheScanWithItsTolerance, ()) {
+  const auto scan = [](const std::vector<double>& v) {
+    int worst = 0;
+    double threshold = v.empty() ? 0 : v[0] * (1 + 1e-12);
+    for (size_t a = 1; a < v.size(); ++a)
+      if (v[a] > threshold) {
+        worst = static_cast<int>(a);
+        threshold = v[a] * (1 + 1e-12);
+      }
+    return worst;
+  };
+  const size_t n = *rc::gen::inRange<size_t>(0, 200);
+  std::vector<double> v(n);
+  for (double& x : v) {
+    const int kind = *rc::gen::inRange(0, 100);
+    if (kind < 75)
+      x = *rc::gen::inRange(0, 1000) / 1001.0;  // below 1
+    else if (kind < 90)
+      x = 1 + 1e-13 * *rc::gen::inRange(-20, 20);  // near-ties at the top
+    else if (kind < 93)
+      x = 0;
+    else if (kind < 96)
+      x = -*rc::gen::inRange(1, 1000) / 1000.0;
+    else if (kind < 98)
+      x = std::nan("");
+    else
+      x = INFINITY;
+  }
+  if (n > 0 && *rc::gen::inRange(0, 4) == 0) v[*rc::gen::inRange<size_t>(0, n)] = 2;  // clear
+  const int expected = scan(v);
+  for (const int64_t target : simd_targets_here()) {  // the shortcut on every path
+    pin_simd_target(target);
+    const int found = Metric::worst_term(v);
+    pin_simd_target(0);
+    RC_ASSERT(found == expected);
+  }
+}
+
+TEST(WorstTerm, TakesTheFirstOfNearTiesNotTheLargest) {
+  EXPECT_EQ(Metric::worst_term(std::vector<double>{0.1, 1.0, 0.3, 1.0 + 5e-13, 0.2}), 1);
+  EXPECT_EQ(Metric::worst_term(std::vector<double>{0.1, 1.0, 0.3, 1.0 + 5e-12, 0.2}), 3);
+  EXPECT_EQ(Metric::worst_term(std::vector<double>{0.5, 0.5, 0.5, 0.5, 0.5}), 0);
+  EXPECT_EQ(Metric::worst_term(std::vector<double>{NAN, 0.9, 2.0, 0.5, 0.1}), 0);
+  EXPECT_EQ(Metric::worst_term(std::vector<double>{0.3, 0.9, 2.0, 0.5, 0.1}), 2);
 }
 
 }  // namespace
