@@ -25,16 +25,20 @@ PointSets to_sets(const py::object& points) {
 void bind_points(py::module_& m) {
   m.def(
       "generate",
-      [](const std::string& spec, int n, uint64_t seed) {
-        const auto points = interruptible([&] { return generate_points(spec, n, seed); });
+      [](const std::string& spec, int n, uint64_t seed, const py::object& progress) {
+        const auto report = progress_of(progress);
+        const auto points = interruptible([&] { return generate_points(spec, n, seed, report); });
         return from_points(points);
       },
-      py::arg("spec"), py::arg("n"), py::arg("seed") = 1,
+      py::arg("spec"), py::arg("n"), py::arg("seed") = 1, py::kw_only(),
+      py::arg("progress") = py::none(),
       R"doc(n points in [0,1)^2 from a generator spec, as an (n, 2) array.
 
     spec: "jittered", "poisson:radius=R", "best-candidate:q=10", "halton:b1=2,b2=3",
         "n-queens", ... (aapat.registry()["generators"]).
-    seed: random seed (the deterministic generators ignore it).)doc");
+    seed: random seed (the deterministic generators ignore it).
+    progress: a callable (done, total, note) that the slow generators (dart
+        throwing, best candidate) call as they go, in hundredths.)doc");
 
   m.def(
       "read_points",

@@ -15,6 +15,17 @@ def test_generators_are_deterministic_and_in_the_square():
     assert ((a >= 0) & (a <= 1)).all()
 
 
+def test_the_slow_generators_report_hundredths_and_give_the_same_points():
+    for spec in ("poisson", "best-candidate", "poisson-maximal"):
+        calls = []
+        a = aapat.generate(spec, 400, seed=4,
+                           progress=lambda done, total, note: calls.append((done, total)))
+        np.testing.assert_array_equal(a, aapat.generate(spec, 400, seed=4))
+        assert calls and all(total == 100 for _, total in calls), spec
+        assert [d for d, _ in calls] == sorted(set(d for d, _ in calls)), spec  # rising
+        assert calls[-1][0] >= 95, spec
+
+
 def test_one_point_has_the_star_discrepancy_of_its_box():
     # One point at (1/2, 1/2): the worst anchored box is [0,1)^2 minus it, 3/4.
     d = aapat.discrepancy(np.array([[0.5, 0.5]]))

@@ -36,7 +36,7 @@ void write_generated(const PointOptions& src, const std::string& output, int set
   }
   PointSets all;
   {
-    Progress bar("sets");
+    Progress bar(sets > 1 ? "sets" : "points");
     all = generate_point_sets(src.source, src.n, src.seed, sets, bar.callback());
   }
   save_point_sets(all, output, src.format);

@@ -2,6 +2,7 @@
 
 #include "aapat/generate/point_generators.h"
 #include "cli/commands.h"
+#include "cli/progress.h"
 
 namespace aapat {
 
@@ -29,7 +30,8 @@ PointSets PointOptions::file_sets() const {
 
 std::vector<Vec2> PointOptions::points(int realization) const {
   if (is_file()) return file_sets().front();
-  return generate_points(source, n, seed + static_cast<uint64_t>(realization));
+  Progress bar("points");  // dart throwing and best candidate take seconds at their limits
+  return generate_points(source, n, seed + static_cast<uint64_t>(realization), bar.callback());
 }
 
 }  // namespace aapat

@@ -18,7 +18,7 @@ Progress::Progress(std::string label)
     : label_(std::move(label)), active_(!g_lines && ::isatty(2) == 1) {}
 
 Progress::~Progress() {
-  if (active_) std::fputs("\n", stderr);
+  if (active_ && drawn_) std::fputs("\n", stderr);
 }
 
 void Progress::update(int done, int total, const std::string& note) {
@@ -38,6 +38,7 @@ void Progress::update(int done, int total, const std::string& note) {
                  .c_str(),
              stderr);
   std::fflush(stderr);
+  drawn_ = true;
 }
 
 StudyProgress Progress::callback() {

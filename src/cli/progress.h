@@ -23,7 +23,8 @@ class Progress {
  private:
   std::string label_;
   bool active_;
-  int tenths_ = -1;  // the last tenth printed as a line
+  bool drawn_ = false;  // a bar that never drew leaves no empty line
+  int tenths_ = -1;     // the last tenth printed as a line
 };
 
 }  // namespace aapat

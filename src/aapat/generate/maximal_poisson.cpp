@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 #include "aapat/core/interrupt.h"
 #include "aapat/generate/dart_grid.h"
@@ -46,7 +47,10 @@ bool covers(Vec2 e, double x0, double x1, double y0, double y1, double r2) {
 
 }  // namespace
 
-std::vector<Vec2> maximal_poisson_disk(double r, std::mt19937_64& rng) {
+std::vector<Vec2> maximal_poisson_disk(double r, std::mt19937_64& rng,
+                                       const ItemsProgress& progress) {
+  Hundredths done(progress);
+  const double expected = 4 * kRsaSaturationCoverage / (std::numbers::pi * r * r);
   DartGrid grid(r);
   const int g = grid.side();
   const double r2 = r * r;
@@ -71,6 +75,7 @@ std::vector<Vec2> maximal_poisson_disk(double r, std::mt19937_64& rng) {
         continue;
       grid.add(d);
       points.push_back(d);
+      done.at(static_cast<double>(points.size()) / expected);
     }
     // The children of each active cell that no disk holds whole. A dart
     // grid cell with a point in it is covered by that point's disk (its

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "aapat/core/geometry.h"
+#include "aapat/work/work_items.h"
 
 namespace aapat {
 
@@ -18,7 +19,9 @@ namespace aapat {
 // cells always hold every uncovered spot, so a kept dart is uniform on the
 // uncovered region, as in plain dart throwing; the sampling stops when no
 // active cell is left (or, in floating point, none wider than 1e-12 r).
-std::vector<Vec2> maximal_poisson_disk(double r, std::mt19937_64& rng);
+// `progress` hears of the points kept against the set's expected size.
+std::vector<Vec2> maximal_poisson_disk(double r, std::mt19937_64& rng,
+                                       const ItemsProgress& progress = {});
 
 // The saturation coverage of random sequential addition of disks in the
 // plane: a maximal set of minimum distance r has about this fraction of the

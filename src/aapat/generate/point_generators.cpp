@@ -86,9 +86,11 @@ void check_dart_count(int n, std::string_view name) {
         name, n, kMaxPoissonPoints));
 }
 
-std::vector<Vec2> poisson(int n, double radius, std::mt19937_64& rng) {
+std::vector<Vec2> poisson(int n, double radius, std::mt19937_64& rng,
+                          const ItemsProgress& progress) {
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<Vec2> pts;
+  Hundredths done(progress);
   DartGrid grid(radius);
   // Dart throwing with rejection; give up after many misses in a row.
   const int patience = 1000 + 100 * n;
@@ -99,6 +101,7 @@ std::vector<Vec2> poisson(int n, double radius, std::mt19937_64& rng) {
       pts.push_back(c);
       grid.add(c);
       misses = 0;
+      done.at(static_cast<double>(pts.size()) / n);
     } else {
       ++misses;
     }
@@ -110,7 +113,9 @@ std::vector<Vec2> poisson(int n, double radius, std::mt19937_64& rng) {
 // as q n^2 / 2 nearest-point queries. The grid is rebuilt as the points
 // multiply, so that each query visits a few cells, and a candidate stops as
 // soon as a point nearer than the best so far shows it cannot win.
-std::vector<Vec2> best_candidate(int n, double q, std::mt19937_64& rng) {
+std::vector<Vec2> best_candidate(int n, double q, std::mt19937_64& rng,
+                                 const ItemsProgress& progress) {
+  Hundredths done(progress);  // point i costs q i queries: the work is (i / n)^2
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<Vec2> p;
   auto grid_for = [](size_t points) {
@@ -119,6 +124,7 @@ std::vector<Vec2> best_candidate(int n, double q, std::mt19937_64& rng) {
   TorusGrid grid(1);
   for (int i = 0; i < n; ++i) {
     throw_if_interrupted();
+    done.at(static_cast<double>(i) * i / (static_cast<double>(n) * n));
     if (grid_for(p.size()) > grid.side()) {  // about 1 point in 2 cells; O(n^1.5) rebuilding
       grid = TorusGrid(grid_for(p.size()));
       for (const Vec2& v : p) grid.add(v);
@@ -180,14 +186,14 @@ struct GeneratorText {
 struct Entry {
   GeneratorText info;
   std::vector<std::pair<std::string, double>> params;  // name, default (NAN: derived from n)
-  std::function<std::vector<Vec2>(int, const Params&, std::mt19937_64&)> make;
+  std::function<std::vector<Vec2>(int, const Params&, std::mt19937_64&, const ItemsProgress&)> make;
 };
 
 const std::vector<Entry>& entries() {
   static const std::vector<Entry> kEntries = {
       {{"regular", "k x k cell centres (n = k^2)", "regular supersampling"},
        {},
-       [](int n, const Params&, std::mt19937_64&) {
+       [](int n, const Params&, std::mt19937_64&, const ItemsProgress&) {
          const int k = square_side(n, "regular");
          std::vector<Vec2> p;
          for (int j = 0; j < k; ++j)
@@ -196,7 +202,7 @@ const std::vector<Entry>& entries() {
        }},
       {{"random", "n independent uniform points", "Pelikan, 'random sampling'"},
        {},
-       [](int n, const Params&, std::mt19937_64& rng) {
+       [](int n, const Params&, std::mt19937_64& rng, const ItemsProgress&) {
          std::uniform_real_distribution<double> u(0, 1);
          std::vector<Vec2> p(n);
          for (auto& v : p) v = {u(rng), u(rng)};
@@ -204,7 +210,7 @@ const std::vector<Entry>& entries() {
        }},
       {{"jittered", "one uniform point in each of k x k strata (n = k^2)", "Pelikan; Cook 1986"},
        {},
-       [](int n, const Params&, std::mt19937_64& rng) {
+       [](int n, const Params&, std::mt19937_64& rng, const ItemsProgress&) {
          const int k = square_side(n, "jittered");
          std::vector<Vec2> p;
          p.reserve(static_cast<size_t>(n));  // a reference draws 1024 per pixel
@@ -224,7 +230,7 @@ const std::vector<Entry>& entries() {
         "jittered within a centred part of each stratum (amount = its side; 1 is jittered)",
         "Pelikan, 'partial jittering'"},
        {{"amount", 0.5}},
-       [](int n, const Params& prm, std::mt19937_64& rng) {
+       [](int n, const Params& prm, std::mt19937_64& rng, const ItemsProgress&) {
          const int k = square_side(n, "semi-jittered");
          const double a = prm.at("amount");
          if (!(a >= 0 && a <= 1))
@@ -239,7 +245,7 @@ const std::vector<Entry>& entries() {
       {{"n-rooks", "one point per row and column: a random permutation of a jittered diagonal",
         "Shirley 1991; Pelikan"},
        {},
-       [](int n, const Params&, std::mt19937_64& rng) {
+       [](int n, const Params&, std::mt19937_64& rng, const ItemsProgress&) {
          std::vector<int> perm(n);
          std::iota(perm.begin(), perm.end(), 0);
          std::shuffle(perm.begin(), perm.end(), rng);
@@ -251,7 +257,7 @@ const std::vector<Entry>& entries() {
       {{"n-queens", "N x N grid cells, none sharing a row, column or diagonal; lowest E2 of all",
         "Goss & Wu 2000, Sec. 3.2.2.1 (criterion: docs/analysis.md)"},
        {},
-       [](int n, const Params&, std::mt19937_64&) {
+       [](int n, const Params&, std::mt19937_64&, const ItemsProgress&) {
          // Past 20 the lexicographic search for the first solutions takes seconds to minutes.
          if (n < 1 || n > kMaxNQueens)
            throw Error(fmt::format("n-queens: N = {} is out of range 1..{}", n, kMaxNQueens));
@@ -261,18 +267,18 @@ const std::vector<Entry>& entries() {
         "dart throwing with rejection on the torus (R defaults to 0.75 x densest)",
         "Cook 1986; Pelikan 'Poisson disk sampling'"},
        {{"radius", NAN}},
-       [](int n, const Params& prm, std::mt19937_64& rng) {
+       [](int n, const Params& prm, std::mt19937_64& rng, const ItemsProgress& progress) {
          check_dart_count(n, "poisson");
          const bool given = !std::isnan(prm.at("radius"));
          double r = given ? prm.at("radius") : 0.75 * packing_radius(n);
          if (given && !(r > 0 && r <= 1))
            throw Error(fmt::format("poisson: radius = {} is out of range (0, 1]", r));
-         auto p = poisson(n, r, rng);
+         auto p = poisson(n, r, rng, progress);
          // The default radius shrinks by 5% until n points fit (dart throwing
          // jams near 55% coverage, so an unlucky draw can stop short).
          while (!given && static_cast<int>(p.size()) < n) {
            r *= 0.95;
-           p = poisson(n, r, rng);
+           p = poisson(n, r, rng, progress);
          }
          if (static_cast<int>(p.size()) < n)
            throw Error(
@@ -284,7 +290,7 @@ const std::vector<Entry>& entries() {
       {{"poisson-maximal:radius=R", "dart throwing until no more points fit (n sets R by default)",
         "maximal Poisson disk; Ebeida et al. 2011"},
        {{"radius", NAN}},
-       [](int n, const Params& prm, std::mt19937_64& rng) {
+       [](int n, const Params& prm, std::mt19937_64& rng, const ItemsProgress& progress) {
          const bool given = !std::isnan(prm.at("radius"));
          const double r = given ? prm.at("radius") : 0.75 * packing_radius(n);
          if (!(r >= 1e-3 && r <= 1))
@@ -292,13 +298,13 @@ const std::vector<Entry>& entries() {
                "poisson-maximal: radius = {}{} is out of range [0.001, 1] (a maximal set of "
                "radius r has about 0.7 / r^2 points)",
                r, given ? "" : fmt::format(" (from n = {})", n)));
-         return maximal_poisson_disk(r, rng);
+         return maximal_poisson_disk(r, rng, progress);
        }},
       {{"best-candidate:q=10",
         "Mitchell's best candidate: of q x (points so far) random candidates, the farthest",
         "Mitchell 1987; Pelikan"},
        {{"q", 10}},
-       [](int n, const Params& prm, std::mt19937_64& rng) {
+       [](int n, const Params& prm, std::mt19937_64& rng, const ItemsProgress& progress) {
          const double q = prm.at("q");
          if (!(q >= 1 && q <= 1000))
            throw Error(fmt::format("best-candidate: q = {} is out of range 1..1000", q));
@@ -309,11 +315,11 @@ const std::vector<Entry>& entries() {
                "{:.3g} (n <= {} at q = 10); use poisson for large sets",
                n, q, q * n * static_cast<double>(n) / 2, kMaxBestCandidateQueries,
                static_cast<int>(std::sqrt(2 * kMaxBestCandidateQueries / 10))));
-         return best_candidate(n, q, rng);
+         return best_candidate(n, q, rng, progress);
        }},
       {{"hammersley:b=2", "(i / n, g_b(i)), i = 0..n-1", "Pelikan 'Hammersley'"},
        {{"b", 2}},
-       [](int n, const Params& prm, std::mt19937_64&) {
+       [](int n, const Params& prm, std::mt19937_64&, const ItemsProgress&) {
          std::vector<Vec2> p;
          for (int i = 0; i < n; ++i)
            p.push_back(
@@ -322,7 +328,7 @@ const std::vector<Entry>& entries() {
        }},
       {{"halton:b1=2,b2=3", "(g_b1(i), g_b2(i)), i = 1..n", "Halton 1970; Pelikan"},
        {{"b1", 2}, {"b2", 3}},
-       [](int n, const Params& prm, std::mt19937_64&) {
+       [](int n, const Params& prm, std::mt19937_64&, const ItemsProgress&) {
          std::vector<Vec2> p;
          for (int i = 1; i <= n; ++i)
            p.push_back({radical_inverse(i, static_cast<int>(prm.at("b1"))),
@@ -332,7 +338,7 @@ const std::vector<Entry>& entries() {
       {{"larcher-pillichshammer", "(i / n, LP(i)): a (0, m, 2)-net for n = 2^m",
         "Larcher & Pillichshammer 2001; Kollig & Keller 2002; Pelikan"},
        {},
-       [](int n, const Params&, std::mt19937_64&) {
+       [](int n, const Params&, std::mt19937_64&, const ItemsProgress&) {
          std::vector<Vec2> p;
          for (int i = 0; i < n; ++i)
            p.push_back(
@@ -421,13 +427,14 @@ const GeneratorRegistry& generator_registry() {
                         for (const char* base : {"b", "b1", "b2"})
                           if (prm.contains(base)) spec.whole(base, 2, 64);
                         const std::string name = spec.name();
-                        return [&e, prm, name](int n, uint64_t seed) {
-                          if (n < 1 || n > kMaxGeneratedPoints)
-                            throw Error(fmt::format("{}: n = {} is out of range 1..{}", name, n,
-                                                    kMaxGeneratedPoints));
-                          std::mt19937_64 rng(seed);
-                          return e.make(n, prm, rng);
-                        };
+                        return
+                            [&e, prm, name](int n, uint64_t seed, const ItemsProgress& progress) {
+                              if (n < 1 || n > kMaxGeneratedPoints)
+                                throw Error(fmt::format("{}: n = {} is out of range 1..{}", name, n,
+                                                        kMaxGeneratedPoints));
+                              std::mt19937_64 rng(seed);
+                              return e.make(n, prm, rng, progress);
+                            };
                       }});
     }
     return GeneratorRegistry("generator", std::move(list));
@@ -439,8 +446,9 @@ PointGenerator make_point_generator(std::string_view spec) {
   return generator_registry().make(spec);
 }
 
-std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed) {
-  return make_point_generator(spec)(n, seed);
+std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed,
+                                  const ItemsProgress& progress) {
+  return make_point_generator(spec)(n, seed, progress);
 }
 
 std::vector<std::vector<Vec2>> generate_point_sets(std::string_view spec, int n, uint64_t seed,
@@ -453,10 +461,11 @@ std::vector<std::vector<Vec2>> generate_point_sets(std::string_view spec, int n,
                             "bytes each in memory)",
                             sets, n, static_cast<int64_t>(sets) * n, kMaxGeneratedPointsInAll));
   const PointGenerator generator = make_point_generator(spec);
+  if (sets == 1) return {generator(n, seed, progress)};  // its own progress, in hundredths
   const std::vector<std::string> bytes = run_work_items(
       sets,
       [&](int r) {
-        return ByteWriter().put_all(generator(n, seed + static_cast<uint64_t>(r))).take();
+        return ByteWriter().put_all(generator(n, seed + static_cast<uint64_t>(r), {})).take();
       },
       progress);
   std::vector<std::vector<Vec2>> out;
@@ -492,7 +501,7 @@ std::vector<Vec2> pixel_points(std::string_view spec, int n, uint64_t seed, int 
 
 std::vector<Vec2> pixel_points(const PointGenerator& generator, int n, uint64_t seed, int x,
                                int y) {
-  std::vector<Vec2> p = generator(n, seed_for_pixel(seed, x, y));
+  std::vector<Vec2> p = generator(n, seed_for_pixel(seed, x, y), {});
   for (Vec2& v : p) v = {v.x - 0.5, v.y - 0.5};
   return p;
 }

@@ -35,18 +35,23 @@ inline constexpr int kMaxPoissonPoints = 200'000;  // about 8 s on one core
 
 // The point generator `spec` with its parameters parsed once, for drawing many
 // point sets (the renderer draws one per pixel).
-using PointGenerator = std::function<std::vector<Vec2>(int n, uint64_t seed)>;
+// The slow ones (dart throwing, best candidate, the N-queens search) tell
+// `progress` how far they are (Hundredths), the others nothing.
+using PointGenerator =
+    std::function<std::vector<Vec2>(int n, uint64_t seed, const ItemsProgress& progress)>;
 // Every generator with its parameters (core/spec.h).
 using GeneratorRegistry = Registry<PointGenerator>;
 const GeneratorRegistry& generator_registry();
 
 // n points in [0,1)^2 by the generator `spec`; throws Error naming the
 // generator, parameter or n that does not fit.
-std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed);
+std::vector<Vec2> generate_points(std::string_view spec, int n, uint64_t seed,
+                                  const ItemsProgress& progress = {});
 // `sets` realizations, with seeds seed, seed + 1, ... (as `aapat generate
 // --sets`), at most kMaxPointSets of them and kMaxGeneratedPointsInAll points
 // in all; each set is a work item (work/work_items.h), so they run on every
-// core with the same result, and `progress` hears of each.
+// core with the same result, and `progress` hears of each (of one set: its
+// generator's hundredths).
 std::vector<std::vector<Vec2>> generate_point_sets(std::string_view spec, int n, uint64_t seed,
                                                    int sets, const ItemsProgress& progress = {});
 

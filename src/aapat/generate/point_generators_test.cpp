@@ -6,6 +6,7 @@
 #include <rapidcheck/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -159,6 +160,23 @@ TEST(Generators, PointSetsKeepToTheirLimits) {
   EXPECT_EQ(testing::error_message([] { generate_point_sets("random", 1000000, 1, 51); }),
             "sets 51 of 1000000 points each: 51000000 points in all, over the limit of 50000000 "
             "(16 bytes each in memory)");
+}
+
+// The slow generators tell their progress in rising hundredths, and the
+// same points with or without a listener.
+TEST(Generators, SlowGeneratorsReportHundredthsOfTheSamePoints) {
+  for (const char* spec : {"poisson", "best-candidate", "poisson-maximal"}) {
+    std::vector<int> done;
+    const auto p = generate_points(spec, 500, 3, [&](int d, int total, const std::string&) {
+      EXPECT_EQ(total, 100);
+      done.push_back(d);
+    });
+    EXPECT_EQ(p, generate_points(spec, 500, 3)) << spec;
+    ASSERT_FALSE(done.empty()) << spec;
+    EXPECT_TRUE(std::is_sorted(done.begin(), done.end())) << spec;
+    EXPECT_EQ(std::adjacent_find(done.begin(), done.end()), done.end()) << spec;  // no repeats
+    EXPECT_GE(done.back(), 95) << spec;
+  }
 }
 
 }  // namespace

@@ -31,6 +31,24 @@ using ItemWork = std::function<std::string(int item)>;
 // (items done, items in all, the result just finished), called one at a time.
 using ItemsProgress = std::function<void(int done, int total, const std::string& result)>;
 
+// A long loop's progress as hundredths, (done, 100, ""), calling `progress`
+// only when another hundredth is reached; nothing without a callback.
+class Hundredths {
+ public:
+  explicit Hundredths(const ItemsProgress& progress) : progress_(progress) {}
+  void at(double fraction) {
+    if (!progress_) return;
+    const int h = fraction >= 1 ? 100 : fraction > 0 ? static_cast<int>(fraction * 100) : 0;
+    if (h <= last_) return;
+    last_ = h;
+    progress_(h, 100, "");
+  }
+
+ private:
+  const ItemsProgress& progress_;
+  int last_ = -1;
+};
+
 // Runs items 0..count-1 and returns their results in item order. An item that
 // throws fails the call with the lowest failing item's error. An empty result
 // means "not done" (an item a deadline skipped): a checkpoint does not keep
