@@ -1,5 +1,7 @@
 #include "aapat/generate/maximal_poisson.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -49,6 +51,11 @@ bool covers(Vec2 e, double x0, double x1, double y0, double y1, double r2) {
 
 std::vector<Vec2> maximal_poisson_disk(double r, std::mt19937_64& rng,
                                        const ItemsProgress& progress) {
+  if (!(r >= kMinMaximalPoissonRadius && r <= 1))
+    throw Error(fmt::format(
+        "poisson-maximal: radius = {} is out of range [{}, 1] (a maximal set of radius r has "
+        "about 0.7 / r^2 points)",
+        r, kMinMaximalPoissonRadius));
   Hundredths done(progress);
   const double expected = 4 * kRsaSaturationCoverage / (std::numbers::pi * r * r);
   DartGrid grid(r);

@@ -19,7 +19,10 @@ namespace aapat {
 // cells always hold every uncovered spot, so a kept dart is uniform on the
 // uncovered region, as in plain dart throwing; the sampling stops when no
 // active cell is left (or, in floating point, none wider than 1e-12 r).
-// `progress` hears of the points kept against the set's expected size.
+// r in [kMinMaximalPoissonRadius, 1], else an Error (the dart grid holds one
+// point per cell down to that radius, about 700,000 points); `progress`
+// hears of the points kept against the set's expected size.
+inline constexpr double kMinMaximalPoissonRadius = 1e-3;
 std::vector<Vec2> maximal_poisson_disk(double r, std::mt19937_64& rng,
                                        const ItemsProgress& progress = {});
 

@@ -1,5 +1,6 @@
 #include "aapat/generate/maximal_poisson.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -9,6 +10,7 @@
 
 #include "aapat/generate/dart_grid.h"
 #include "aapat/generate/point_generators.h"
+#include "testing/error_message.h"
 
 namespace aapat {
 namespace {
@@ -71,6 +73,20 @@ TEST(MaximalPoisson, TheSameSeedGivesTheSamePoints) {
   ASSERT_EQ(a.size(), b.size());
   for (size_t i = 0; i < a.size(); ++i) EXPECT_TRUE(a[i].x == b[i].x && a[i].y == b[i].y);
   EXPECT_NE(generate_points("poisson-maximal", 500, 10)[0].x, a[0].x);
+}
+
+// Below the smallest radius a dart grid cell could hold two points: refused
+// where the sampler is called, not only where the spec is parsed.
+TEST(MaximalPoisson, RefusesARadiusOutOfItsRange) {
+  std::mt19937_64 rng(1);
+  for (const double r : {1e-5, 0.0, -1.0, 1.5, std::nan("")})
+    EXPECT_EQ(testing::error_message([&] { maximal_poisson_disk(r, rng); }),
+              fmt::format("poisson-maximal: radius = {} is out of range [0.001, 1] (a maximal set "
+                          "of radius r has about 0.7 / r^2 points)",
+                          r));
+  EXPECT_EQ(testing::error_message([] { generate_points("poisson-maximal", 1000000, 1); }),
+            "poisson-maximal: n = 1000000 asks for radius 0.0008059274488676565, below the "
+            "smallest, 0.001 (a maximal set of radius r has about 0.7 / r^2 points)");
 }
 
 }  // namespace

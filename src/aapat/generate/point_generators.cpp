@@ -293,11 +293,11 @@ const std::vector<Entry>& entries() {
        [](int n, const Params& prm, std::mt19937_64& rng, const ItemsProgress& progress) {
          const bool given = !std::isnan(prm.at("radius"));
          const double r = given ? prm.at("radius") : 0.75 * packing_radius(n);
-         if (!(r >= 1e-3 && r <= 1))
+         if (!given && !(r >= kMinMaximalPoissonRadius))
            throw Error(fmt::format(
-               "poisson-maximal: radius = {}{} is out of range [0.001, 1] (a maximal set of "
-               "radius r has about 0.7 / r^2 points)",
-               r, given ? "" : fmt::format(" (from n = {})", n)));
+               "poisson-maximal: n = {} asks for radius {}, below the smallest, {} (a maximal "
+               "set of radius r has about 0.7 / r^2 points)",
+               n, r, kMinMaximalPoissonRadius));
          return maximal_poisson_disk(r, rng, progress);
        }},
       {{"best-candidate:q=10",

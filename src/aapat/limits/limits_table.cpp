@@ -14,6 +14,7 @@
 #include "aapat/core/metric.h"
 #include "aapat/core/pattern.h"
 #include "aapat/core/read_file.h"
+#include "aapat/generate/maximal_poisson.h"
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/mesh_file.h"
 #include "aapat/io/png_image.h"
@@ -108,10 +109,10 @@ std::vector<Limit> make_table() {
        "`kMaxBestCandidateQueries`"},
       {"Poisson disk",
        fmt::format("at most {} points (about 8 s); radius in (0, 1] (`poisson-maximal`: "
-                   "[0.001, 1], about 0.7 / r² points, 700,000 in about 5 s); the default radius "
+                   "[{}, 1], about 0.7 / r² points, 700,000 in about 5 s); the default radius "
                    "shrinks by 5% steps until n points fit",
-                   grouped(kMaxPoissonPoints)),
-       "`kMaxPoissonPoints`"},
+                   grouped(kMaxPoissonPoints), number(kMinMaximalPoissonRadius)),
+       "`kMaxPoissonPoints`, `kMinMaximalPoissonRadius`"},
       {"N-queens",
        fmt::format("N ≤ {} (the lexicographic search takes 40 s at N = 32)", kMaxNQueens),
        "`kMaxNQueens`"},
