@@ -467,7 +467,10 @@ std::vector<std::vector<Vec2>> generate_point_sets(std::string_view spec, int n,
       [&](int r) {
         return ByteWriter().put_all(generator(n, seed + static_cast<uint64_t>(r), {})).take();
       },
-      progress);
+      // The counts only: a finished item's result is its points' bytes, no note.
+      [&](int done, int total, const std::string&) {
+        if (progress) progress(done, total, "");
+      });
   std::vector<std::vector<Vec2>> out;
   for (const std::string& b : bytes) {
     ByteReader reader(b);
