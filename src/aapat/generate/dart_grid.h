@@ -16,12 +16,16 @@
 
 namespace aapat {
 
+// The shortest gaps between a and b along each axis of the unit torus.
+inline Vec2 torus_gap(Vec2 a, Vec2 b) {
+  const double dx = std::abs(a.x - b.x), dy = std::abs(a.y - b.y);
+  return {std::min(dx, 1 - dx), std::min(dy, 1 - dy)};
+}
+
 // Distance on the unit torus, so that tiled point sets keep their spacing.
 inline double torus_distance(Vec2 a, Vec2 b) {
-  double dx = std::abs(a.x - b.x), dy = std::abs(a.y - b.y);
-  dx = std::min(dx, 1 - dx);
-  dy = std::min(dy, 1 - dy);
-  return std::hypot(dx, dy);
+  const Vec2 g = torus_gap(a, b);
+  return std::hypot(g.x, g.y);
 }
 
 class DartGrid {

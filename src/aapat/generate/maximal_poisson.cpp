@@ -24,10 +24,8 @@ constexpr int kDeepestLevel = 40;
 
 // Whether a and b are closer than r on the torus (r2 = r^2).
 bool closer(Vec2 a, Vec2 b, double r2) {
-  double dx = std::abs(a.x - b.x), dy = std::abs(a.y - b.y);
-  dx = std::min(dx, 1 - dx);
-  dy = std::min(dy, 1 - dy);
-  return dx * dx + dy * dy < r2;
+  const Vec2 g = torus_gap(a, b);
+  return g.x * g.x + g.y * g.y < r2;
 }
 
 // v shifted by a whole period to the image nearest `to`.
