@@ -112,14 +112,7 @@ double e1_squared_piecewise(const Filter& filter, std::span<const double> p,
 }
 
 double combine_over_angles(std::span<const double> values, double norm) {
-  // The largest in four independent runs (the same value as one run: max is
-  // exact and order-free), so the loop is not one long chain of maxima.
-  double run[4] = {0, 0, 0, 0};
-  size_t a = 0;
-  for (; a + 4 <= values.size(); a += 4)
-    for (int r = 0; r < 4; ++r) run[r] = std::max(run[r], values[a + r]);
-  for (; a < values.size(); ++a) run[0] = std::max(run[0], values[a]);
-  const double largest = std::max(std::max(run[0], run[1]), std::max(run[2], run[3]));
+  const double largest = largest_or_zero(values);
   if (norm == Metric::kMaxNorm || largest == 0) return std::sqrt(largest);
   // ((1/M) sum v^(p/2))^(1/p) = sqrt(largest) ((1/M) sum (v / largest)^(p/2))^(1/p)
   double sum = 0;

@@ -51,6 +51,10 @@ void pairwise_balance_spread(const double* p, const double* w, size_t n, double*
 // than a vector holds.
 int clear_maximum(std::span<const double> values);
 
+// The largest of 0 and the values, NaN skipped: std::max(largest, v) over
+// them in any order, the lanes running over values.
+double largest_or_zero(std::span<const double> values);
+
 // The code path that runs here ("AVX3", "AVX2", "EMU128", ...).
 std::string simd_target();
 // Every path compiled into this binary that this processor can run, best

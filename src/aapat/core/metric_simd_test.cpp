@@ -17,8 +17,9 @@ namespace {
 
 using testing::EveryPath;
 
-Kernel random_kernel(std::mt19937_64& rng, size_t n) {
-  std::uniform_real_distribution<double> u(-1.5, 1.5), w(0.1, 1);
+// n samples with weights, in [-extent, extent]^2.
+Kernel random_kernel(std::mt19937_64& rng, size_t n, double extent) {
+  std::uniform_real_distribution<double> u(-extent, extent), w(0.1, 1);
   std::vector<Vec2> s(n);
   std::vector<double> weights(n);
   double total = 0;
@@ -53,7 +54,9 @@ std::vector<double> scalar_terms(const Metric& m, const Kernel& k) {
 // The vectorized metric gives the scalar code's bits, on every path, for every
 // filter of the registry, small kernels (pair form, lanes over angles) and
 // large ones (lanes over samples), sparse and dense acuity tables (the latter
-// 258 angles: a partial last block on every vector width).
+// 258 angles: a partial last block on every vector width). Samples over
+// three pixels reach every piece of J; samples inside one pixel stay in the
+// first piece of Mitchell-Netravali's (1 wide), the vector path's shortcut.
 TEST(MetricSimd, EveryPathGivesTheScalarBitsForEveryFilter) {
   std::mt19937_64 rng(5);
   EveryPath paths;
@@ -62,17 +65,19 @@ TEST(MetricSimd, EveryPathGivesTheScalarBitsForEveryFilter) {
     for (const char* acuity : {"laine-aila", "uniform:step=0.7"}) {
       const Metric metric(filter, make_acuity(acuity));
       for (const size_t n : {size_t{1}, size_t{2}, size_t{4}, size_t{7}, kPairwiseLimit,
-                             kPairwiseLimit + 1, size_t{64}}) {
-        const Kernel k = random_kernel(rng, n);
-        const std::vector<double> reference = scalar_terms(metric, k);
-        paths.run([&] {
-          const std::vector<double> profile = metric.profile(k);
-          ASSERT_EQ(profile.size(), reference.size());
-          for (size_t a = 0; a < profile.size(); ++a)
-            ASSERT_EQ(profile[a], std::sqrt(reference[a]))
-                << entry.info.name << " " << acuity << " n " << n << " angle " << a;
-        });
-      }
+                             kPairwiseLimit + 1, size_t{64}})
+        for (const double extent : {1.5, 0.5}) {
+          const Kernel k = random_kernel(rng, n, extent);
+          const std::vector<double> reference = scalar_terms(metric, k);
+          paths.run([&] {
+            const std::vector<double> profile = metric.profile(k);
+            ASSERT_EQ(profile.size(), reference.size());
+            for (size_t a = 0; a < profile.size(); ++a)
+              ASSERT_EQ(profile[a], std::sqrt(reference[a]))
+                  << entry.info.name << " " << acuity << " n " << n << " extent " << extent
+                  << " angle " << a;
+          });
+        }
     }
   }
 }
@@ -87,6 +92,13 @@ TEST(MetricSimd, AbsMomentsAreFilterAbsMomentBitForBit) {
     std::vector<double> p;
     for (int k = 0; k <= t.segments; ++k)
       for (const double d : {-1e-12, 0.0, 1e-12}) p.push_back(k * t.width + d);
+    // Whole vectors either side of the end of the first piece, where the
+    // vector path's first-piece shortcut stops (width (1 - 4 eps)), either sign.
+    const double eps = std::numeric_limits<double>::epsilon();
+    for (const double edge : {t.width * (1 - 8 * eps), t.width * (1 - 4 * eps),
+                              t.width * (1 - 3 * eps), std::nextafter(t.width, 0.0), t.width,
+                              std::nextafter(t.width, 2 * t.width), t.width * (1 + 4 * eps)})
+      for (int copy = 0; copy < 8; ++copy) p.push_back(copy % 2 ? -edge : edge);
     for (int i = 0; i < 200; ++i) p.push_back(-3 * f.radius() + 6 * f.radius() * i / 199.0);
     p.push_back(0.0);
     p.push_back(-0.0);
@@ -166,6 +178,34 @@ TEST(MetricSimd, PairSumsAreTheScalarLoopsBitForBit) {
       }
     });
   }
+}
+
+// largest_or_zero is std::max from 0 over the values in order, on every
+// path and length (partial vectors, fewer values than a vector), with NaN,
+// infinities, negatives and both zeros among them.
+TEST(MetricSimd, LargestOrZeroIsStdMaxFromZero) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> kind(0, 9);
+  EveryPath paths;
+  for (size_t n = 0; n <= 70; ++n)
+    for (int trial = 0; trial < 4; ++trial) {
+      std::vector<double> v(n);
+      for (double& x : v) {
+        const int k = kind(rng);
+        x = k == 0       ? std::numeric_limits<double>::quiet_NaN()
+            : k == 1     ? (trial == 3 ? std::numeric_limits<double>::infinity() : -0.0)
+            : trial == 2 ? -std::abs(u(rng))
+                         : u(rng);
+      }
+      double expected = 0;
+      for (const double x : v) expected = std::max(expected, x);
+      paths.run([&] {
+        const double got = largest_or_zero(v);
+        EXPECT_EQ(got, expected) << "n " << n << " trial " << trial;
+        EXPECT_FALSE(std::signbit(got)) << "n " << n << " trial " << trial;
+      });
+    }
 }
 
 TEST(MetricSimd, NamesThePathItRuns) {
