@@ -14,6 +14,7 @@
 
 #include "aapat/core/gradient.h"
 #include "aapat/core/lattice.h"
+#include "aapat/core/metric_simd.h"
 #include "aapat/optimize/family.h"
 #include "aapat/optimize/nlopt_guard.h"
 #include "aapat/temporal/engine_taa_settings.h"
@@ -271,35 +272,47 @@ double frame_term(const SequenceObjective& o, const SequenceSearch& s) {
 
 // The terms of samples that every steady phase reads with other weights
 // (x, y, the weight within the frame, the frame), added into e1 and flicker
-// (angles x period, each angle's term): each angle's projections are sorted
-// once for all the phases' E1 and all the transitions' flicker, O(angles
-// (N log N + K N)) instead of O(angles K N log N).
+// (angles x period, each angle's term): each angle's projections are sorted,
+// and J taken at them, once for all the phases' E1 and all the transitions'
+// flicker, O(angles (N log N + K N)) instead of O(angles K N log N).
 void add_shared_sample_terms(const std::vector<double>& x, const std::vector<double>& y,
                              const std::vector<double>& w, const std::vector<int>& frame,
                              const std::vector<std::vector<double>>& phase, const Metric& metric,
                              double scale, std::vector<double>& e1, std::vector<double>& flicker) {
   const size_t n = w.size(), angles = static_cast<size_t>(metric.angle_count());
   const int period = static_cast<int>(phase.size());
-  std::vector<double> p(n), weight(n);
-  std::vector<size_t> order(n);
+  const Filter::AbsMomentTable table = metric.filter().abs_moment_table();
+  std::vector<double> weight(n);
+  // Each projection beside its sample's index, sorted by the projection
+  // alone: std::sort makes the same comparisons and moves as on the indices
+  // compared through p, so ties keep that order, without the indirection.
+  std::vector<std::pair<double, size_t>> order(n);
+  // The samples in sorted order: projection, J there, weight, frame.
+  std::vector<double> sp(n), sj(n), sw(n);
+  std::vector<size_t> sf(n);
   for (size_t a = 0; a < angles; ++a) {
     const double nx = -metric.sin(static_cast<int>(a)), ny = metric.cos(static_cast<int>(a));
-    for (size_t j = 0; j < n; ++j) p[j] = x[j] * nx + y[j] * ny;
-    std::iota(order.begin(), order.end(), size_t{0});
-    std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return p[i] < p[j]; });
+    for (size_t j = 0; j < n; ++j) order[j] = {x[j] * nx + y[j] * ny, j};
+    std::sort(order.begin(), order.end(),
+              [](const auto& i, const auto& j) { return i.first < j.first; });
+    for (size_t i = 0; i < n; ++i) {
+      const size_t j = order[i].second;
+      sp[i] = order[i].first;
+      sw[i] = w[j];
+      sf[i] = static_cast<size_t>(frame[j]);
+    }
+    abs_moments(table, sp.data(), n, sj.data());
     const double w2 = metric.weight_sq(static_cast<int>(a));
     for (int k = 0; k < period; ++k) {
       const auto& now = phase[static_cast<size_t>(k)];
       const auto& before = phase[static_cast<size_t>((k + period - 1) % period)];
-      for (size_t j = 0; j < n; ++j) weight[j] = now[static_cast<size_t>(frame[j])] * w[j];
+      for (size_t i = 0; i < n; ++i) weight[i] = now[sf[i]] * sw[i];
       e1[static_cast<size_t>(k) * angles + a] +=
-          scale * w2 * e1_squared_in_order(metric.filter(), p, weight, order);
+          scale * w2 * e1_squared_sorted(metric.filter(), sp, weight, sj);
       double running = 0, integral = 0;
-      for (size_t j = 0; j + 1 < n; ++j) {
-        const size_t m = order[j];
-        running +=
-            (now[static_cast<size_t>(frame[m])] - before[static_cast<size_t>(frame[m])]) * w[m];
-        integral += std::abs(running) * (p[order[j + 1]] - p[m]);
+      for (size_t i = 0; i + 1 < n; ++i) {
+        running += (now[sf[i]] - before[sf[i]]) * sw[i];
+        integral += std::abs(running) * (sp[i + 1] - sp[i]);
       }
       flicker[static_cast<size_t>(k) * angles + a] += scale * w2 * integral * integral;
     }
