@@ -78,8 +78,8 @@ double e1_squared_in_order(const Filter& filter, std::span<const double> p,
                               [&](size_t j) { return filter.abs_moment(p[j]); });
 }
 
-double e1_squared_sorted(const Filter& filter, std::span<const double> p,
-                         std::span<const double> w, std::span<const double> j) {
+double e1_squared_sorted(const Filter& filter, std::span<const double> p, std::span<const double> w,
+                         std::span<const double> j) {
   double moment = 0;
   SortedSpread sum;
   for (size_t i = 0; i < p.size(); ++i) {
