@@ -78,17 +78,6 @@ double e1_squared_in_order(const Filter& filter, std::span<const double> p,
                               [&](size_t j) { return filter.abs_moment(p[j]); });
 }
 
-double e1_squared_sorted(const Filter& filter, std::span<const double> p, std::span<const double> w,
-                         std::span<const double> j) {
-  double moment = 0;
-  SortedSpread sum;
-  for (size_t i = 0; i < p.size(); ++i) {
-    moment += w[i] * j[i];
-    sum.add(p[i], w[i]);
-  }
-  return std::max(0.0, moment - sum.spread - filter.half_mean_distance());
-}
-
 void sort_by_projection(std::span<size_t> order, std::span<const double> p) {
   // Insertion: the order of a neighbouring angle is nearly right already.
   for (size_t i = 1; i < order.size(); ++i) {

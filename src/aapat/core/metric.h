@@ -40,11 +40,6 @@ double e1_squared(const Filter& filter, std::span<const double> p, std::span<con
 // large-kernel path, whose order carries over between angles.
 double e1_squared_in_order(const Filter& filter, std::span<const double> p,
                            std::span<const double> w, std::span<const size_t> order);
-// The same for samples already sorted by p, with J(p_i) given in j
-// (abs_moments): the same sums in the same order, for callers that weigh
-// one angle's projections many ways.
-double e1_squared_sorted(const Filter& filter, std::span<const double> p,
-                         std::span<const double> w, std::span<const double> j);
 // Re-sorts `order` by p with an insertion pass: about O(N) when the order
 // was nearly right (the projections at a neighbouring angle).
 void sort_by_projection(std::span<size_t> order, std::span<const double> p);

@@ -272,6 +272,58 @@ void FlickerSquaredPhases(const double* p, const size_t* order, size_t n, const 
   for (; v < phases; v += lanes) FlickerSweep<1>(d, p, order, n, c, stride, v, f2, row, dc);
 }
 
+// sorted_terms_phases (phase_lanes.h): B vectors of phases side by side,
+// each lane doing one phase's e1_squared_in_order (the moment, the sorted
+// spread w p (2 below + w - 1) and the weight below, summed in order) and
+// flicker sweep (the running change and sum |R_i| (p_(i+1) - p_i)), with
+// the one-phase loops' operations in their order.
+template <size_t B>
+HWY_INLINE void SortedTermsSweep(D d, double half_mean_distance, const double* p, const double* j,
+                                 const double* w, const size_t* frame, size_t n, const double* u,
+                                 const double* c, size_t stride, size_t v, double* e1, double* f) {
+  const size_t lanes = hn::Lanes(d);
+  const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
+  V moment[B], spread[B], below[B], running[B], sweep[B];
+  for (size_t b = 0; b < B; ++b) moment[b] = spread[b] = below[b] = running[b] = sweep[b] = zero;
+  for (size_t i = 0; i < n; ++i) {
+    const V wi = hn::Set(d, w[i]), pi = hn::Set(d, p[i]), ji = hn::Set(d, j[i]);
+    const size_t row = frame[i] * stride + v;
+    for (size_t b = 0; b < B; ++b) {
+      const V weight = hn::Mul(hn::LoadU(d, u + row + b * lanes), wi);
+      moment[b] = hn::Add(moment[b], hn::Mul(weight, ji));
+      spread[b] = hn::Add(
+          spread[b],
+          hn::Mul(hn::Mul(weight, pi), hn::Sub(hn::Add(hn::Mul(two, below[b]), weight), one)));
+      below[b] = hn::Add(below[b], weight);
+    }
+    if (i + 1 == n) break;
+    const V gap = hn::Set(d, p[i + 1] - p[i]);
+    for (size_t b = 0; b < B; ++b) {
+      running[b] = hn::Add(running[b], hn::Mul(hn::LoadU(d, c + row + b * lanes), wi));
+      sweep[b] = hn::Add(sweep[b], hn::Mul(hn::Abs(running[b]), gap));
+    }
+  }
+  const V hmd = hn::Set(d, half_mean_distance);
+  for (size_t b = 0; b < B; ++b) {
+    // std::max(0.0, e): 0 unless 0 < e (a NaN gives 0, as there).
+    const V e = hn::Sub(hn::Sub(moment[b], spread[b]), hmd);
+    hn::StoreU(hn::IfThenElse(hn::Lt(zero, e), e, zero), d, e1 + v + b * lanes);
+    hn::StoreU(sweep[b], d, f + v + b * lanes);
+  }
+}
+
+void SortedTermsPhases(double half_mean_distance, const double* p, const double* j, const double* w,
+                       const size_t* frame, size_t n, const double* u, const double* c,
+                       size_t stride, size_t phases, double* e1, double* f) {
+  const D d;
+  const size_t lanes = hn::Lanes(d);
+  size_t v = 0;
+  for (; v + lanes < phases; v += 2 * lanes)
+    SortedTermsSweep<2>(d, half_mean_distance, p, j, w, frame, n, u, c, stride, v, e1, f);
+  for (; v < phases; v += lanes)
+    SortedTermsSweep<1>(d, half_mean_distance, p, j, w, frame, n, u, c, stride, v, e1, f);
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace aapat
 HWY_AFTER_NAMESPACE();
@@ -283,6 +335,7 @@ HWY_EXPORT(E1SquaredPairs);
 HWY_EXPORT(E1SquaredDerivativesPairs);
 HWY_EXPORT(E1SquaredSorted);
 HWY_EXPORT(FlickerSquaredPhases);
+HWY_EXPORT(SortedTermsPhases);
 
 void e1_squared_phases(double half_mean_distance, const HeldSamples& at, const double* w,
                        size_t stride, size_t phases, double* e1) {
@@ -317,6 +370,13 @@ void flicker_squared_derivatives_phases(std::span<const double> p, std::span<con
                                         const RowShare& row, double* dc) {
   HWY_DYNAMIC_DISPATCH(FlickerSquaredPhases)
   (p.data(), order.data(), p.size(), c, stride, phases, nullptr, &row, dc);
+}
+
+void sorted_terms_phases(double half_mean_distance, const SortedSamples& s, const double* u,
+                         const double* c, size_t stride, size_t phases, double* e1, double* f) {
+  HWY_DYNAMIC_DISPATCH(SortedTermsPhases)
+  (half_mean_distance, s.p.data(), s.j.data(), s.w.data(), s.frame.data(), s.p.size(), u, c, stride,
+   phases, e1, f);
 }
 
 }  // namespace aapat

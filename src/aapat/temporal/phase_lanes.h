@@ -59,4 +59,21 @@ void flicker_squared_derivatives_phases(std::span<const double> p, std::span<con
                                         const double* c, size_t stride, size_t phases,
                                         const RowShare& row, double* dc);
 
+// Samples sorted by their projection p at one angle, with J(p_i) (j), each
+// one's weight within its frame (w) and its frame.
+struct SortedSamples {
+  std::span<const double> p, j, w;
+  std::span<const size_t> frame;
+};
+
+// The upscale search's terms at one angle for every steady phase at once
+// (sequence_optimizer.cpp), u and c phase arrays over frames (phase k's at
+// [frame * stride + k]): phase k weighs sample i by u[frame_i][k] w_i, and
+// e1[k] is e1_squared_in_order of those weights (J at p_i from j); it
+// changes sample i's weight by c[frame_i][k] w_i from the phase before,
+// and f[k] is the flicker sweep's F = sum_i |R_i| (p_(i+1) - p_i), R_i the
+// running change (not squared). The same bits as those loops, phase by phase.
+void sorted_terms_phases(double half_mean_distance, const SortedSamples& s, const double* u,
+                         const double* c, size_t stride, size_t phases, double* e1, double* f);
+
 }  // namespace aapat

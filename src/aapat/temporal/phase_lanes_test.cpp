@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -149,6 +151,59 @@ RC_GTEST_PROP(PhaseLanes, FlickerIsItsDefinitionWithItsDerivatives, ()) {
         const double by_c = (flicker(p, c_up) - flicker(p, c_down)) / (2 * h);
         RC_ASSERT(std::abs(dc[j * stride + k] - by_c) <= 1e-5 * (1 + std::abs(by_c)));
       }
+    }
+  });
+}
+
+// The upscale search's terms: for every phase, the bits of the one-phase
+// loops they replace (e1_squared_in_order of the phase's weights, and the
+// flicker sweep of its changes) on every SIMD path, with equal projections,
+// negative weights and any count of frames and phases.
+RC_GTEST_PROP(PhaseLanes, SortedTermsAreTheOnePhaseLoopsBits, ()) {
+  const char* filters[] = {"mitchell", "gaussian", "lanczos:lobes=2", "box"};
+  const Filter filter = make_filter(filters[*rc::gen::inRange<size_t>(0, std::size(filters))]);
+  const size_t n = *rc::gen::inRange<size_t>(0, 60), phases = *rc::gen::inRange<size_t>(1, 26);
+  const size_t frames = *rc::gen::inRange<size_t>(1, 8), stride = phase_stride(phases);
+  std::mt19937_64 rng(*rc::gen::arbitrary<uint64_t>());
+  std::uniform_real_distribution<double> pos(-1.2, 1.2), weight(-0.2, 1);
+  std::vector<double> p(n), w(n), j(n);
+  std::vector<size_t> frame(n);
+  for (size_t i = 0; i < n; ++i) {
+    p[i] = i > 0 && rng() % 4 == 0 ? p[rng() % i] : pos(rng);
+    w[i] = weight(rng);
+    frame[i] = rng() % frames;
+  }
+  std::sort(p.begin(), p.end());
+  for (size_t i = 0; i < n; ++i) j[i] = filter.abs_moment(p[i]);
+  std::vector<size_t> in_order(n);
+  std::iota(in_order.begin(), in_order.end(), size_t{0});
+  // Phase arrays over frames, zero past the phases.
+  std::vector<double> u(frames * stride, 0.0), c(frames * stride, 0.0);
+  for (size_t f = 0; f < frames; ++f)
+    for (size_t k = 0; k < phases; ++k) {
+      u[f * stride + k] = weight(rng);
+      c[f * stride + k] = weight(rng) - weight(rng);
+    }
+  std::vector<double> e1_expected(phases), f_expected(phases);
+  for (size_t k = 0; k < phases; ++k) {
+    std::vector<double> wk(n);
+    for (size_t i = 0; i < n; ++i) wk[i] = u[frame[i] * stride + k] * w[i];
+    e1_expected[k] = e1_squared_in_order(filter, p, wk, in_order);
+    double running = 0, integral = 0;
+    for (size_t i = 0; i + 1 < n; ++i) {
+      running += c[frame[i] * stride + k] * w[i];
+      integral += std::abs(running) * (p[i + 1] - p[i]);
+    }
+    f_expected[k] = integral;
+  }
+  testing::EveryPath paths;
+  paths.run([&] {
+    std::vector<double> e1(stride), f(stride);
+    sorted_terms_phases(filter.half_mean_distance(), {p, j, w, frame}, u.data(), c.data(), stride,
+                        phases, e1.data(), f.data());
+    for (size_t k = 0; k < phases; ++k) {
+      RC_ASSERT(same_bits(e1[k], e1_expected[k]));
+      RC_ASSERT(same_bits(f[k], f_expected[k]));
     }
   });
 }

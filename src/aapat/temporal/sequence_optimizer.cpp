@@ -18,6 +18,7 @@
 #include "aapat/optimize/family.h"
 #include "aapat/optimize/nlopt_guard.h"
 #include "aapat/temporal/engine_taa_settings.h"
+#include "aapat/temporal/phase_lanes.h"
 #include "aapat/temporal/sequence_epigraph.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/temporal_metrics.h"
@@ -274,21 +275,29 @@ double frame_term(const SequenceObjective& o, const SequenceSearch& s) {
 // (x, y, the weight within the frame, the frame), added into e1 and flicker
 // (angles x period, each angle's term): each angle's projections are sorted,
 // and J taken at them, once for all the phases' E1 and all the transitions'
-// flicker, O(angles (N log N + K N)) instead of O(angles K N log N).
+// flicker (the phases on SIMD lanes, phase_lanes.h), O(angles (N log N + K
+// N)) instead of O(angles K N log N).
 void add_shared_sample_terms(const std::vector<double>& x, const std::vector<double>& y,
                              const std::vector<double>& w, const std::vector<int>& frame,
                              const std::vector<std::vector<double>>& phase, const Metric& metric,
                              double scale, std::vector<double>& e1, std::vector<double>& flicker) {
   const size_t n = w.size(), angles = static_cast<size_t>(metric.angle_count());
-  const int period = static_cast<int>(phase.size());
+  const size_t period = phase.size(), stride = phase_stride(period);
+  // Phase arrays over frames: each phase's weight of a frame, and its change
+  // from the phase before (zeros past the period).
+  std::vector<double> u(period * stride, 0.0), c(period * stride, 0.0);
+  for (size_t k = 0; k < period; ++k)
+    for (size_t f = 0; f < period; ++f) {
+      u[f * stride + k] = phase[k][f];
+      c[f * stride + k] = phase[k][f] - phase[(k + period - 1) % period][f];
+    }
   const Filter::AbsMomentTable table = metric.filter().abs_moment_table();
-  std::vector<double> weight(n);
   // Each projection beside its sample's index, sorted by the projection
   // alone: std::sort makes the same comparisons and moves as on the indices
   // compared through p, so ties keep that order, without the indirection.
   std::vector<std::pair<double, size_t>> order(n);
   // The samples in sorted order: projection, J there, weight, frame.
-  std::vector<double> sp(n), sj(n), sw(n);
+  std::vector<double> sp(n), sj(n), sw(n), e1_here(stride), f_here(stride);
   std::vector<size_t> sf(n);
   for (size_t a = 0; a < angles; ++a) {
     const double nx = -metric.sin(static_cast<int>(a)), ny = metric.cos(static_cast<int>(a));
@@ -302,19 +311,12 @@ void add_shared_sample_terms(const std::vector<double>& x, const std::vector<dou
       sf[i] = static_cast<size_t>(frame[j]);
     }
     abs_moments(table, sp.data(), n, sj.data());
+    sorted_terms_phases(metric.filter().half_mean_distance(), {sp, sj, sw, sf}, u.data(), c.data(),
+                        stride, period, e1_here.data(), f_here.data());
     const double w2 = metric.weight_sq(static_cast<int>(a));
-    for (int k = 0; k < period; ++k) {
-      const auto& now = phase[static_cast<size_t>(k)];
-      const auto& before = phase[static_cast<size_t>((k + period - 1) % period)];
-      for (size_t i = 0; i < n; ++i) weight[i] = now[sf[i]] * sw[i];
-      e1[static_cast<size_t>(k) * angles + a] +=
-          scale * w2 * e1_squared_sorted(metric.filter(), sp, weight, sj);
-      double running = 0, integral = 0;
-      for (size_t i = 0; i + 1 < n; ++i) {
-        running += (now[sf[i]] - before[sf[i]]) * sw[i];
-        integral += std::abs(running) * (sp[i + 1] - sp[i]);
-      }
-      flicker[static_cast<size_t>(k) * angles + a] += scale * w2 * integral * integral;
+    for (size_t k = 0; k < period; ++k) {
+      e1[k * angles + a] += scale * w2 * e1_here[k];
+      flicker[k * angles + a] += scale * w2 * f_here[k] * f_here[k];
     }
   }
 }
