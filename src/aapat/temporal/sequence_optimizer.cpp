@@ -292,18 +292,38 @@ void add_shared_sample_terms(const std::vector<double>& x, const std::vector<dou
       c[f * stride + k] = phase[k][f] - phase[(k + period - 1) % period][f];
     }
   const Filter::AbsMomentTable table = metric.filter().abs_moment_table();
-  // Each projection beside its sample's index, sorted by the projection
-  // alone: std::sort makes the same comparisons and moves as on the indices
-  // compared through p, so ties keep that order, without the indirection.
+  // Each projection beside its sample's index, sorted by the projection.
+  // Without equal projections the sorted order is unique, so the last
+  // angle's order re-sorted by insertion (about O(N) between neighbouring
+  // angles) is the one; with them, std::sort from the samples' order as
+  // before, on the pairs compared by the projection alone (the same
+  // comparisons and moves as on the indices compared through p), so ties
+  // keep that order.
   std::vector<std::pair<double, size_t>> order(n);
   // The samples in sorted order: projection, J there, weight, frame.
   std::vector<double> sp(n), sj(n), sw(n), e1_here(stride), f_here(stride);
   std::vector<size_t> sf(n);
   for (size_t a = 0; a < angles; ++a) {
     const double nx = -metric.sin(static_cast<int>(a)), ny = metric.cos(static_cast<int>(a));
-    for (size_t j = 0; j < n; ++j) order[j] = {x[j] * nx + y[j] * ny, j};
-    std::sort(order.begin(), order.end(),
-              [](const auto& i, const auto& j) { return i.first < j.first; });
+    const auto projection = [&](size_t j) { return x[j] * nx + y[j] * ny; };
+    bool sorted = false;
+    if (a > 0) {
+      for (auto& [p, j] : order) p = projection(j);
+      for (size_t i = 1; i < n; ++i) {
+        const auto v = order[i];
+        size_t k = i;
+        for (; k > 0 && order[k - 1].first > v.first; --k) order[k] = order[k - 1];
+        order[k] = v;
+      }
+      sorted = std::adjacent_find(order.begin(), order.end(), [](const auto& i, const auto& j) {
+                 return i.first == j.first;
+               }) == order.end();
+    }
+    if (!sorted) {
+      for (size_t j = 0; j < n; ++j) order[j] = {projection(j), j};
+      std::sort(order.begin(), order.end(),
+                [](const auto& i, const auto& j) { return i.first < j.first; });
+    }
     for (size_t i = 0; i < n; ++i) {
       const size_t j = order[i].second;
       sp[i] = order[i].first;
