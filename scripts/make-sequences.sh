@@ -30,7 +30,7 @@ PY
 # upscaler's phase count int(8 R^2) per ratio, optimized under the linear
 # model of upscaling through FSR 2's Lanczos-2 reconstruction, accumulating
 # as FSR 2 does on still content (EMA alpha 1/17: n <= 16 frames); about
-# ten minutes on 2 cores.
+# two minutes on 2 cores.
 for spec in 1.5:18:4 1.7:23:4 2:32:4 3:72:2; do
   IFS=: read -r ratio frames starts <<<"$spec"
   "$aapat" optimize --sequence "$frames" --ratio "$ratio" --alpha 0.0588235294117647 \
