@@ -94,12 +94,18 @@ TEST(UpscaleModel, TheEnginePipelineBeforeRectificationIsTheModel) {
     }
 }
 
+// A search of `frames` jitters at `ratio` through FSR 2's Lanczos-2.
+SequenceSearch upscale_search(int frames, double ratio) {
+  SequenceSearch search;
+  search.frames = frames;
+  search.ratio = ratio;
+  search.reconstruction = make_filter("lanczos:lobes=2");
+  return search;
+}
+
 // The upscale search starts from Halton(2,3) and never ends above it.
 TEST(UpscaleModel, TheSearchNeverEndsAboveHalton) {
-  SequenceSearch search;
-  search.frames = 4;
-  search.ratio = 2;
-  search.reconstruction = make_filter("lanczos:lobes=2");
+  SequenceSearch search = upscale_search(4, 2);
   search.starts = 2;
   search.iterations = 30;
   const Metric metric = parse_objective("recommended").metric();
@@ -120,10 +126,7 @@ TEST(UpscaleModel, TheSearchNeverEndsAboveHalton) {
 // must give way to std::sort's order; the sum order is the search's, so
 // the bits are equal.
 TEST(UpscaleModel, TheObjectiveIsItsDefinitionWithEqualProjections) {
-  SequenceSearch search;
-  search.frames = 8;
-  search.ratio = 2;
-  search.reconstruction = make_filter("lanczos:lobes=2");
+  SequenceSearch search = upscale_search(8, 2);
   search.flicker_weight = 3;
   const Metric metric = parse_objective("recommended").metric();
   Sequence seq;
