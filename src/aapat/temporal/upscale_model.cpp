@@ -30,15 +30,25 @@ std::vector<double> upscale_phases(double ratio) {
 
 double reconstruction_samples(const std::vector<Vec2>& jitter, double ratio, const Filter& h,
                               Vec2 u, int frame, UpscaledSamples& out) {
+  const int a0 = static_cast<int>(std::floor(u.x - h.radius() - 1)),
+            a1 = static_cast<int>(std::ceil(u.x + h.radius() + 1)),
+            b0 = static_cast<int>(std::floor(u.y - h.radius() - 1)),
+            b1 = static_cast<int>(std::ceil(u.y + h.radius() + 1));
+  // h at each column's offset, once per jitter rather than once per row
+  // (the same values: a Lanczos weight costs two sines).
+  thread_local std::vector<double> column;
+  column.resize(static_cast<size_t>(a1 - a0 + 1));
   double total = 0;
-  for (const Vec2 j : jitter)
-    for (int b = static_cast<int>(std::floor(u.y - h.radius() - 1));
-         b <= static_cast<int>(std::ceil(u.y + h.radius() + 1)); ++b)
-      for (int a = static_cast<int>(std::floor(u.x - h.radius() - 1));
-           a <= static_cast<int>(std::ceil(u.x + h.radius() + 1)); ++a) {
-        const double rx = a + j.x - u.x, ry = b + j.y - u.y;
-        if (std::abs(rx) > h.radius() || std::abs(ry) > h.radius()) continue;
-        const double w = h.value(rx) * h.value(ry);
+  for (const Vec2 j : jitter) {
+    for (int a = a0; a <= a1; ++a) column[static_cast<size_t>(a - a0)] = h.value(a + j.x - u.x);
+    for (int b = b0; b <= b1; ++b) {
+      const double ry = b + j.y - u.y;
+      if (std::abs(ry) > h.radius()) continue;
+      const double hy = h.value(ry);
+      for (int a = a0; a <= a1; ++a) {
+        const double rx = a + j.x - u.x;
+        if (std::abs(rx) > h.radius()) continue;
+        const double w = column[static_cast<size_t>(a - a0)] * hy;
         if (w == 0) continue;
         out.x.push_back(ratio * rx);
         out.y.push_back(ratio * ry);
@@ -46,6 +56,8 @@ double reconstruction_samples(const std::vector<Vec2>& jitter, double ratio, con
         out.frame.push_back(frame);
         total += w;
       }
+    }
+  }
   return total;
 }
 
