@@ -292,43 +292,32 @@ void add_shared_sample_terms(const std::vector<double>& x, const std::vector<dou
       c[f * stride + k] = phase[k][f] - phase[(k + period - 1) % period][f];
     }
   const Filter::AbsMomentTable table = metric.filter().abs_moment_table();
-  // Each projection beside its sample's index, sorted by the projection.
-  // Without equal projections the sorted order is unique, so the last
-  // angle's order re-sorted by insertion (about O(N) between neighbouring
-  // angles) is the one; with them, std::sort from the samples' order as
-  // before, on the pairs compared by the projection alone (the same
-  // comparisons and moves as on the indices compared through p), so ties
-  // keep that order.
-  std::vector<std::pair<double, size_t>> order(n);
+  // Each angle's sorted order. Without equal projections it is unique, so
+  // the last angle's order re-sorted by insertion (sort_by_projection, about
+  // O(N) between neighbouring angles) is the one; with them, std::sort from
+  // the samples' order, so that ties keep the order they always had.
+  std::vector<double> p(n);
+  std::vector<size_t> order(n);
   // The samples in sorted order: projection, J there, weight, frame.
   std::vector<double> sp(n), sj(n), sw(n), e1_here(stride), f_here(stride);
   std::vector<size_t> sf(n);
   for (size_t a = 0; a < angles; ++a) {
     const double nx = -metric.sin(static_cast<int>(a)), ny = metric.cos(static_cast<int>(a));
-    const auto projection = [&](size_t j) { return x[j] * nx + y[j] * ny; };
+    for (size_t j = 0; j < n; ++j) p[j] = x[j] * nx + y[j] * ny;
     bool sorted = false;
     if (a > 0) {
-      for (auto& [p, j] : order) p = projection(j);
-      for (size_t i = 1; i < n; ++i) {
-        const auto v = order[i];
-        size_t k = i;
-        for (; k > 0 && order[k - 1].first > v.first; --k) order[k] = order[k - 1];
-        order[k] = v;
-      }
-      sorted = std::adjacent_find(order.begin(), order.end(), [](const auto& i, const auto& j) {
-                 return i.first == j.first;
-               }) == order.end();
+      sort_by_projection(order, p);
+      sorted = std::adjacent_find(order.begin(), order.end(),
+                                  [&](size_t i, size_t j) { return p[i] == p[j]; }) == order.end();
     }
     if (!sorted) {
-      for (size_t j = 0; j < n; ++j) order[j] = {projection(j), j};
-      std::sort(order.begin(), order.end(),
-                [](const auto& i, const auto& j) { return i.first < j.first; });
+      std::iota(order.begin(), order.end(), size_t{0});
+      std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return p[i] < p[j]; });
     }
     for (size_t i = 0; i < n; ++i) {
-      const size_t j = order[i].second;
-      sp[i] = order[i].first;
-      sw[i] = w[j];
-      sf[i] = static_cast<size_t>(frame[j]);
+      sp[i] = p[order[i]];
+      sw[i] = w[order[i]];
+      sf[i] = static_cast<size_t>(frame[order[i]]);
     }
     abs_moments(table, sp.data(), n, sj.data());
     sorted_terms_phases(metric.filter().half_mean_distance(), {sp, sj, sw, sf}, u.data(), c.data(),
