@@ -312,16 +312,13 @@ HWY_INLINE void SortedTermsSweep(D d, double half_mean_distance, const double* p
   }
 }
 
-void SortedTermsPhases(double half_mean_distance, const double* p, const double* j, const double* w,
-                       const size_t* frame, size_t n, const double* u, const double* c,
-                       size_t stride, size_t phases, double* e1, double* f) {
+void SortedTermsPhases(double half_mean_distance, const double* p, const double* j,
+                       const double* w, const size_t* frame, size_t n, const double* u,
+                       const double* c, size_t stride, size_t phases, double* e1, double* f) {
   const D d;
-  const size_t lanes = hn::Lanes(d);
-  size_t v = 0;
-  for (; v + lanes < phases; v += 2 * lanes)
-    SortedTermsSweep<2>(d, half_mean_distance, p, j, w, frame, n, u, c, stride, v, e1, f);
-  for (; v < phases; v += lanes)
-    SortedTermsSweep<1>(d, half_mean_distance, p, j, w, frame, n, u, c, stride, v, e1, f);
+  InPhaseVectors(d, phases, [&]<size_t P>(size_t v) {
+    SortedTermsSweep<P>(d, half_mean_distance, p, j, w, frame, n, u, c, stride, v, e1, f);
+  });
 }
 
 }  // namespace HWY_NAMESPACE
