@@ -137,6 +137,15 @@ HWY_INLINE V AbsMoment(D d, const Pieces& pieces, V p) {
   return hn::IfThenElse(l.inside, PieceAt(d, pieces, l), l.ap);
 }
 
+// M Horner evaluations side by side from the top coefficient, coef(q, i)
+// vector q's coefficient i: each lane's steps in Horner's order.
+template <int kCoefs, size_t M, class Coef>
+HWY_INLINE void InterleavedHorner(const V* t, Coef coef, V* r) {
+  for (size_t q = 0; q < M; ++q) r[q] = coef(q, kCoefs - 1);
+  for (int i = kCoefs - 2; i >= 0; --i)
+    for (size_t q = 0; q < M; ++q) r[q] = hn::Add(hn::Mul(r[q], t[q]), coef(q, i));
+}
+
 // The same for the piecewise cubics (kCoefs = 6; one piece for box and
 // tent, two for Mitchell-Netravali) with the counts known when compiled: the
 // Horner steps unrolled, the piece selected by one comparison; for M vectors
@@ -163,33 +172,30 @@ HWY_INLINE void AbsMomentsOf(D d, const Pieces& pieces, const V* p, V* out) {
       first = hn::And(first, hn::Lt(ap[q], clear));
     }
     if (hn::AllTrue(d, first)) {
-      const double* c = pieces.coef;
       V t[M];
-      for (size_t q = 0; q < M; ++q) {
+      for (size_t q = 0; q < M; ++q)
         t[q] = hn::Sub(hn::Mul(ap[q], hn::Set(d, 2.0 * pieces.j.inv_width)), hn::Set(d, 1.0));
-        out[q] = hn::Set(d, c[(kCoefs - 1) * kSelectPieces]);
-      }
-      for (int i = kCoefs - 2; i >= 0; --i)
-        for (size_t q = 0; q < M; ++q)
-          out[q] = hn::Add(hn::Mul(out[q], t[q]), hn::Set(d, c[i * kSelectPieces]));
+      InterleavedHorner<kCoefs, M>(
+          t, [&](size_t, int i) { return hn::Set(d, pieces.coef[i * kSelectPieces]); }, out);
       return;
     }
   }
   Located l[M];
   hn::Mask<D> second[M];
-  V r[M];
-  auto coef = [&](size_t q, int i) {
-    const double* c = pieces.coef + i * kSelectPieces;
-    if constexpr (kSegments == 1) return hn::Set(d, c[0]);
-    return hn::IfThenElse(second[q], hn::Set(d, c[1]), hn::Set(d, c[0]));
-  };
+  V t[M], r[M];
   for (size_t q = 0; q < M; ++q) {
     l[q] = LocateFew<kSegments>(d, pieces.j, p[q]);
     second[q] = hn::Ge(l[q].k, hn::Set(d, 1.0));
-    r[q] = coef(q, kCoefs - 1);
+    t[q] = l[q].t;
   }
-  for (int i = kCoefs - 2; i >= 0; --i)
-    for (size_t q = 0; q < M; ++q) r[q] = hn::Add(hn::Mul(r[q], l[q].t), coef(q, i));
+  InterleavedHorner<kCoefs, M>(
+      t,
+      [&](size_t q, int i) {
+        const double* c = pieces.coef + i * kSelectPieces;
+        if constexpr (kSegments == 1) return hn::Set(d, c[0]);
+        return hn::IfThenElse(second[q], hn::Set(d, c[1]), hn::Set(d, c[0]));
+      },
+      r);
   for (size_t q = 0; q < M; ++q) out[q] = hn::IfThenElse(l[q].inside, r[q], l[q].ap);
 }
 
