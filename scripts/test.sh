@@ -8,10 +8,10 @@
 # parser for a fixed budget under ASan + UBSan (scripts/fuzz.sh;
 # AAPAT_FUZZ_SECONDS per target, default 10). This is what CI runs (.ci/run).
 #
-# The ASan build compiles at the lowest CPU priority (nice 19) while the
-# optimized build's checks run: those leave a core idle for about a fifth of
-# their time (single-threaded commands, links, browser start-up), which the
-# ASan build takes, and they themselves run as fast as they would alone.
+# The ASan build compiles at the lowest CPU priority (SCHED_IDLE, and nice 19
+# where that is refused) while the optimized build's checks run: those leave a
+# core idle for part of their time (single-threaded commands, links, browser
+# start-up), which the ASan build takes; they keep their priority.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -24,13 +24,15 @@ echo "== $(at) release: configure and build"
 cmake --preset release >/dev/null
 cmake --build --preset release -j "$jobs"
 
-echo "== $(at) asan: configure and build, in the background at nice 19 (its log follows the release checks)"
+echo "== $(at) asan: configure and build, in the background at the lowest priority (its log follows the release checks)"
 mkdir -p build
 asan_log=build/asan-build.log
 # Its own process group (job control on for the launch), so that an exit or
 # Ctrl-C below stops all of it.
+idle=(chrt --idle 0)
+"${idle[@]}" true 2>/dev/null || idle=()
 set -m
-nice -n 19 bash -c 'cmake --preset asan >/dev/null && cmake --build --preset asan -j "$1"' \
+"${idle[@]}" nice -n 19 bash -c 'cmake --preset asan >/dev/null && cmake --build --preset asan -j "$1"' \
   asan-build "$jobs" >"$asan_log" 2>&1 &
 asan_build=$!
 set +m
