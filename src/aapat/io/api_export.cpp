@@ -13,7 +13,7 @@
 namespace aapat {
 namespace {
 
-constexpr std::string_view kMagic = "// aapat-export 1";
+constexpr std::string_view kExportMagic = "// aapat-export 1";
 
 // A float literal every language reads: the shortest exact form, with a decimal point.
 std::string float_literal(double v) {
@@ -181,7 +181,7 @@ std::string shader_code(const HardwareLayout& L, const ApiProfile& profile, Shad
   return {};
 }
 
-[[noreturn]] void fail(std::string_view source, const std::string& message) {
+[[noreturn]] void import_fail(std::string_view source, const std::string& message) {
   throw Error(fmt::format("import {}: {}", source, message));
 }
 
@@ -190,11 +190,11 @@ std::string shader_code(const HardwareLayout& L, const ApiProfile& profile, Shad
 std::vector<double> array_numbers(std::string_view text, std::string_view name,
                                   std::string_view source) {
   const auto at = text.find(std::string(name) + "[");
-  if (at == std::string_view::npos) fail(source, fmt::format("no array '{}'", name));
+  if (at == std::string_view::npos) import_fail(source, fmt::format("no array '{}'", name));
   const auto eq = text.find('=', at);
   const auto end = text.find(';', eq);
   if (eq == std::string_view::npos || end == std::string_view::npos)
-    fail(source, fmt::format("array '{}' is not terminated", name));
+    import_fail(source, fmt::format("array '{}' is not terminated", name));
   return numbers_in(text.substr(eq + 1, end - eq - 1));
 }
 
@@ -232,7 +232,7 @@ namespace {
 
 int whole(double v, std::string_view source, std::string_view what) {
   if (v != std::floor(v) || std::abs(v) > 1e6)
-    fail(source, fmt::format("{}: {} is not a whole number", what, v));
+    import_fail(source, fmt::format("{}: {} is not a whole number", what, v));
   return static_cast<int>(v);
 }
 
@@ -255,8 +255,8 @@ std::string export_layout(const HardwareLayout& L, ShaderLanguage shader,
                           const std::vector<std::string>& notes) {
   const ApiProfile& profile = api_profile(L.profile);
   std::string out =
-      fmt::format("{} profile={} grid={}x{} samples={} footprint={} name={}\n", kMagic, L.profile,
-                  L.grid_w, L.grid_h, L.sample_count, L.footprint.text(), L.name);
+      fmt::format("{} profile={} grid={}x{} samples={} footprint={} name={}\n", kExportMagic,
+                  L.profile, L.grid_w, L.grid_h, L.sample_count, L.footprint.text(), L.name);
   out += fmt::format("// {}: {}\n", profile.name, profile.summary);
   for (const auto& n : notes) out += fmt::format("// {}\n", n);
   out += fmt::format("\n{}\n{}", host_code(L, profile), shader_code(L, profile, shader));
@@ -266,10 +266,11 @@ std::string export_layout(const HardwareLayout& L, ShaderLanguage shader,
 HardwareLayout parse_export(std::string_view text, std::string_view source) {
   const auto eol = text.find('\n');
   const std::string_view head = text.substr(0, eol);
-  if (!head.starts_with(kMagic))
-    fail(source, fmt::format("the first line is not '{} ...' (written by aapat export)", kMagic));
+  if (!head.starts_with(kExportMagic))
+    import_fail(source, fmt::format("the first line is not '{} ...' (written by aapat export)",
+                                    kExportMagic));
   HardwareLayout L;
-  std::istringstream fields{std::string(head.substr(kMagic.size()))};
+  std::istringstream fields{std::string(head.substr(kExportMagic.size()))};
   std::string field;
   bool grid = false, samples = false, footprint = false;
   while (fields >> field) {
@@ -293,25 +294,25 @@ HardwareLayout parse_export(std::string_view text, std::string_view source) {
     }
   }
   if (L.profile.empty() || !grid || !samples || !footprint)
-    fail(source, "the first line needs profile=, grid=, samples= and footprint=");
+    import_fail(source, "the first line needs profile=, grid=, samples= and footprint=");
   const ApiProfile& profile = api_profile(L.profile);
   if (L.grid_w < 1 || L.grid_h < 1 || L.grid_w > profile.max_grid || L.grid_h > profile.max_grid ||
       L.sample_count < 1 || L.sample_count > 16)
-    fail(source, fmt::format("grid {}x{} with {} samples is outside what {} allows", L.grid_w,
-                             L.grid_h, L.sample_count, profile.name));
+    import_fail(source, fmt::format("grid {}x{} with {} samples is outside what {} allows",
+                                    L.grid_w, L.grid_h, L.sample_count, profile.name));
   const int pixels = L.grid_w * L.grid_h;
   const auto pos = array_numbers(text, "aapat_sample_positions", source);
   if (pos.size() != static_cast<size_t>(2 * pixels * L.sample_count))
-    fail(source, fmt::format("aapat_sample_positions holds {} numbers, expected {}", pos.size(),
-                             2 * pixels * L.sample_count));
+    import_fail(source, fmt::format("aapat_sample_positions holds {} numbers, expected {}",
+                                    pos.size(), 2 * pixels * L.sample_count));
   L.positions.resize(pixels);
   for (size_t i = 0; i < pos.size(); i += 2) {
     const double scale = profile.api == Api::kD3D12 ? 1 : 16,
                  shift = profile.api == Api::kD3D12 ? 8 : 0;
     const double x = pos[i] * scale + shift, y = pos[i + 1] * scale + shift;
     if (x != std::floor(x) || y != std::floor(y) || x < 0 || x > 15 || y < 0 || y > 15)
-      fail(source, fmt::format("sample position ({}, {}) is not a legal {} lattice position",
-                               pos[i], pos[i + 1], profile.name));
+      import_fail(source, fmt::format("sample position ({}, {}) is not a legal {} lattice position",
+                                      pos[i], pos[i + 1], profile.name));
     L.positions[i / 2 / L.sample_count].push_back({static_cast<int>(x), static_cast<int>(y)});
   }
   const auto start = array_numbers(text, "aapat_tap_start", source);
@@ -319,12 +320,12 @@ HardwareLayout parse_export(std::string_view text, std::string_view source) {
   const auto weights = array_numbers(text, "aapat_weights", source);
   if (start.size() != static_cast<size_t>(pixels + 1) || taps.size() != 3 * weights.size() ||
       start.back() != static_cast<double>(weights.size()) || start.front() != 0)
-    fail(source, "the tap tables do not agree in size with each other and the grid");
+    import_fail(source, "the tap tables do not agree in size with each other and the grid");
   L.taps.resize(pixels);
   for (int g = 0; g < pixels; ++g) {
     const int a = whole(start[g], source, "aapat_tap_start"),
               b = whole(start[g + 1], source, "aapat_tap_start");
-    if (a > b) fail(source, "aapat_tap_start is not increasing");
+    if (a > b) import_fail(source, "aapat_tap_start is not increasing");
     for (int t = a; t < b; ++t)
       L.taps[g].push_back({whole(taps[3 * t], source, "aapat_taps"),
                            whole(taps[3 * t + 1], source, "aapat_taps"),

@@ -12,7 +12,7 @@
 namespace aapat {
 namespace {
 
-[[noreturn]] void fail(const char* what, int code) {
+[[noreturn]] void gif_fail(const char* what, int code) {
   throw Error(fmt::format("GIF: {} failed: {}", what, GifErrorString(code)));
 }
 
@@ -42,9 +42,9 @@ std::string gif_bytes(const GreyFrames& f) {
   std::string out;
   int err = 0;
   GifFileType* gif = EGifOpen(&out, append, &err);
-  if (!gif) fail("open", err);
+  if (!gif) gif_fail("open", err);
   auto close = [&] {
-    if (gif && EGifCloseFile(gif, &err) == GIF_ERROR) fail("close", err);
+    if (gif && EGifCloseFile(gif, &err) == GIF_ERROR) gif_fail("close", err);
     gif = nullptr;
   };
   try {
@@ -56,7 +56,7 @@ std::string gif_bytes(const GreyFrames& f) {
                                                                    GifFreeMapObject);
     EGifSetGifVersion(gif, true);
     if (EGifPutScreenDesc(gif, f.width, f.height, 8, 0, map.get()) == GIF_ERROR)
-      fail("screen", gif->Error);
+      gif_fail("screen", gif->Error);
     // NETSCAPE2.0 application block: loop forever.
     const GifByteType app[] = {'N', 'E', 'T', 'S', 'C', 'A', 'P', 'E', '2', '.', '0'};
     const GifByteType loop[] = {1, 0, 0};
@@ -64,7 +64,7 @@ std::string gif_bytes(const GreyFrames& f) {
         EGifPutExtensionBlock(gif, sizeof app, app) == GIF_ERROR ||
         EGifPutExtensionBlock(gif, sizeof loop, loop) == GIF_ERROR ||
         EGifPutExtensionTrailer(gif) == GIF_ERROR)
-      fail("loop extension", gif->Error);
+      gif_fail("loop extension", gif->Error);
     for (const auto& frame : f.frames) {
       if (frame.size() != static_cast<size_t>(f.width) * f.height)
         throw Error("GIF: a frame of the wrong size");
@@ -73,11 +73,11 @@ std::string gif_bytes(const GreyFrames& f) {
       EGifGCBToExtension(&gcb, ext);
       if (EGifPutExtension(gif, GRAPHICS_EXT_FUNC_CODE, 4, ext) == GIF_ERROR ||
           EGifPutImageDesc(gif, 0, 0, f.width, f.height, false, nullptr) == GIF_ERROR)
-        fail("frame", gif->Error);
+        gif_fail("frame", gif->Error);
       for (int j = 0; j < f.height; ++j)
         if (EGifPutLine(gif, const_cast<GifPixelType*>(&frame[static_cast<size_t>(j) * f.width]),
                         f.width) == GIF_ERROR)
-          fail("line", gif->Error);
+          gif_fail("line", gif->Error);
     }
     close();
   } catch (...) {
@@ -91,7 +91,7 @@ GreyFrames frames_from_gif(const std::string& bytes) {
   Reader r{&bytes};
   int err = 0;
   GifFileType* gif = DGifOpen(&r, consume, &err);
-  if (!gif) fail("open", err);
+  if (!gif) gif_fail("open", err);
   GreyFrames f;
   const bool ok = DGifSlurp(gif) == GIF_OK;
   if (ok) {
@@ -107,7 +107,7 @@ GreyFrames frames_from_gif(const std::string& bytes) {
   }
   const int code = gif->Error;
   DGifCloseFile(gif, &err);
-  if (!ok) fail("read", code);
+  if (!ok) gif_fail("read", code);
   return f;
 }
 
