@@ -76,10 +76,15 @@ float hyab(Vec3f a, Vec3f b) {
   return std::abs(a.x - b.x) + std::hypot(a.y - b.y, a.z - b.z);
 }
 
-// The largest colour distance, green to blue, raised to qc.
+// The largest colour distance, green to blue, raised to qc. Computed at run
+// time from an opaque 1: from constants the compiler may fold cbrtf correctly
+// rounded, where glibc's cbrtf is 1 ulp lower for green's Y, so every FLIP
+// value depended on whether this function was inlined (it was, once the
+// layer compiled as one unity batch).
 float max_color_distance() {
-  const Vec3f green = hunt(xyz_to_lab(rgb_to_xyz({0, 1, 0})));
-  const Vec3f blue = hunt(xyz_to_lab(rgb_to_xyz({0, 0, 1})));
+  volatile float one = 1.0f;
+  const Vec3f green = hunt(xyz_to_lab(rgb_to_xyz({0, one, 0})));
+  const Vec3f blue = hunt(xyz_to_lab(rgb_to_xyz({0, 0, one})));
   return std::pow(hyab(green, blue), kQc);
 }
 
