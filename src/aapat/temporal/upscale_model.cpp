@@ -35,19 +35,22 @@ double reconstruction_samples(const std::vector<Vec2>& jitter, double ratio, con
             b0 = static_cast<int>(std::floor(u.y - h.radius() - 1)),
             b1 = static_cast<int>(std::ceil(u.y + h.radius() + 1));
   // h at each column's offset, once per jitter rather than once per row
-  // (the same values: a Lanczos weight costs two sines).
+  // (the same values: a Lanczos weight costs two sines), 0 outside h's
+  // radius, which the weight test below then skips.
   thread_local std::vector<double> column;
   column.resize(static_cast<size_t>(a1 - a0 + 1));
   double total = 0;
   for (const Vec2 j : jitter) {
-    for (int a = a0; a <= a1; ++a) column[static_cast<size_t>(a - a0)] = h.value(a + j.x - u.x);
+    for (int a = a0; a <= a1; ++a) {
+      const double rx = a + j.x - u.x;
+      column[static_cast<size_t>(a - a0)] = std::abs(rx) > h.radius() ? 0.0 : h.value(rx);
+    }
     for (int b = b0; b <= b1; ++b) {
       const double ry = b + j.y - u.y;
       if (std::abs(ry) > h.radius()) continue;
       const double hy = h.value(ry);
       for (int a = a0; a <= a1; ++a) {
         const double rx = a + j.x - u.x;
-        if (std::abs(rx) > h.radius()) continue;
         const double w = column[static_cast<size_t>(a - a0)] * hy;
         if (w == 0) continue;
         out.x.push_back(ratio * rx);
