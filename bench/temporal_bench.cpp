@@ -7,6 +7,9 @@
 
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter_catalog.h"
+#include "aapat/temporal/engine_taa_settings.h"
+#include "aapat/temporal/pan_model.h"
+#include "aapat/temporal/pan_objective.h"
 #include "aapat/temporal/sequence_epigraph.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_optimizer.h"
@@ -72,6 +75,41 @@ void SequenceConstraints(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(SequenceConstraints)->Arg(8)->Arg(18)->Arg(32)->Arg(72)->Unit(benchmark::kMicrosecond);
+
+// The search under motion's objective (temporal/pan_objective.h): FSR 2 at
+// 1.5, Halton 18, the five default velocities, acuity uniform:step=4.
+// Arg 0: set() (every kernel binned); 1: one move() (a frame's ages rebinned);
+// 2: evaluate_pan of the same five, what each try cost before.
+void PanObjectiveUpdate(benchmark::State& state) {
+  const Metric metric(make_filter("mitchell"), make_acuity("uniform:step=4"), 2);
+  const EngineTaa taa = make_engine_taa("fsr2", 1.5, {});
+  const Sequence s = make_sequence("halton:frames=18");
+  std::vector<PanCase> cases;
+  for (const std::string_view v : kPanVelocities) {
+    const Vec2 velocity = parse_velocity(v);
+    cases.push_back({PanModel{1.5, taa.reconstruction, taa.history, velocity},
+                     steady_alpha(taa, velocity.x != 0 || velocity.y != 0)});
+  }
+  std::vector<Vec2> jitter;
+  for (const Pattern& f : s.frames) jitter.push_back(f.sets[0][0]);
+  PanObjective objective(18, cases, metric);
+  objective.set(jitter);
+  int i = 0;
+  for (auto _ : state) {
+    if (state.range(0) == 0) objective.set(jitter);
+    if (state.range(0) == 1) {
+      const Vec2 j = jitter[size_t(i % 18)];
+      objective.move(i % 18, {j.x + (i % 2 ? 0.01 : -0.01), j.y});
+      ++i;
+    }
+    if (state.range(0) == 2)
+      for (const PanCase& c : cases)
+        benchmark::DoNotOptimize(evaluate_pan(s, c.model, c.alpha, metric));
+    benchmark::DoNotOptimize(objective.value());
+  }
+  state.counters["MiB"] = static_cast<double>(objective.bytes()) / (1 << 20);
+}
+BENCHMARK(PanObjectiveUpdate)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace aapat

@@ -56,7 +56,34 @@ Chain step(const Chain& chain, const std::array<double, 16>& taps, std::array<in
   return next;
 }
 
+[[noreturn]] void too_many_pan_samples(size_t frames) {
+  throw Error(
+      fmt::format("the pan's kernel passes {} samples at {} frames of history: the blend keeps too "
+                  "many frames for this history sampler and velocity (raise alpha)",
+                  kMaxPanKernelSamples, frames));
+}
+
 }  // namespace
+
+std::vector<std::vector<PanChainEntry>> pan_chains(const PanModel& m, size_t ages) {
+  check_velocity(m.velocity);
+  // The point a pixel came from is x - v: its texels start at x + floor(-v).
+  const std::array<int, 2> floor_v{static_cast<int>(std::floor(-m.velocity.x)),
+                                   static_cast<int>(std::floor(-m.velocity.y))};
+  const Vec2 fraction{-m.velocity.x - floor_v[0], -m.velocity.y - floor_v[1]};
+  const std::array<double, 16> taps = history_taps(m.history, fraction);
+  std::vector<std::vector<PanChainEntry>> out;
+  Chain chain{{{0, 0}, 1.0}};
+  size_t entries_so_far = 0;  // each reads at least one sample
+  for (size_t d = 0; d < ages; ++d) {
+    if (d > 0) chain = step(chain, taps, floor_v, m.chain_cut);
+    entries_so_far += chain.size();
+    if (entries_so_far > kMaxPanKernelSamples) too_many_pan_samples(d + 1);
+    auto& entries = out.emplace_back();
+    for (const auto& [at, c] : chain) entries.push_back({at[0], at[1], c});
+  }
+  return out;
+}
 
 Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double>& age_weights,
                   int k, std::array<int, 2> pixel) {
@@ -64,17 +91,11 @@ Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double
   validate(s);
   if (s.frames[0].footprint.size != 1 || s.frames[0].set_count() != 1)
     throw Error(fmt::format("sequence {}: a pan model jitters one-pixel frames", s.name));
-  check_velocity(m.velocity);
-  // The point a pixel came from is x - v: its texels start at x + floor(-v).
-  const std::array<int, 2> floor_v{static_cast<int>(std::floor(-m.velocity.x)),
-                                   static_cast<int>(std::floor(-m.velocity.y))};
-  const Vec2 fraction{-m.velocity.x - floor_v[0], -m.velocity.y - floor_v[1]};
-  const std::array<double, 16> taps = history_taps(m.history, fraction);
   const Filter& h = m.reconstruction;
   const int period = s.period();
   Kernel out;
   UpscaledSamples frame;  // one frame's reconstruction at one display pixel
-  Chain chain{{{0, 0}, 1.0}};
+  const std::vector<std::vector<PanChainEntry>> chains = pan_chains(m, age_weights.size());
   // One frame's render sample reaches the pixel through many chain offsets:
   // its weights are summed into one sample (keyed by its position on a
   // 1/1024-pixel grid; two render samples are a render pixel apart), which
@@ -91,7 +112,8 @@ Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double
     const int f = ((k - static_cast<int>(d)) % period + period) % period;
     const auto& jitter = s.frames[static_cast<size_t>(f)].sets[0];
     const Vec2 moved{static_cast<double>(d) * m.velocity.x, static_cast<double>(d) * m.velocity.y};
-    for (const auto& [at, c] : chain) {
+    for (const auto [dx, dy, c] : chains[d]) {
+      const std::array<int, 2> at{dx, dy};
       // The frame's reconstruction at display pixel pixel + at.
       frame.x.clear(), frame.y.clear(), frame.w.clear(), frame.frame.clear();
       const double total = reconstruction_samples(
@@ -113,21 +135,13 @@ Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double
         out.y.push_back(y);
         out.w.push_back(w);
       }
-      if (reached > kMaxPanKernelSamples)
-        throw Error(fmt::format(
-            "the pan's kernel passes {} samples at {} frames of history: the blend keeps too "
-            "many frames for this history sampler and velocity (raise alpha)",
-            kMaxPanKernelSamples, d + 1));
+      if (reached > kMaxPanKernelSamples) too_many_pan_samples(d + 1);
     }
-    chain = step(chain, taps, floor_v, m.chain_cut);
   }
   return out;
 }
 
-namespace {
-
-// A pixel whose render-grid phase is each of upscale_phases' (one axis).
-std::vector<int> phase_pixels(double ratio) {
+std::vector<int> pan_phase_pixels(double ratio) {
   std::vector<int> pixels;
   for (const double phase : upscale_phases(ratio))
     for (int x = 0; x < 64; ++x) {
@@ -139,6 +153,8 @@ std::vector<int> phase_pixels(double ratio) {
     }
   return pixels;
 }
+
+namespace {
 
 // One kernel's weights binned along the normal of one angle on the grid of
 // multiples of kPanBin: bin first + i holds the weight projected into
@@ -189,19 +205,21 @@ std::vector<Binned> bin_kernel(const Kernel& k, const Metric& metric) {
   return out;
 }
 
-// E1^2 of binned weights by the closed form (metric.h).
-double binned_e1_squared(const Binned& b, const Filter& f) {
+}  // namespace
+
+double binned_e1_squared(std::span<const double> w, std::span<const double> p, const Filter& f) {
   double moment = 0, spread = 0, before = 0, before_p = 0;
-  for (size_t i = 0; i < b.w.size(); ++i) {
-    if (b.w[i] == 0) continue;
-    const double p = b.p[i];
-    moment += b.w[i] * f.abs_moment(p);
-    spread += b.w[i] * (before * p - before_p);
-    before += b.w[i];
-    before_p += b.w[i] * p;
+  for (size_t i = 0; i < w.size(); ++i) {
+    if (w[i] == 0) continue;
+    moment += w[i] * f.abs_moment(p[i]);
+    spread += w[i] * (before * p[i] - before_p);
+    before += w[i];
+    before_p += w[i] * p[i];
   }
   return std::max(0.0, moment - spread - f.half_mean_distance());
 }
+
+namespace {
 
 // F: the integral of |the change of the step response| from one frame's
 // binned weights to the next's, over both frames' points in order.
@@ -240,7 +258,7 @@ PanReport evaluate_pan(const Sequence& s, PanModel m, double alpha, const Metric
                             s.period(), kMaxPanFrames));
   m.chain_cut = std::max(m.chain_cut, kPanEvaluationChainCut);
   const std::vector<double> ages = ema_age_weights(alpha, s.period(), kPanAgeCut);
-  const std::vector<int> pixels = phase_pixels(m.ratio);
+  const std::vector<int> pixels = pan_phase_pixels(m.ratio);
   const int period = s.period();
   const size_t count = pixels.size() * pixels.size();
   std::vector<double> e2(count), flicker(count);
@@ -250,8 +268,8 @@ PanReport evaluate_pan(const Sequence& s, PanModel m, double alpha, const Metric
     std::vector<double> values(static_cast<size_t>(metric.angle_count()));
     const auto add_frame = [&](const std::vector<Binned>& now, const std::vector<Binned>& before) {
       for (size_t a = 0; a < values.size(); ++a)
-        values[a] =
-            metric.weight_sq(static_cast<int>(a)) * binned_e1_squared(now[a], metric.filter());
+        values[a] = metric.weight_sq(static_cast<int>(a)) *
+                    binned_e1_squared(now[a].w, now[a].p, metric.filter());
       e2[i] += combine_over_angles(values, metric.norm()) / period;
       for (size_t a = 0; a < values.size(); ++a) {
         const double f = binned_flicker(before[a], now[a]);

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -59,6 +60,24 @@ std::vector<double> ema_age_weights(double alpha, int period, double cut = 1e-4)
 // to the pixel's centre, where each sample's content is now.
 Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double>& age_weights,
                   int k, std::array<int, 2> pixel);
+
+// The whole-pixel offsets a pixel's history reaches after 0, 1, ... ages-1
+// steps of the model's history taps, in order, and their weights (chains cut
+// at m.chain_cut): age 0 is the pixel itself, weight 1. Throws Error when
+// they pass kMaxPanKernelSamples entries in all.
+struct PanChainEntry {
+  int dx = 0, dy = 0;
+  double c = 0;
+};
+std::vector<std::vector<PanChainEntry>> pan_chains(const PanModel& m, size_t ages);
+
+// The display pixels the evaluation takes, one per render-grid phase of
+// upscale_phases (one axis; the same list for x and y).
+std::vector<int> pan_phase_pixels(double ratio);
+
+// E1^2 by the closed form (metric.h) of weights w binned at increasing
+// positions p (zero weights skipped): the evaluation's projections.
+double binned_e1_squared(std::span<const double> w, std::span<const double> p, const Filter& f);
 
 // `aapat sequence pan`'s velocities when none are given (display pixels per
 // frame): still, then slow to fast pans in several directions, none whole
