@@ -6,6 +6,7 @@
 #include "aapat/core/hardware_layout.h"
 #include "aapat/temporal/engine_taa_settings.h"
 #include "aapat/temporal/pan_model.h"
+#include "aapat/temporal/pan_search.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/sequence_optimizer.h"
@@ -146,6 +147,49 @@ halton_j, ...), its "result" the aapat.Sequence found. ratio: optimize the
 jitter of an upscale (`--ratio`), each display pixel reconstructed by
 `reconstruct` from the render pixels around it. progress: a callable
 f(done, total, note), called as starts finish ("best J ..."), or None.)doc");
+
+  m.def(
+      "optimize_sequence_pan",
+      [](int frames, const std::string& taa, double ratio, const py::dict& settings,
+         const std::optional<std::vector<std::pair<double, double>>>& velocities,
+         const py::object& start, double step, double min_step, double jitter_bound,
+         const py::object& progress, const py::object& objective, const py::object& filter,
+         const py::object& acuity, const py::object& norm) {
+        PanSequenceSearch s;
+        s.taa = make_engine_taa(taa, ratio, taa_overrides_of(settings));
+        if (velocities)
+          for (const auto& [dx, dy] : *velocities) s.velocities.push_back({dx, dy});
+        s.start = py::isinstance<Sequence>(start)
+                      ? start.cast<Sequence>()
+                      : pan_search_start(frames, start.is_none() ? "" : start.cast<std::string>());
+        s.step = step;
+        s.min_step = min_step;
+        s.jitter_bound = jitter_bound;
+        const Objective o = make_objective(objective, filter, acuity, norm);
+        const Metric metric = o.metric();
+        const auto report = progress_of(progress);
+        const auto r = interruptible([&] { return search_sequence_under_pans(s, metric, report); });
+        py::dict d = to_python(pan_search_json(s, o, r));
+        d["result"] = r.best;
+        return d;
+      },
+      py::kw_only(), py::arg("frames"), py::arg("taa"), py::arg("ratio") = 1.0,
+      py::arg("settings") = py::dict(), py::arg("velocities") = py::none(),
+      py::arg("start") = py::none(), py::arg("step") = PanSequenceSearch{}.step,
+      py::arg("min_step") = PanSequenceSearch{}.min_step,
+      py::arg("jitter_bound") = PanSequenceSearch{}.jitter_bound, py::arg("progress") = py::none(),
+      AAPAT_OBJECTIVE_ARGS,
+      with_metric_args(R"doc(aapat optimize --sequence K --taa PRESET: a jitter of `frames` frames
+searched under motion, minimizing the pan model's steady mean E2 averaged over
+the velocities ((dx, dy) display pixels per frame; default the command line's,
+still among them) under an engine preset (settings: overrides by key) at
+ratio, by a compass search from `start` (a Sequence or spec; default
+Halton(2,3) from index 1) with steps from `step` halving to `min_step`
+(docs/temporal.md, "Under motion"). The same sequence as the command line for
+the same settings. A dict with the keys of its --json (start_mean_e2, mean_e2,
+velocities [{velocity, start_mean_e2, mean_e2}], tries, kept, ...), its
+"result" the aapat.Sequence found. progress: a callable f(done, total, note)
+called as each step size finishes, or None.)doc"));
 
   m.def(
       "sequence_pan",

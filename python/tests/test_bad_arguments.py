@@ -75,6 +75,10 @@ def calls(files):
                                            "lattice": 0, "threads": 1, "time_limit": 0.0}),
         "optimize_sequence": (aapat.optimize_sequence, [],
                               {"frames": 2, "starts": 1, "iterations": 5, "alpha": 0.5}),
+        "optimize_sequence_pan": (aapat.optimize_sequence_pan, [],
+                                  {"frames": 2, "taa": "fsr2", "ratio": 1.0, "settings": {},
+                                   "velocities": [(0.3, 0.2)], "step": 0.25, "min_step": 0.25,
+                                   "jitter_bound": 0.5, "acuity": "uniform:step=30"}),
         "pattern": (aapat.pattern, ["msaa-4"], {}),
         "Pattern": (aapat.Pattern, [np.array([[0.1, 0.2], [-0.3, 0.1]])], {"name": "two"}),
         "Pattern.from_json": (aapat.Pattern.from_json, [p.to_json()], {}),
@@ -133,7 +137,7 @@ def test_every_callable_has_a_bad_argument_case(files):
 @pytest.mark.parametrize("name", sorted(
     ["acuity", "AcuityTable", "filter", "Filter", "Filter.__call__", "diff", "discrepancy",
      "engine_taa", "enumerate", "eval", "eval_report", "figure10", "generate", "hardware_table",
-     "load_pattern", "optimize", "optimize_sequence", "pattern", "Pattern", "Pattern.from_json",
+     "load_pattern", "optimize", "optimize_sequence", "optimize_sequence_pan", "pattern", "Pattern", "Pattern.from_json",
      "Pattern.save", "profile", "read_points", "registry", "limits", "render", "save_pattern", "sequence",
      "Sequence.save", "sequence_eval", "sequence_pan", "spectrum", "spectrum_1d", "table2", "table3",
      "write_points"]))

@@ -90,6 +90,25 @@ def test_optimize_sequence_at_8_frames_and_8_starts_equals_the_cli(aapat_cli, tm
             assert py[key] == cli[key], key
 
 
+def test_optimize_sequence_pan_equals_the_cli(aapat_cli, tmp_path):
+    """The search under motion on both faces: the same document and sequence."""
+    out = str(tmp_path / "pan.json")
+    args = ["--taa", "fsr2", "--ratio", "1.5", "--velocity", "0,0", "--velocity", "0.37,0.21",
+            "--step", "0.125", "--min-step", "0.0625", "--acuity", "uniform:step=30"]
+    cli = cli_json(aapat_cli, "optimize", "--sequence", "4", *args, "-o", out)
+    py = {k: v for k, v in aapat.optimize_sequence_pan(
+        frames=4, taa="fsr2", ratio=1.5, velocities=[(0.0, 0.0), (0.37, 0.21)], step=0.125,
+        min_step=0.0625, acuity="uniform:step=30").items() if k not in ("command", "schema")}
+    with open(out) as f:
+        assert py["result"].to_json() == f.read()
+    assert py.keys() == cli.keys()
+    for key in cli:
+        if key != "result":
+            assert py[key] == cli[key], key
+    assert py["mean_e2"] <= py["start_mean_e2"]  # never worse than its start
+    assert py["from"] == "halton:b1=2,b2=3,frames=4,start=1"
+
+
 def test_engine_taa_is_the_cli_json(aapat_cli):
     args = ["--taa", "fsr2", "--ratio", "1.5", "--motion", "pan:dx=0.4,dy=0.2", "--size", "24",
             "--frames", "3", "--warmup", "5", "--reference-samples", "4",

@@ -193,7 +193,7 @@ std::vector<std::string> metric_args(std::vector<std::string> args) {
 
 // A random command line of one of the commands, small enough to run fast.
 std::vector<std::string> random_command() {
-  const int which = uniform(0, 19);
+  const int which = uniform(0, 20);
   std::vector<std::string> a;
   switch (which) {
     case 0:
@@ -367,6 +367,27 @@ std::vector<std::string> random_command() {
       maybe(a, "--flicker-weight", {"1", "-1"});
       maybe(a, "--api", {"vulkan", "nosuch"});
       maybe(a, "--ratio", {"1.5", "0.5"});
+      maybe_flag(a, "--json");
+      break;
+    case 19:  // the search under motion, tiny (one velocity, one step size)
+      a = {"optimize",
+           "--sequence",
+           *one_of({"2", "3", "0", "200"}),
+           "--taa",
+           *one_of({"fsr2", "godot", "nosuch"}),
+           "--acuity",
+           "uniform:step=30",
+           "--velocity",
+           *one_of({"0,0", "0.37,0.21", "nan,1", "a,b"}),
+           "--step",
+           *one_of({"0.25", "0", "nan"}),
+           "--min-step",
+           *one_of({"0.25", "0.5"}),
+           "-o",
+           *one_of({"seq.json", "seq.txt"})};
+      maybe(a, "--from", {"r2:frames=2", "halton:frames=3", "nosuch"});
+      maybe(a, "--taa-set", {"history=catmull-rom-5", "bogus=1"});
+      maybe(a, "--jitter-bound", {"0.3", "0"});
       maybe_flag(a, "--json");
       break;
   }

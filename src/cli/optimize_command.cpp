@@ -19,11 +19,15 @@
 #include "aapat/optimize/lattice_search.h"
 #include "aapat/optimize/multistart.h"
 #include "aapat/study/optimize_run.h"
+#include "aapat/temporal/engine_taa_settings.h"
+#include "aapat/temporal/pan_model.h"
+#include "aapat/temporal/pan_search.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/sequence_optimizer.h"
 #include "aapat/temporal/temporal_json.h"
 #include "aapat/work/work_items.h"
+#include "cli/app.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 #include "cli/progress.h"
@@ -107,7 +111,58 @@ struct OptimizeOptions {
   double ratio = 1;
   bool ratio_given = false;
   std::string reconstruct = "lanczos:lobes=2";
+  // --taa PRESET: the search under motion (temporal/pan_search.h).
+  std::string taa, from;
+  std::vector<std::string> taa_set, velocities;
+  double step = PanSequenceSearch{}.step, min_step = PanSequenceSearch{}.min_step;
 };
+
+// `optimize --sequence K --taa PRESET`: the compass search on the pan model.
+void run_pan_search(const OptimizeOptions& o, std::ostream& out) {
+  if (o.samples_per_frame != 1)
+    throw Error("--taa searches one-sample frames: give no --samples-per-frame");
+  const Objective objective = o.metric.resolve();
+  const Metric metric = objective.metric();
+  PanSequenceSearch s;
+  s.taa = make_engine_taa(o.taa, o.ratio, parse_taa_overrides(o.taa_set));
+  for (const std::string& v : o.velocities) s.velocities.push_back(parse_velocity(v));
+  s.step = o.step;
+  s.min_step = o.min_step;
+  s.jitter_bound = o.jitter_bound;
+  if (o.ratio_given && o.sequence < upscaler_phase_count(o.ratio))
+    warnings() << fmt::format(
+        "aapat: warning: --sequence {} is shorter than the upscaler's rule int(8 R^2) = {} at "
+        "ratio {:g} (FSR 2's ffxFsr2GetJitterPhaseCount)\n",
+        o.sequence, upscaler_phase_count(o.ratio), o.ratio);
+  PanSequenceSearchResult r;
+  try {
+    s.start = pan_search_start(o.sequence, o.from);
+    tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
+    Progress bar("pan search");
+    arena.execute([&] { r = search_sequence_under_pans(s, metric, bar.callback()); });
+  } catch (const ParameterError& e) {
+    throw Error(fmt::format("--{}{}", e.parameter(), e.detail()));
+  }
+  if (!o.output.empty()) save_sequence_file(r.best, o.output);
+  if (o.json) {
+    out << json_text(pan_search_json(s, objective, r));
+    return;
+  }
+  out << fmt::format("searched {} frames under the pan model of {}; {}\n", o.sequence,
+                     engine_taa_text(s.taa), objective.caption());
+  out << fmt::format("steady mean E2 per velocity (px/frame), {} -> the result:\n", s.start.name);
+  for (size_t i = 0; i < r.velocities.size(); ++i)
+    out << fmt::format("  {:>12}  {:.5f} -> {:.5f} ({:+.2f} %)\n",
+                       fmt::format("{:g},{:g}", r.velocities[i].x, r.velocities[i].y),
+                       r.start_values[i], r.values[i], 100 * (r.values[i] / r.start_values[i] - 1));
+  out << fmt::format("  {:>12}  {:.5f} -> {:.5f} ({:+.2f} %); {} steps tried, {} kept\n", "mean",
+                     r.start_value, r.value, 100 * (r.value / r.start_value - 1), r.tries, r.kept);
+  for (int f = 0; f < r.best.period(); ++f) {
+    const Vec2 j = r.best.frames[static_cast<size_t>(f)].sets[0][0];
+    out << fmt::format("  frame {:>3}: ({:>9.5f}, {:>9.5f})\n", f, j.x, j.y);
+  }
+  if (!o.output.empty()) out << "wrote " << o.output << "\n";
+}
 
 // `optimize --sequence K`: the temporal search (temporal/sequence_optimizer.h).
 void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
@@ -118,6 +173,9 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   if (o.method != "descent" && o.method != "slsqp")
     throw Error(fmt::format("--method {}: a sequence is searched with slsqp (its epigraph form)",
                             o.method));
+  if (!o.taa.empty()) return run_pan_search(o, out);
+  if (!o.taa_set.empty() || !o.velocities.empty() || !o.from.empty())
+    throw Error("--taa-set, --velocity and --from belong to the search under motion: give --taa");
   const Objective objective = o.metric.resolve();
   const Metric metric = objective.metric();
   SequenceSearch s;
@@ -320,6 +378,22 @@ Action add_optimize_command(CLI::App& app) {
       ->each([o](const std::string&) { o->ratio_given = true; });
   cmd->add_option("--reconstruct", o->reconstruct,
                   "with --ratio: the reconstruction filter over render pixels")
+      ->capture_default_str();
+
+  cmd->add_option("--taa", o->taa,
+                  "with --sequence: search under motion instead, for this engine preset (ue4, "
+                  "fsr2, godot, bevy): the pan model's steady mean E2 averaged over --velocity "
+                  "(docs/temporal.md, \"Under motion\")");
+  cmd->add_option("--taa-set", o->taa_set,
+                  "with --taa: KEY=VALUE, override one of the preset's settings");
+  cmd->add_option("--velocity", o->velocities,
+                  "with --taa: DX,DY display pixels per frame, repeatable (default: those of "
+                  "`aapat sequence pan`, still 0,0 among them)");
+  cmd->add_option("--from", o->from,
+                  "with --taa: the start, a sequence file or spec (default halton:frames=K)");
+  cmd->add_option("--step", o->step, "with --taa: the compass search's first step (pixels)")
+      ->capture_default_str();
+  cmd->add_option("--min-step", o->min_step, "with --taa: its last step (pixels)")
       ->capture_default_str();
 
   auto* starts_option = cmd->get_option("--starts");

@@ -85,6 +85,32 @@ TEST(SequenceCli, OptimizeWritesASequenceThatBeatsHalton) {
   EXPECT_EQ(load_sequence_file(path).name, "aapat-taa-4");
 }
 
+// The search under motion: never above its start, every velocity reported,
+// the file it writes the sequence it reports, which `sequence pan` then
+// scores as the search did (to the binning's rounding, 1e-3).
+TEST(SequenceCli, TheSearchUnderMotionLowersThePanModelsError) {
+  const std::string path = temp_path("pan.json");
+  const std::vector<std::string> common = {
+      "--taa", "fsr2",       "--ratio",   "1.5",      "--velocity",
+      "0,0",   "--velocity", "0.37,0.21", "--acuity", "uniform:step=30"};
+  std::vector<std::string> args = {"optimize",   "--sequence", "4",  "--step", "0.125",
+                                   "--min-step", "0.0625",     "-o", path,     "--json"};
+  args.insert(args.end(), common.begin(), common.end());
+  const auto r = run(args);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_LT(doc["mean_e2"].get<double>(), doc["start_mean_e2"].get<double>());
+  ASSERT_EQ(doc["velocities"].size(), 2u);
+  EXPECT_GT(doc["kept"].get<int>(), 0);
+  EXPECT_EQ(load_sequence_file(path).period(), 4);
+  std::vector<std::string> pan = {"sequence", "pan", path, "--json"};
+  pan.insert(pan.end(), common.begin(), common.end());
+  const auto p = run(pan);
+  ASSERT_EQ(p.code, 0) << p.err;
+  const double scored = nlohmann::json::parse(p.out)["rows"][0]["mean_e2"].get<double>();
+  EXPECT_NEAR(scored, doc["mean_e2"].get<double>(), 1e-3 * scored);
+}
+
 TEST(SequenceCli, TemporalRenderingReportsEveryMeasure) {
   const std::string csv = temp_path("frames.csv");
   const auto r = run({"animate", "circle", "--sequence", "halton:frames=4", "--frames", "4",
@@ -125,6 +151,13 @@ TEST(SequenceCli, BadInputIsNamedAndWritesNothing) {
       {{"animate", "circle", "--sequence", "halton", "--pattern", "rgss"},
        "give either --pattern or --sequence"},
       {{"sequence", "phases", "--ratio", "0.5"}, "--ratio 0.5"},
+      {{"optimize", "--sequence", "4", "--taa", "fsr2", "--from", "halton:frames=3", "-o", out},
+       "--from halton:b1=2,b2=3,frames=3,start=1: 3 frames, not 4"},
+      {{"optimize", "--sequence", "4", "--taa", "fsr2", "--min-step", "0.5", "-o", out},
+       "--min-step 0.5"},
+      {{"optimize", "--sequence", "4", "--velocity", "0,0", "-o", out},
+       "--taa-set, --velocity and --from belong to the search under motion"},
+      {{"optimize", "--sequence", "4", "--taa", "nosuch", "-o", out}, "nosuch"},
   };
   for (const Case& c : cases) {
     const auto r = run(c.args);

@@ -32,6 +32,8 @@
 #include "aapat/temporal/engine_taa.h"
 #include "aapat/temporal/engine_taa_settings.h"
 #include "aapat/temporal/pan_model.h"
+#include "aapat/temporal/pan_objective.h"
+#include "aapat/temporal/pan_search.h"
 #include "aapat/temporal/sequence.h"
 #include "aapat/temporal/sequence_optimizer.h"
 #include "aapat/work/work_items.h"
@@ -230,6 +232,14 @@ std::vector<Limit> make_table() {
                    number(kMaxUpscaleRatio), number(kMaxPanSpeed), kMaxPanFrames,
                    grouped(static_cast<uint64_t>(kMaxPanKernelSamples))),
        "`kMaxPanSpeed`, `kMaxPanFrames`, `kMaxPanKernelSamples`, `temporal/pan_model.h`"},
+      {"`optimize --sequence --taa` (`optimize_sequence_pan`)",
+       fmt::format("as `sequence pan`; one sample per frame; `--step` in (0, 0.5], `--min-step` "
+                   "in (0, step]; `--jitter-bound` {} to 0.5; the bins of every kernel at most "
+                   "{} GiB; at most {} sweeps per step size",
+                   number(kMinJitterBound), kMaxPanObjectiveBytes >> 30,
+                   grouped(static_cast<uint64_t>(kMaxPanSweeps))),
+       "`kMaxPanObjectiveBytes`, `temporal/pan_objective.h`; `kMaxPanSweeps`, "
+       "`temporal/pan_search.h`"},
       {"upscaler phases (`sequence phases --ratio`)", "ratio 1 to 16", "`upscaler_phase_count`"},
   };
 }

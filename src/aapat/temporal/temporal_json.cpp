@@ -28,6 +28,32 @@ JsonObject temporal_report_json(const Sequence& s, const TemporalReport& r) {
                     {"prefixes", prefixes}};
 }
 
+JsonObject pan_search_json(const PanSequenceSearch& search, const Objective& objective,
+                           const PanSequenceSearchResult& r) {
+  JsonObject doc = json_report("optimize");
+  doc.update(objective_json(objective));
+  JsonObject::array_t velocities;
+  for (size_t i = 0; i < r.velocities.size(); ++i)
+    velocities.push_back(JsonObject{{"velocity", {r.velocities[i].x, r.velocities[i].y}},
+                                    {"start_mean_e2", r.start_values[i]},
+                                    {"mean_e2", r.values[i]}});
+  doc.update(JsonObject{{"frames", search.start.period()},
+                        {"taa", search.taa.preset},
+                        {"taa_settings", engine_taa_text(search.taa)},
+                        {"ratio", search.taa.ratio},
+                        {"from", search.start.name},
+                        {"step", search.step},
+                        {"min_step", search.min_step},
+                        {"jitter_bound", search.jitter_bound},
+                        {"start_mean_e2", r.start_value},
+                        {"mean_e2", r.value},
+                        {"velocities", velocities},
+                        {"tries", r.tries},
+                        {"kept", r.kept}});
+  doc["result"] = JsonObject::parse(sequence_to_json(r.best));
+  return doc;
+}
+
 JsonObject sequence_search_json(const SequenceSearch& s, std::string_view model,
                                 const Objective& objective, const SequenceSearchResult& r) {
   JsonObject doc = json_report("optimize");

@@ -8,6 +8,7 @@
 #include "aapat/io/json_report.h"
 #include "aapat/temporal/engine_taa.h"
 #include "aapat/temporal/pan_model.h"
+#include "aapat/temporal/pan_search.h"
 #include "aapat/temporal/sequence.h"
 #include "aapat/temporal/sequence_optimizer.h"
 #include "aapat/temporal/temporal_metrics.h"
@@ -19,6 +20,12 @@ JsonObject temporal_report_json(const Sequence& s, const TemporalReport& r);
 
 // The settings and result of a sequence search, with the objective J and
 // Halton's J of the same length; "result" holds the sequence file's object.
+// `optimize --sequence K --taa PRESET --json` and Python's
+// optimize_sequence_pan: the start's and the result's steady mean E2 per
+// velocity and their means, and the result as a sequence file's object.
+JsonObject pan_search_json(const PanSequenceSearch& search, const Objective& objective,
+                           const PanSequenceSearchResult& r);
+
 JsonObject sequence_search_json(const SequenceSearch& search, std::string_view model,
                                 const Objective& objective, const SequenceSearchResult& r);
 
