@@ -79,7 +79,8 @@ BENCHMARK(SequenceConstraints)->Arg(8)->Arg(18)->Arg(32)->Arg(72)->Unit(benchmar
 // The search under motion's objective (temporal/pan_objective.h): FSR 2 at
 // 1.5, Halton 18, the five default velocities, acuity uniform:step=4.
 // Arg 0: set() (every kernel binned); 1: one move() (a frame's ages rebinned);
-// 2: evaluate_pan of the same five, what each try cost before.
+// 2: evaluate_pan of the same five, what each try cost before; 3: one
+// try_move() (a copy of each kernel rebinned, the objective unchanged).
 void PanObjectiveUpdate(benchmark::State& state) {
   const Metric metric(make_filter("mitchell"), make_acuity("uniform:step=4"), 2);
   const EngineTaa taa = make_engine_taa("fsr2", 1.5, {});
@@ -102,6 +103,11 @@ void PanObjectiveUpdate(benchmark::State& state) {
       objective.move(i % 18, {j.x + (i % 2 ? 0.01 : -0.01), j.y});
       ++i;
     }
+    if (state.range(0) == 3) {
+      const Vec2 j = jitter[size_t(i % 18)];
+      benchmark::DoNotOptimize(objective.try_move(i % 18, {j.x + 0.01, j.y}));
+      ++i;
+    }
     if (state.range(0) == 2)
       for (const PanCase& c : cases)
         benchmark::DoNotOptimize(evaluate_pan(s, c.model, c.alpha, metric));
@@ -109,7 +115,13 @@ void PanObjectiveUpdate(benchmark::State& state) {
   }
   state.counters["MiB"] = static_cast<double>(objective.bytes()) / (1 << 20);
 }
-BENCHMARK(PanObjectiveUpdate)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(PanObjectiveUpdate)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace aapat

@@ -73,7 +73,7 @@ struct PanObjective::State {
     std::vector<size_t> begin;              // per angle: where its bins start within a kernel
     size_t bins = 0;                        // per kernel, over every angle
     double total = 0;                       // every kernel's weight (jitter-free)
-    std::vector<double> w, wp;              // kernels x bins
+    std::vector<double> bins_of;            // kernels x bins x (w, w p), a bin's pair together
     std::vector<double> e2;                 // per kernel
   };
   std::vector<Case> data;
@@ -86,8 +86,8 @@ struct PanObjective::State {
   // offset's reconstruction is summed onto the render samples it reads
   // (many offsets read the same one), and each render sample, now at
   // R (its render position) + d v from the pixel, is binned once per angle.
-  void bin_age(Case& c, const PanModel& m, size_t kernel, size_t d, Vec2 j, const AxisWeights& xs,
-               const AxisWeights& ys, double sign) const {
+  void bin_age(const Case& c, const PanModel& m, size_t kernel, size_t d, Vec2 j,
+               const AxisWeights& xs, const AxisWeights& ys, double sign, double* bins) const {
     const size_t per_pixel_row = pixels.size() * static_cast<size_t>(period);
     const int px = pixels[kernel / per_pixel_row];
     const int py = pixels[(kernel / static_cast<size_t>(period)) % pixels.size()];
@@ -129,44 +129,41 @@ struct PanObjective::State {
         sw.push_back(scale * g);
       }
     const auto angles = static_cast<size_t>(metric.angle_count());
-    double* w = c.w.data() + kernel * c.bins;
-    double* wp = c.wp.data() + kernel * c.bins;
     for (size_t an = 0; an < angles; ++an) {
       const double cs = metric.cos(static_cast<int>(an)), sn = metric.sin(static_cast<int>(an));
       const long first = c.first[an];
       const long last =
           static_cast<long>((an + 1 < angles ? c.begin[an + 1] : c.bins) - c.begin[an]) - 1;
-      double* aw = w + c.begin[an];
-      double* awp = wp + c.begin[an];
+      double* angle_bins = bins + 2 * c.begin[an];
       for (size_t i = 0; i < sw.size(); ++i) {
         const double p = cs * sy[i] - sn * sx[i];
         const auto at = static_cast<size_t>(
             std::clamp(static_cast<long>(std::floor(p / kPanBin)) - first, 0L, last));
-        aw[at] += sw[i];
-        awp[at] += sw[i] * p;
+        angle_bins[2 * at] += sw[i];
+        angle_bins[2 * at + 1] += sw[i] * p;
       }
     }
   }
 
   // The kernel's E2 from its bins, as evaluate_pan reads its binned kernels.
-  double kernel_e2(const Case& c, size_t kernel) const {
-    thread_local std::vector<double> positions, values;
+  double kernel_e2(const Case& c, const double* bins) const {
+    thread_local std::vector<double> weights, positions, values;
     const auto angles = static_cast<size_t>(metric.angle_count());
     values.resize(angles);
-    const double* w = c.w.data() + kernel * c.bins;
-    const double* wp = c.wp.data() + kernel * c.bins;
     for (size_t a = 0; a < angles; ++a) {
       const size_t begin = c.begin[a], end = a + 1 < angles ? c.begin[a + 1] : c.bins;
+      weights.resize(end - begin);
       positions.resize(end - begin);
       for (size_t i = begin; i < end; ++i) {
         const double edge =
             static_cast<double>(c.first[a] + static_cast<long>(i - begin)) * kPanBin;
-        positions[i - begin] = std::abs(w[i]) > 1e-12
-                                   ? std::clamp(wp[i] / w[i], edge, edge + kPanBin)
-                                   : edge + kPanBin / 2;
+        const double w = bins[2 * i], wp = bins[2 * i + 1];
+        weights[i - begin] = w;
+        positions[i - begin] =
+            std::abs(w) > 1e-12 ? std::clamp(wp / w, edge, edge + kPanBin) : edge + kPanBin / 2;
       }
       values[a] = metric.weight_sq(static_cast<int>(a)) *
-                  binned_e1_squared({w + begin, end - begin}, positions, metric.filter());
+                  binned_e1_squared(weights, positions, metric.filter());
     }
     return combine_over_angles(values, metric.norm());
   }
@@ -250,8 +247,7 @@ PanObjective::PanObjective(int period, std::vector<PanCase> cases, const Metric&
           static_cast<double>(bytes) / (1 << 30),
           static_cast<double>(kMaxPanObjectiveBytes) / (1 << 30)));
     for (State::Case& c : s.data) {
-      c.w.assign(c.bins * s.kernels_per_case, 0.0);
-      c.wp.assign(c.bins * s.kernels_per_case, 0.0);
+      c.bins_of.assign(2 * c.bins * s.kernels_per_case, 0.0);
       c.e2.assign(s.kernels_per_case, 0.0);
     }
     const auto [pmin, pmax] = std::minmax_element(s.pixels.begin(), s.pixels.end());
@@ -277,61 +273,100 @@ void PanObjective::set(const std::vector<Vec2>& jitter) {
   tbb::parallel_for(size_t{0}, s.data.size() * s.kernels_per_case, [&](size_t at) {
     State::Case& c = s.data[at / s.kernels_per_case];
     const size_t kernel = at % s.kernels_per_case;
-    std::fill_n(c.w.begin() + static_cast<std::ptrdiff_t>(kernel * c.bins), c.bins, 0.0);
-    std::fill_n(c.wp.begin() + static_cast<std::ptrdiff_t>(kernel * c.bins), c.bins, 0.0);
+    double* bins = c.bins_of.data() + 2 * kernel * c.bins;
+    std::fill_n(bins, 2 * c.bins, 0.0);
     const int k = static_cast<int>(kernel % static_cast<size_t>(s.period));
     for (size_t d = 0; d < c.ages.size(); ++d) {
       const auto f =
           static_cast<size_t>(((k - static_cast<int>(d)) % s.period + s.period) % s.period);
       s.bin_age(c, s.cases[at / s.kernels_per_case].model, kernel, d, s.jitter[f], s.x_weights[f],
-                s.y_weights[f], 1);
+                s.y_weights[f], 1, bins);
     }
-    c.e2[kernel] = s.kernel_e2(c, kernel);
+    c.e2[kernel] = s.kernel_e2(c, bins);
   });
 }
 
 void PanObjective::move(int frame, Vec2 j) {
+  update(frame, j, true);
+}
+
+double PanObjective::try_move(int frame, Vec2 j) {
+  return update(frame, j, false);
+}
+
+double PanObjective::update(int frame, Vec2 j, bool keep) {
   State& s = *state_;
   if (s.jitter.empty()) throw Error("the pan objective has no jitter yet: set() first");
   if (frame < 0 || frame >= s.period)
     throw Error(fmt::format("frame {} of a {}-frame pan objective", frame, s.period));
   const auto f = static_cast<size_t>(frame);
   State::AxisWeights xs = s.weights_of(j.x), ys = s.weights_of(j.y);
+  // A try rebins a copy of each kernel's bins and keeps only its E2.
+  std::vector<std::vector<double>> tried(s.data.size());
+  if (!keep)
+    for (size_t i = 0; i < s.data.size(); ++i) tried[i] = s.data[i].e2;
   tbb::parallel_for(size_t{0}, s.data.size() * s.kernels_per_case, [&](size_t at) {
     State::Case& c = s.data[at / s.kernels_per_case];
+    const PanModel& m = s.cases[at / s.kernels_per_case].model;
     const size_t kernel = at % s.kernels_per_case;
     const int k = static_cast<int>(kernel % static_cast<size_t>(s.period));
+    thread_local std::vector<double> copy;
+    double* bins = c.bins_of.data() + 2 * kernel * c.bins;
+    bool copied = false, touched = false;
     // Ages d showing frame f: d = k - f modulo the period.
-    bool touched = false;
     for (auto d = static_cast<size_t>(((k - frame) % s.period + s.period) % s.period);
          d < c.ages.size(); d += static_cast<size_t>(s.period)) {
-      const PanModel& m = s.cases[at / s.kernels_per_case].model;
-      s.bin_age(c, m, kernel, d, s.jitter[f], s.x_weights[f], s.y_weights[f], -1);
-      s.bin_age(c, m, kernel, d, j, xs, ys, 1);
+      if (!keep && !copied) {
+        copy.assign(bins, bins + 2 * c.bins);
+        bins = copy.data();
+        copied = true;
+      }
+      s.bin_age(c, m, kernel, d, s.jitter[f], s.x_weights[f], s.y_weights[f], -1, bins);
+      s.bin_age(c, m, kernel, d, j, xs, ys, 1, bins);
       touched = true;
     }
-    if (touched) c.e2[kernel] = s.kernel_e2(c, kernel);
+    if (touched) (keep ? c.e2 : tried[at / s.kernels_per_case])[kernel] = s.kernel_e2(c, bins);
   });
+  if (!keep) return mean_of(tried);
   s.jitter[f] = j;
   s.x_weights[f] = std::move(xs);
   s.y_weights[f] = std::move(ys);
+  return value();
 }
 
-std::vector<double> PanObjective::case_values() const {
+namespace {
+
+// Each case's mean over its kernels, summed in a fixed order (the same at
+// any thread count).
+std::vector<double> case_means(const std::vector<std::vector<double>>& e2) {
   std::vector<double> out;
-  for (const State::Case& c : state_->data) {
-    double sum = 0;  // in a fixed order: the same at any thread count
-    for (const double e : c.e2) sum += e;
-    out.push_back(sum / static_cast<double>(c.e2.size()));
+  for (const std::vector<double>& kernels : e2) {
+    double sum = 0;
+    for (const double e : kernels) sum += e;
+    out.push_back(sum / static_cast<double>(kernels.size()));
   }
   return out;
 }
 
-double PanObjective::value() const {
-  const std::vector<double> v = case_values();
+}  // namespace
+
+double PanObjective::mean_of(const std::vector<std::vector<double>>& e2) {
+  const std::vector<double> v = case_means(e2);
   double sum = 0;
   for (const double e : v) sum += e;
   return sum / static_cast<double>(v.size());
+}
+
+std::vector<double> PanObjective::case_values() const {
+  std::vector<std::vector<double>> e2;
+  for (const State::Case& c : state_->data) e2.push_back(c.e2);
+  return case_means(e2);
+}
+
+double PanObjective::value() const {
+  std::vector<std::vector<double>> e2;
+  for (const State::Case& c : state_->data) e2.push_back(c.e2);
+  return mean_of(e2);
 }
 
 const std::vector<Vec2>& PanObjective::jitter() const {
@@ -340,7 +375,7 @@ const std::vector<Vec2>& PanObjective::jitter() const {
 
 size_t PanObjective::bytes() const {
   size_t out = 0;
-  for (const State::Case& c : state_->data) out += (c.w.size() + c.wp.size()) * sizeof(double);
+  for (const State::Case& c : state_->data) out += c.bins_of.size() * sizeof(double);
   return out;
 }
 

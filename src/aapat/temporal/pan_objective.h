@@ -52,6 +52,9 @@ class PanObjective {
   void set(const std::vector<Vec2>& jitter);
   // Frame f's jitter moved to j; only the ages showing f are rebinned.
   void move(int frame, Vec2 j);
+  // The value with frame f at j, the objective left as it was: each kernel
+  // rebinned in a copy (cheaper than a move and a move back).
+  double try_move(int frame, Vec2 j);
 
   // The mean over the cases of each one's steady mean E2.
   double value() const;
@@ -65,6 +68,8 @@ class PanObjective {
  private:
   struct State;
   std::unique_ptr<State> state_;
+  double update(int frame, Vec2 j, bool keep);
+  static double mean_of(const std::vector<std::vector<double>>& e2);
 };
 
 }  // namespace aapat

@@ -65,7 +65,11 @@ TEST(PanObjective, IsEvaluatePansMeanE2AfterEveryMove) {
       const int f = static_cast<int>(rng() % 5);
       const Vec2 before = jitter[size_t(f)];
       jitter[size_t(f)] = {u(rng), u(rng)};
+      const std::vector<double> before_try = objective.case_values();
+      const double tried = objective.try_move(f, jitter[size_t(f)]);
+      EXPECT_EQ(objective.case_values(), before_try);  // a try changes nothing
       objective.move(f, jitter[size_t(f)]);
+      EXPECT_EQ(objective.value(), tried);
       want = expected(jitter);
       const std::vector<double> got = objective.case_values();
       for (size_t c = 0; c < cases.size(); ++c)

@@ -86,16 +86,15 @@ PanSequenceSearchResult search_sequence_under_pans(const PanSequenceSearch& sear
         for (const Vec2 d : {Vec2{step, 0}, Vec2{-step, 0}, Vec2{0, step}, Vec2{0, -step}}) {
           const Vec2 to{at.x + d.x, at.y + d.y};
           if (to.x < lo || to.x > hi || to.y < lo || to.y > hi) continue;
-          objective.move(f, to);
           ++r.tries;
-          const double v = objective.value();
+          const double v = objective.try_move(f, to);
           if (v < best * (1 - 1e-12)) {
+            objective.move(f, to);
             best = v;
             ++r.kept;
             kept_any = 1;
             break;
           }
-          objective.move(f, at);
         }
       }
       // Rebuilt from scratch once a sweep: what the moves' sums drifted.
