@@ -9,7 +9,8 @@
 # scaled sequence has the lower rmse and flicker, and the mean change.
 # Usage: SEED=77 COUNT=10 scripts/jitter-scale-study.sh ue4 1 aapat-taa-8 \
 #   ue4-halton:frames=8 1 0.95 0.9 (docs/temporal.md, "Under motion"). About
-# 4 minutes per 10 scenes and scale on 2 cores.
+# 4 minutes per 10 scenes and scale on 2 cores. TAA_SET="KEY=VALUE ..." passes
+# each item as --taa-set (rectify=none: the linear pipeline, as the pan model).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 aapat=${AAPAT:-$root/build/release/aapat}
@@ -40,6 +41,8 @@ for s in scales:
 def run(scene, sequence, motion):
     args = [aapat, "animate", scene, "--taa", preset, "--sequence", sequence, "--motion", motion,
             "--size", str(size), "--json"] + (["--ratio", ratio] if ratio != "1" else [])
+    for item in os.environ.get("TAA_SET", "").split():
+        args += ["--taa-set", item]
     d = json.loads(subprocess.run(args, check=True, capture_output=True, text=True).stdout)
     return d["rmse"], d["flicker"]
 
@@ -51,7 +54,9 @@ with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as p
             jobs[(i, still, None)] = pool.submit(run, scenes[i], theirs, motion)
             for s in scales:
                 jobs[(i, still, s)] = pool.submit(run, scenes[i], scaled[s], motion)
-print(f"{preset} at ratio {ratio}, seed {seed}: {ours} scaled against {theirs}, {count} scenes")
+settings = f" (--taa-set {os.environ['TAA_SET']})" if os.environ.get("TAA_SET") else ""
+print(f"{preset} at ratio {ratio}{settings}, seed {seed}: {ours} scaled against {theirs}, "
+      f"{count} scenes")
 for s in scales:
     cells = []
     for still in (False, True):

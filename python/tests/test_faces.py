@@ -77,17 +77,22 @@ def test_sequence_pan_rows_are_the_cli_rows(aapat_cli):
     assert again == py and sorted(calls) == [(1, 2), (2, 2)]
 
 
-def test_optimize_sequence_at_8_frames_and_8_starts_equals_the_cli(aapat_cli, tmp_path):
-    out = str(tmp_path / "seq.json")
-    cli = cli_json(aapat_cli, "optimize", "--sequence", "8", "--starts", "8", "-o", out)
-    py = {k: v for k, v in aapat.optimize_sequence(frames=8, starts=8).items()
-          if k not in ("command", "schema")}
+def assert_same_search(py_result, cli, out):
+    """A Python search's dict against the command line's --json and -o file."""
+    py = {k: v for k, v in py_result.items() if k not in ("command", "schema")}
     with open(out) as f:
         assert py["result"].to_json() == f.read()
     assert py.keys() == cli.keys()
     for key in cli:
         if key != "result":
             assert py[key] == cli[key], key
+    return py
+
+
+def test_optimize_sequence_at_8_frames_and_8_starts_equals_the_cli(aapat_cli, tmp_path):
+    out = str(tmp_path / "seq.json")
+    cli = cli_json(aapat_cli, "optimize", "--sequence", "8", "--starts", "8", "-o", out)
+    assert_same_search(aapat.optimize_sequence(frames=8, starts=8), cli, out)
 
 
 def test_optimize_sequence_pan_equals_the_cli(aapat_cli, tmp_path):
@@ -96,15 +101,9 @@ def test_optimize_sequence_pan_equals_the_cli(aapat_cli, tmp_path):
     args = ["--taa", "fsr2", "--ratio", "1.5", "--velocity", "0,0", "--velocity", "0.37,0.21",
             "--step", "0.125", "--min-step", "0.0625", "--acuity", "uniform:step=30"]
     cli = cli_json(aapat_cli, "optimize", "--sequence", "4", *args, "-o", out)
-    py = {k: v for k, v in aapat.optimize_sequence_pan(
+    py = assert_same_search(aapat.optimize_sequence_pan(
         frames=4, taa="fsr2", ratio=1.5, velocities=[(0.0, 0.0), (0.37, 0.21)], step=0.125,
-        min_step=0.0625, acuity="uniform:step=30").items() if k not in ("command", "schema")}
-    with open(out) as f:
-        assert py["result"].to_json() == f.read()
-    assert py.keys() == cli.keys()
-    for key in cli:
-        if key != "result":
-            assert py[key] == cli[key], key
+        min_step=0.0625, acuity="uniform:step=30"), cli, out)
     assert py["mean_e2"] <= py["start_mean_e2"]  # never worse than its start
     assert py["from"] == "halton:b1=2,b2=3,frames=4,start=1"
 
