@@ -182,78 +182,81 @@ struct PanObjective::State {
 PanObjective::PanObjective(int period, std::vector<PanCase> cases, const Metric& metric)
     : state_(std::make_unique<State>(metric)) {
   State& s = *state_;
-  {
-    if (period < 1 || period > kMaxPanFrames)
-      throw ParameterError(
-          "frames", fmt::format(" {}: a pan's evaluation takes 1 to {}", period, kMaxPanFrames));
-    if (cases.empty()) throw ParameterError("velocity", ": give at least one");
-    s.period = period;
-    s.cases = std::move(cases);
-    s.ratio = s.cases[0].model.ratio;
-    check_ratio(s.ratio);
-    s.pixels = pan_phase_pixels(s.ratio);
-    s.kernels_per_case = s.pixels.size() * s.pixels.size() * static_cast<size_t>(period);
-    const auto angles = static_cast<size_t>(metric.angle_count());
-    const double radius = s.cases[0].model.reconstruction.radius();
-    int reach_lo = 0, reach_hi = 0;
-    size_t bytes = 0;
-    for (const PanCase& pc : s.cases) {
-      State::Case& c = s.data.emplace_back();
-      PanModel m = pc.model;
-      m.chain_cut = std::max(m.chain_cut, kPanEvaluationChainCut);
-      c.ages = ema_age_weights(pc.alpha, period, kPanAgeCut);
-      c.chains = pan_chains(m, c.ages.size());
-      std::vector<double> lo(angles, HUGE_VAL), hi(angles, -HUGE_VAL);
-      for (size_t d = 0; d < c.chains.size(); ++d) {
-        double chain_sum = 0;
-        std::array<int, 4> reach{0, 0, 0, 0};
-        for (const PanChainEntry& e : c.chains[d]) {
-          reach = {std::min(reach[0], e.dx), std::max(reach[1], e.dx), std::min(reach[2], e.dy),
-                   std::max(reach[3], e.dy)};
-          reach_lo = std::min({reach_lo, e.dx, e.dy});
-          reach_hi = std::max({reach_hi, e.dx, e.dy});
-          chain_sum += e.c;
-          const double sx = e.dx + static_cast<double>(d) * m.velocity.x,
-                       sy = e.dy + static_cast<double>(d) * m.velocity.y;
-          for (size_t a = 0; a < angles; ++a) {
-            const double p =
-                metric.cos(static_cast<int>(a)) * sy - metric.sin(static_cast<int>(a)) * sx;
-            lo[a] = std::min(lo[a], p);
-            hi[a] = std::max(hi[a], p);
-          }
+  if (period < 1 || period > kMaxPanFrames)
+    throw ParameterError(
+        "frames", fmt::format(" {}: a pan's evaluation takes 1 to {}", period, kMaxPanFrames));
+  if (cases.empty()) throw ParameterError("velocity", ": give at least one");
+  for (const PanCase& c : cases)
+    if (c.model.ratio != cases[0].model.ratio ||
+        c.model.reconstruction.name() != cases[0].model.reconstruction.name())
+      throw Error("the pan objective's cases must share the ratio and the reconstruction filter");
+  s.period = period;
+  s.cases = std::move(cases);
+  s.ratio = s.cases[0].model.ratio;
+  check_ratio(s.ratio);
+  s.pixels = pan_phase_pixels(s.ratio);
+  s.kernels_per_case = s.pixels.size() * s.pixels.size() * static_cast<size_t>(period);
+  const auto angles = static_cast<size_t>(metric.angle_count());
+  const double radius = s.cases[0].model.reconstruction.radius();
+  int reach_lo = 0, reach_hi = 0;
+  size_t bytes = 0;
+  for (const PanCase& pc : s.cases) {
+    State::Case& c = s.data.emplace_back();
+    PanModel m = pc.model;
+    m.chain_cut = std::max(m.chain_cut, kPanEvaluationChainCut);
+    c.ages = ema_age_weights(pc.alpha, period, kPanAgeCut);
+    c.chains = pan_chains(m, c.ages.size());
+    std::vector<double> lo(angles, HUGE_VAL), hi(angles, -HUGE_VAL);
+    for (size_t d = 0; d < c.chains.size(); ++d) {
+      double chain_sum = 0;
+      std::array<int, 4> reach{0, 0, 0, 0};
+      for (const PanChainEntry& e : c.chains[d]) {
+        reach = {std::min(reach[0], e.dx), std::max(reach[1], e.dx), std::min(reach[2], e.dy),
+                 std::max(reach[3], e.dy)};
+        reach_lo = std::min({reach_lo, e.dx, e.dy});
+        reach_hi = std::max({reach_hi, e.dx, e.dy});
+        chain_sum += e.c;
+        const double sx = e.dx + static_cast<double>(d) * m.velocity.x,
+                     sy = e.dy + static_cast<double>(d) * m.velocity.y;
+        for (size_t a = 0; a < angles; ++a) {
+          const double p =
+              metric.cos(static_cast<int>(a)) * sy - metric.sin(static_cast<int>(a)) * sx;
+          lo[a] = std::min(lo[a], p);
+          hi[a] = std::max(hi[a], p);
         }
-        c.reach.push_back(reach);
-        c.total += c.ages[d] * chain_sum;
       }
-      for (size_t a = 0; a < angles; ++a) {
-        // A sample lies within the radius (render pixels) of its row and
-        // column's centre, whose display pixel the chain reaches.
-        const double margin = s.ratio * (radius + 1) *
-                                  (std::abs(metric.cos(static_cast<int>(a))) +
-                                   std::abs(metric.sin(static_cast<int>(a)))) +
-                              kPanBin;
-        const auto first = static_cast<long>(std::floor((lo[a] - margin) / kPanBin));
-        const auto last = static_cast<long>(std::floor((hi[a] + margin) / kPanBin));
-        c.first.push_back(first);
-        c.begin.push_back(c.bins);
-        c.bins += static_cast<size_t>(last - first + 1);
-      }
-      bytes += 2 * sizeof(double) * c.bins * s.kernels_per_case;
+      c.reach.push_back(reach);
+      c.total += c.ages[d] * chain_sum;
     }
-    if (bytes > kMaxPanObjectiveBytes)
-      throw Error(fmt::format(
-          "the pan search's bins would take {:.1f} GiB (at most {:.0f}): use fewer velocities, a "
-          "coarser acuity table (uniform:step=4) or a shorter sequence",
-          static_cast<double>(bytes) / (1 << 30),
-          static_cast<double>(kMaxPanObjectiveBytes) / (1 << 30)));
-    for (State::Case& c : s.data) {
-      c.bins_of.assign(2 * c.bins * s.kernels_per_case, 0.0);
-      c.e2.assign(s.kernels_per_case, 0.0);
+    for (size_t a = 0; a < angles; ++a) {
+      // A sample lies within the radius (render pixels) of its row and
+      // column's centre, whose display pixel the chain reaches.
+      const double margin = s.ratio * (radius + 1) *
+                                (std::abs(metric.cos(static_cast<int>(a))) +
+                                 std::abs(metric.sin(static_cast<int>(a)))) +
+                            kPanBin;
+      const auto first = static_cast<long>(std::floor((lo[a] - margin) / kPanBin));
+      const auto last = static_cast<long>(std::floor((hi[a] + margin) / kPanBin));
+      c.first.push_back(first);
+      c.begin.push_back(c.bins);
+      c.bins += static_cast<size_t>(last - first + 1);
     }
-    const auto [pmin, pmax] = std::minmax_element(s.pixels.begin(), s.pixels.end());
-    s.coord_lo = *pmin + reach_lo;
-    s.coord_hi = *pmax + reach_hi;
+    bytes += 2 * sizeof(double) * c.bins * s.kernels_per_case;
   }
+  if (bytes > kMaxPanObjectiveBytes)
+    throw Error(fmt::format(
+        "the pan search's bins would take {:.1f} GiB (at most {:.0f} GiB): give fewer "
+        "--velocity, a coarser --acuity (uniform:step=4 takes a quarter of uniform:step=1's) "
+        "or a shorter sequence",
+        static_cast<double>(bytes) / (1 << 30),
+        static_cast<double>(kMaxPanObjectiveBytes) / (1 << 30)));
+  for (State::Case& c : s.data) {
+    c.bins_of.assign(2 * c.bins * s.kernels_per_case, 0.0);
+    c.e2.assign(s.kernels_per_case, 0.0);
+  }
+  const auto [pmin, pmax] = std::minmax_element(s.pixels.begin(), s.pixels.end());
+  s.coord_lo = *pmin + reach_lo;
+  s.coord_hi = *pmax + reach_hi;
 }
 
 PanObjective::~PanObjective() = default;

@@ -92,6 +92,9 @@ TEST(PanObjective, RefusesWhatItCannotHold) {
   EXPECT_THROW(PanObjective(0, {c}, metric), ParameterError);
   EXPECT_THROW(PanObjective(kMaxPanFrames + 1, {c}, metric), ParameterError);
   EXPECT_THROW(PanObjective(4, {}, metric), ParameterError);
+  PanCase other = c;
+  other.model.ratio = 2;
+  EXPECT_THROW(PanObjective(4, {c, other}, metric), Error);  // one ratio for all
   PanObjective objective(4, {c}, metric);
   EXPECT_THROW(objective.move(0, {0, 0}), Error);  // nothing set yet
   EXPECT_THROW(objective.set({{0, 0}}), Error);    // one frame of four
