@@ -85,17 +85,27 @@ std::vector<std::vector<PanChainEntry>> pan_chains(const PanModel& m, size_t age
   return out;
 }
 
-Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double>& age_weights,
-                  int k, std::array<int, 2> pixel) {
+namespace {
+
+// What a pan model takes: a valid sequence of one-pixel frames, a valid ratio.
+void check_pan_input(const Sequence& s, const PanModel& m) {
   check_ratio(m.ratio);
   validate(s);
   if (s.frames[0].footprint.size != 1 || s.frames[0].set_count() != 1)
     throw Error(fmt::format("sequence {}: a pan model jitters one-pixel frames", s.name));
+}
+
+// pan_kernel on chains already stepped (pan_chains(m, age_weights.size())):
+// they depend on neither the frame nor the pixel, so an evaluation steps
+// them once for all its kernels.
+Kernel kernel_on_chains(const Sequence& s, const PanModel& m,
+                        const std::vector<double>& age_weights,
+                        const std::vector<std::vector<PanChainEntry>>& chains, int k,
+                        std::array<int, 2> pixel) {
   const Filter& h = m.reconstruction;
   const int period = s.period();
   Kernel out;
   UpscaledSamples frame;  // one frame's reconstruction at one display pixel
-  const std::vector<std::vector<PanChainEntry>> chains = pan_chains(m, age_weights.size());
   // One frame's render sample reaches the pixel through many chain offsets:
   // its weights are summed into one sample (keyed by its position on a
   // 1/1024-pixel grid; two render samples are a render pixel apart), which
@@ -139,6 +149,14 @@ Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double
     }
   }
   return out;
+}
+
+}  // namespace
+
+Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double>& age_weights,
+                  int k, std::array<int, 2> pixel) {
+  check_pan_input(s, m);
+  return kernel_on_chains(s, m, age_weights, pan_chains(m, age_weights.size()), k, pixel);
 }
 
 std::vector<int> pan_phase_pixels(double ratio) {
@@ -252,12 +270,13 @@ double binned_flicker(const Binned& from, const Binned& to) {
 }  // namespace
 
 PanReport evaluate_pan(const Sequence& s, PanModel m, double alpha, const Metric& metric) {
-  validate(s);
+  check_pan_input(s, m);
   if (s.period() > kMaxPanFrames)
     throw Error(fmt::format("sequence {}: {} frames; a pan's evaluation takes at most {}", s.name,
                             s.period(), kMaxPanFrames));
   m.chain_cut = std::max(m.chain_cut, kPanEvaluationChainCut);
   const std::vector<double> ages = ema_age_weights(alpha, s.period(), kPanAgeCut);
+  const std::vector<std::vector<PanChainEntry>> chains = pan_chains(m, ages.size());
   const std::vector<int> pixels = pan_phase_pixels(m.ratio);
   const int period = s.period();
   const size_t count = pixels.size() * pixels.size();
@@ -277,10 +296,11 @@ PanReport evaluate_pan(const Sequence& s, PanModel m, double alpha, const Metric
       }
       flicker[i] += combine_over_angles(values, metric.norm()) / period;
     };
-    const std::vector<Binned> first = bin_kernel(pan_kernel(s, m, ages, 0, pixel), metric);
+    const std::vector<Binned> first =
+        bin_kernel(kernel_on_chains(s, m, ages, chains, 0, pixel), metric);
     std::vector<Binned> before = first;
     for (int k = 1; k < period; ++k) {
-      std::vector<Binned> now = bin_kernel(pan_kernel(s, m, ages, k, pixel), metric);
+      std::vector<Binned> now = bin_kernel(kernel_on_chains(s, m, ages, chains, k, pixel), metric);
       add_frame(now, before);
       before = std::move(now);
     }
