@@ -204,12 +204,9 @@ called as each step size finishes, or None.)doc"));
           seqs.push_back(py::isinstance<Sequence>(q)
                              ? q.cast<Sequence>()
                              : resolve_sequence_for_ratio(q.cast<std::string>(), ratio, nullptr));
-        std::vector<Vec2> vs;
-        if (!velocities) {
-          for (const std::string_view v : kPanVelocities) vs.push_back(parse_velocity(v));
-        } else {
+        std::vector<Vec2> vs = velocities ? std::vector<Vec2>{} : default_pan_velocities();
+        if (velocities)
           for (const auto& [dx, dy] : *velocities) vs.push_back({dx, dy});
-        }
         const Metric metric = make_metric(objective, filter, acuity, norm);
         const auto report = progress_of(progress);
         const auto rows = interruptible([&] { return evaluate_pans(seqs, t, vs, metric, report); });

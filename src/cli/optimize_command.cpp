@@ -4,7 +4,6 @@
 
 #include <tbb/task_arena.h>
 
-#include <iostream>
 #include <memory>
 #include <ostream>
 
@@ -117,6 +116,16 @@ struct OptimizeOptions {
   double step = PanSequenceSearch{}.step, min_step = PanSequenceSearch{}.min_step;
 };
 
+// A jitter shorter than FSR 2's phase count at the ratio works, but is not
+// what an upscaler expects: a warning, not an error.
+void warn_short_of_upscaler_rule(int frames, double ratio) {
+  if (frames < upscaler_phase_count(ratio))
+    warnings() << fmt::format(
+        "aapat: warning: --sequence {} is shorter than the upscaler's rule int(8 R^2) = {} at "
+        "ratio {:g} (FSR 2's ffxFsr2GetJitterPhaseCount)\n",
+        frames, upscaler_phase_count(ratio), ratio);
+}
+
 // `optimize --sequence K --taa PRESET`: the compass search on the pan model.
 void run_pan_search(const OptimizeOptions& o, std::ostream& out) {
   if (o.samples_per_frame != 1)
@@ -129,11 +138,7 @@ void run_pan_search(const OptimizeOptions& o, std::ostream& out) {
   s.step = o.step;
   s.min_step = o.min_step;
   s.jitter_bound = o.jitter_bound;
-  if (o.ratio_given && o.sequence < upscaler_phase_count(o.ratio))
-    warnings() << fmt::format(
-        "aapat: warning: --sequence {} is shorter than the upscaler's rule int(8 R^2) = {} at "
-        "ratio {:g} (FSR 2's ffxFsr2GetJitterPhaseCount)\n",
-        o.sequence, upscaler_phase_count(o.ratio), o.ratio);
+  if (o.ratio_given) warn_short_of_upscaler_rule(o.sequence, o.ratio);
   PanSequenceSearchResult r;
   try {
     s.start = pan_search_start(o.sequence, o.from);
@@ -194,11 +199,7 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   if (o.ratio_given) {
     s.ratio = o.ratio;
     s.reconstruction = make_filter(o.reconstruct);
-    if (s.frames < upscaler_phase_count(o.ratio))
-      std::cerr << fmt::format(
-          "aapat: warning: --sequence {} is shorter than the upscaler's rule int(8 R^2) = {} at "
-          "ratio {:g} (FSR 2's ffxFsr2GetJitterPhaseCount)\n",
-          s.frames, upscaler_phase_count(o.ratio), o.ratio);
+    warn_short_of_upscaler_rule(s.frames, o.ratio);
   }
   SequenceSearchResult r;
   try {

@@ -341,6 +341,12 @@ Vec2 parse_velocity(std::string_view text) {
   return {v[0], v[1]};
 }
 
+std::vector<Vec2> default_pan_velocities() {
+  std::vector<Vec2> out;
+  for (const std::string_view v : kPanVelocities) out.push_back(parse_velocity(v));
+  return out;
+}
+
 std::vector<std::vector<PanReport>> evaluate_pans(const std::vector<Sequence>& sequences,
                                                   const EngineTaa& taa,
                                                   const std::vector<Vec2>& velocities,

@@ -84,6 +84,9 @@ double binned_e1_squared(std::span<const double> w, std::span<const double> p, c
 // pixels (a whole-pixel pan keeps every old sample's place in its pixel).
 inline constexpr std::array<std::string_view, 5> kPanVelocities{"0,0", "0.37,0.21", "-0.53,1.05",
                                                                 "1.33,-0.02", "0.23,-0.61"};
+// kPanVelocities parsed: what an evaluation or a search takes when given none.
+std::vector<Vec2> default_pan_velocities();
+
 // The fastest pan evaluated, per axis, and the longest sequence (each frame
 // is a kernel of up to a few hundred thousand samples per display phase).
 inline constexpr double kMaxPanSpeed = 16;

@@ -12,17 +12,6 @@
 
 namespace aapat {
 
-namespace {
-
-std::vector<Vec2> velocities_of(const PanSequenceSearch& s) {
-  if (!s.velocities.empty()) return s.velocities;
-  std::vector<Vec2> out;
-  for (const std::string_view v : kPanVelocities) out.push_back(parse_velocity(v));
-  return out;
-}
-
-}  // namespace
-
 Sequence pan_search_start(int frames, const std::string& from) {
   if (frames < 1 || frames > kMaxPanFrames)
     throw ParameterError("sequence", fmt::format(" {}: a pan's evaluation takes 1 to {} frames",
@@ -59,7 +48,7 @@ PanSequenceSearchResult search_sequence_under_pans(const PanSequenceSearch& sear
                                                    const ItemsProgress& progress) {
   validate(search);
   PanSequenceSearchResult r;
-  r.velocities = velocities_of(search);
+  r.velocities = search.velocities.empty() ? default_pan_velocities() : search.velocities;
   std::vector<PanCase> cases;
   for (const Vec2 v : r.velocities)
     cases.push_back({PanModel{search.taa.ratio, search.taa.reconstruction, search.taa.history, v},
