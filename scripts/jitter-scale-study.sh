@@ -10,7 +10,9 @@
 # Usage: SEED=77 COUNT=10 scripts/jitter-scale-study.sh ue4 1 aapat-taa-8 \
 #   ue4-halton:frames=8 1 0.95 0.9 (docs/temporal.md, "Under motion"). About
 # 4 minutes per 10 scenes and scale on 2 cores. TAA_SET="KEY=VALUE ..." passes
-# each item as --taa-set (rectify=none: the linear pipeline, as the pan model).
+# each item as --taa-set (rectify=none: the linear pipeline, as the pan model);
+# REVERSE=1 pans each scene the other way. Under each scale's line, the change
+# per scene (rmse / flicker, %), moving then still.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 aapat=${AAPAT:-$root/build/release/aapat}
@@ -26,6 +28,8 @@ preset, ratio, ours, theirs = sys.argv[1:5]
 scales = [float(s) for s in sys.argv[5:]]
 count, seed, size = int(os.environ.get("COUNT", 10)), int(os.environ.get("SEED", 77)), 64
 scenes, pans = random_scenes.make(count, seed, work, size)
+if os.environ.get("REVERSE") == "1":
+    pans = [random_scenes.reverse(p) for p in pans]
 
 # The sequence's file: a catalog name is data/sequences/NAME.json.
 catalog = os.path.join(os.environ["ROOT"], "data", "sequences", ours + ".json")
@@ -55,10 +59,11 @@ with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as p
             for s in scales:
                 jobs[(i, still, s)] = pool.submit(run, scenes[i], scaled[s], motion)
 settings = f" (--taa-set {os.environ['TAA_SET']})" if os.environ.get("TAA_SET") else ""
+settings += ", pans reversed" if os.environ.get("REVERSE") == "1" else ""
 print(f"{preset} at ratio {ratio}{settings}, seed {seed}: {ours} scaled against {theirs}, "
       f"{count} scenes")
 for s in scales:
-    cells = []
+    cells, per_scene = [], []
     for still in (False, True):
         rmse = flicker = 0
         d_rmse = d_flicker = 0.0
@@ -68,7 +73,9 @@ for s in scales:
             flicker += a[1] < b[1]
             d_rmse += (a[0] / b[0] - 1) / count
             d_flicker += (a[1] / b[1] - 1) / count
+            per_scene.append(f"{100 * (a[0] / b[0] - 1):+.1f}/{100 * (a[1] / b[1] - 1):+.1f}")
         cells.append(f"{'still' if still else 'moving'}: rmse {rmse}/{count} "
                      f"({100 * d_rmse:+.2f} %), flicker {flicker}/{count} ({100 * d_flicker:+.2f} %)")
     print(f"x{s}: " + "; ".join(cells))
+    print(f"  moving {' '.join(per_scene[:count])}; still {' '.join(per_scene[count:])}")
 PY

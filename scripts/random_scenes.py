@@ -29,3 +29,9 @@ def make(count, seed, folder, size=64):
         scenes.append(path)
         pans.append(f"pan:dx={rng.uniform(-1.5, 1.5):.3f},dy={rng.uniform(-1.5, 1.5):.3f}")
     return scenes, pans
+
+
+def reverse(pan):
+    """The opposite pan: pan:dx=-DX,dy=-DY for pan:dx=DX,dy=DY."""
+    return "pan:" + ",".join(f"{key}={-float(value):.3f}" for key, value in
+                             (item.split("=") for item in pan[len("pan:"):].split(",")))
