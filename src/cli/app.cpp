@@ -25,6 +25,7 @@
 #include "aapat/work/checkpoint.h"
 #include "aapat/work/work_items.h"
 #include "cli/commands.h"
+#include "cli/progress.h"
 
 namespace aapat {
 namespace {
@@ -120,7 +121,8 @@ std::string file_digest(std::string_view arg) {
 }
 
 // The command a checkpoint belongs to: the arguments less those that do not
-// change a result (--threads, --checkpoint, --fresh-checkpoint), each file
+// change a result (--threads, --checkpoint, --fresh-checkpoint,
+// --progress-lines), each file
 // argument's content digest, and the version.
 std::string fingerprint(int argc, const char* const* argv) {
   std::string text = "aapat " AAPAT_VERSION;
@@ -131,7 +133,7 @@ std::string fingerprint(int argc, const char* const* argv) {
       continue;
     }
     if (arg.starts_with("--threads=") || arg.starts_with("--checkpoint=") ||
-        arg == "--fresh-checkpoint")
+        arg == "--fresh-checkpoint" || arg == "--progress-lines")
       continue;
     text += " ";
     text += shell_quoted(arg);
@@ -243,6 +245,11 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
                  "threads for every parallel step, before the command (0: all cores; the "
                  "results are the same for any count)")
       ->check(CLI::Range(0, kMaxThreads));
+  // A long run in the background shows how far it got in its log.
+  bool progress_lines = false;
+  app.add_flag("--progress-lines", progress_lines,
+               "print progress on stderr as a line per tenth of the job, terminal or not (a run "
+               "in the background with its stderr in a log); before the command");
   // A long run keeps its finished work items, and resumes from them.
   std::string checkpoint_path;
   auto* checkpoint_option =
@@ -315,6 +322,13 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   struct ResetWarnings {
     ~ResetWarnings() { g_warnings = nullptr; }
   } reset;
+  // Lines for this command only: the next command in the same process (a
+  // test, Python) draws its bars as before.
+  struct RestoreProgress {
+    bool lines = Progress::printing_lines();
+    ~RestoreProgress() { Progress::print_lines(lines); }
+  } restore_progress;
+  if (progress_lines) Progress::print_lines();
   // An engine's own threads (an MPI rank's main thread) come on top of --threads.
   std::optional<tbb::global_control> limit;
   if (threads > 0 || items.service_threads() > 0)

@@ -438,6 +438,27 @@ TEST(CliPoints, GlobalThreadsGiveTheSameOutput) {
   EXPECT_EQ(run({"--threads", "-1", "list"}).code, 2);
 }
 
+// --progress-lines: a line on stderr per tenth of the job although stderr is
+// not a terminal here, the same output, and only for that command: the next
+// one, without it, prints nothing on stderr (not a terminal).
+TEST(Cli, ProgressLinesAreForOneCommandAndChangeNoOutput) {
+  const std::vector<std::string> args{"optimize", "--sequence", "4", "--starts",
+                                      "2",        "--seed",     "1"};
+  std::vector<std::string> lines_args{"--progress-lines"};
+  lines_args.insert(lines_args.end(), args.begin(), args.end());
+  ::testing::internal::CaptureStderr();
+  const CliRun with = run(lines_args);
+  const std::string lines = ::testing::internal::GetCapturedStderr();
+  ::testing::internal::CaptureStderr();
+  const CliRun without = run(args);
+  const std::string none = ::testing::internal::GetCapturedStderr();
+  ASSERT_EQ(with.code, 0) << with.err;
+  EXPECT_EQ(with.out, without.out);
+  EXPECT_NE(lines.find("sequence: 1/2 best J"), std::string::npos) << lines;
+  EXPECT_NE(lines.find("sequence: 2/2 best J"), std::string::npos) << lines;
+  EXPECT_EQ(none, "");
+}
+
 // --fast: the non-uniform FFT, its bound in the JSON, its radial profile the
 // exact one's within that bound; an odd size is refused by name.
 TEST(CliPoints, FastSpectrumMatchesTheExactOneWithinItsBound) {

@@ -378,6 +378,14 @@ TEST(Hardening, ACheckpointKnowsItsInputFiles) {
   const CliRun first = run(command);
   ASSERT_EQ(first.code, kExitOk) << first.err;
   EXPECT_EQ(run(command).out, first.out);  // unchanged: resumed, the same answer
+  // --threads and --progress-lines change no result: the checkpoint resumes.
+  std::vector<std::string> lines = command;
+  lines.insert(lines.begin(), {"--progress-lines", "--threads", "1"});
+  ::testing::internal::CaptureStderr();  // the progress lines
+  const CliRun resumed = run(lines);
+  ::testing::internal::GetCapturedStderr();
+  ASSERT_EQ(resumed.code, kExitOk) << resumed.err;
+  EXPECT_EQ(resumed.out, first.out);
   write("edited.csv", "0,1\n45,5\n90,1\n");
   expect_error(run(command), kExitError, "belongs to another command");
   // Asked to, it starts afresh: the answer of a run that never had a checkpoint.

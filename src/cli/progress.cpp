@@ -10,8 +10,12 @@ namespace {
 bool g_lines = false;
 }  // namespace
 
-void Progress::print_lines() {
-  g_lines = true;
+void Progress::print_lines(bool on) {
+  g_lines = on;
+}
+
+bool Progress::printing_lines() {
+  return g_lines;
 }
 
 Progress::Progress(std::string label)

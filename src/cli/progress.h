@@ -1,6 +1,6 @@
 // A one-line progress bar on a terminal's stderr; silent when stderr is not a
 // terminal (piped or redirected), so logs and scripts stay clean; lines when
-// asked (an MPI job's rank 0).
+// asked (--progress-lines, or an MPI job's rank 0).
 #pragma once
 
 #include <string>
@@ -17,8 +17,11 @@ class Progress {
   // The bar as a library job's progress callback.
   StudyProgress callback();
   // From now on every bar is printed as lines (one per tenth of the job),
-  // terminal or not: rank 0 of an MPI job, whose stderr mpirun forwards.
-  static void print_lines();
+  // terminal or not (`on`), or drawn as a bar again: rank 0 of an MPI job,
+  // whose stderr mpirun forwards, and --progress-lines, for a run in the
+  // background whose stderr goes to a log.
+  static void print_lines(bool on = true);
+  static bool printing_lines();
 
  private:
   std::string label_;
