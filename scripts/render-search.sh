@@ -4,21 +4,23 @@
 # PRESET --ratio R --json, 64x64, 32 frames after 64 of warm-up, clamping
 # included) on COUNT scene files of random polygons and circles
 # (scripts/random_scenes.py, seeded by SEED), each panned at its own random
-# velocity and (BOTH_WAYS=1, the default) at its opposite. Against BASE (the engine's own sequence), per scene
-# a = log(rmse / base rmse), b = log(flicker / base flicker), and the objective
-# is the mean over scenes of a + b + LOSS (max(0, a) + max(0, b)): a scene
-# lost costs more than one won gains. Each frame in turn tries STEP in x and y
-# both ways and keeps the first try that lowers the objective; a sweep that
-# keeps none halves the step, down to MIN_STEP; MAX_TRIES (0: none) ends it
-# early; START_ONLY=1 writes the start to OUT and renders nothing.
-# Deterministic: the renders are.
+# velocity and (BOTH_WAYS=1, the default) at the opposite one. Against BASE
+# (the engine's own sequence), per render a = log(rmse / BASE's rmse) and
+# b = log(flicker / BASE's flicker); the objective is their mean
+# a + b + LOSS (max(0, a) + max(0, b)): a scene lost costs more than one won
+# gains. Each frame in turn tries STEP in x and y both ways and keeps the
+# first try that lowers the objective; a sweep that keeps none halves the
+# step, down to MIN_STEP; MAX_TRIES (0: none) ends it early; START_ONLY=1
+# writes the start to OUT and renders nothing. Deterministic: the renders
+# are. OUT is rewritten (whole, then renamed) at each improvement.
 # START: a sequence file, or `lattice`: the offsets at which display pixel
-# centres fall in a render pixel (-1/3, 0, 1/3 at R = 1.5), every pair once
-# in a Latin order (n consecutive frames take each offset once per axis),
-# repeated to the length of BASE.
-# Usage: SEED=1001 COUNT=40 LOSS=0.5 scripts/render-search.sh fsr2 1.5 lattice \
-#   halton:frames=18 OUT.json (docs/temporal.md, "A jitter searched on rendered
-# error"). About 5 minutes per sweep of 18 frames on 2 cores.
+# centres fall in a render pixel (-1/3, 0, 1/3 at R = 1.5), frame k at
+# (c[k mod n], c[(k + floor(k / n)) mod n]) (n consecutive frames take each
+# offset once per axis), repeated to the length of BASE.
+# Usage: SEED=1001 COUNT=40 scripts/render-search.sh fsr2 1.5 lattice \
+#   halton:frames=18 OUT.json (docs/temporal.md, "Under motion": "A search on
+# the renders themselves"). On 2 cores with the references cached, a try
+# renders 2 COUNT scenes (COUNT with BOTH_WAYS=0) at about 0.1 s each.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 aapat=${AAPAT:-$root/build/release/aapat}
