@@ -41,12 +41,7 @@ def pan_model(sequences, velocities):
     return {r["sequence"]: [v["mean_e2"] for v in r["velocities"]] for r in d["rows"]}
 
 def run(scene, preset, ratio, sequence, motion, *settings):
-    args = [aapat, "animate", scene, "--taa", preset, "--sequence", sequence, "--motion", motion,
-            "--size", str(size), "--json", *settings]
-    if ratio != "1":
-        args += ["--ratio", ratio]
-    d = json.loads(subprocess.run(args, check=True, capture_output=True, text=True).stdout)
-    return d["rmse"], d["flicker"]
+    return random_scenes.rendered(aapat, scene, preset, ratio, sequence, motion, size, settings)
 
 jobs = {}
 with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:

@@ -19,7 +19,7 @@ aapat=${AAPAT:-$root/build/release/aapat}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 ROOT="$root" AAPAT="$aapat" WORK="$work" PYTHONPATH="$root/scripts" /usr/bin/python3 - "$@" <<'PY'
-import concurrent.futures, json, os, subprocess, sys
+import concurrent.futures, json, os, sys
 
 import random_scenes
 
@@ -42,13 +42,11 @@ for s in scales:
                    "family": "P(1,1,1)", "jitter": [[x * s, y * s] for x, y in base["jitter"]]}, f)
     scaled[s] = path
 
+taa_set = []
+for item in os.environ.get("TAA_SET", "").split():
+    taa_set += ["--taa-set", item]
 def run(scene, sequence, motion):
-    args = [aapat, "animate", scene, "--taa", preset, "--sequence", sequence, "--motion", motion,
-            "--size", str(size), "--json"] + (["--ratio", ratio] if ratio != "1" else [])
-    for item in os.environ.get("TAA_SET", "").split():
-        args += ["--taa-set", item]
-    d = json.loads(subprocess.run(args, check=True, capture_output=True, text=True).stdout)
-    return d["rmse"], d["flicker"]
+    return random_scenes.rendered(aapat, scene, preset, ratio, sequence, motion, size, taa_set)
 
 jobs = {}
 with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:

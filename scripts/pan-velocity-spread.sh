@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # How much does the pan velocity alone decide which jitter wins? The linear
 # model of a pan (aapat sequence pan under TAA at RATIO, by default FSR 2 at
-# 1.5; uniform:step=4 acuity) at COUNT random velocities (uniform up to 1.5 pixels per frame per
-# axis, as the unseen scenes' pans; seeded by SEED), each sequence's steady
-# mean E2 against the first's: at how many velocities it is lower, the mean
-# change, and the lowest and highest. A Markdown table on stdout.
-# Usage: SEED=7 COUNT=24 scripts/pan-velocity-spread.sh halton aapat-upscale-1.5 \
-#   r2 sobol:seed=1 (docs/temporal.md, "Under motion"; about 2 minutes on 2 cores);
-# TAA=ue4 RATIO=1 for Unreal Engine 4's.
+# 1.5; uniform:step=4 acuity) at COUNT random velocities (uniform up to 1.5
+# pixels per frame per axis, as the unseen scenes' pans; seeded by SEED),
+# each sequence's steady mean E2 against the first's: at how many velocities
+# it is lower, the mean change, and the lowest and highest. A Markdown table
+# on stdout. Usage: SEED=7 COUNT=24 scripts/pan-velocity-spread.sh halton \
+#   aapat-upscale-1.5 r2 sobol:seed=1 (docs/temporal.md, "Under motion";
+# about 2 minutes on 2 cores); TAA=ue4 RATIO=1 for Unreal Engine 4's.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 aapat=${AAPAT:-$root/build/release/aapat}

@@ -44,15 +44,10 @@ if os.environ.get("BOTH_WAYS", "1") == "1":
     # search on one-way pans learns the set's mean direction (docs/temporal.md).
     scenes, pans = scenes + scenes, pans + [random_scenes.reverse(p) for p in pans]
 
-def run(scene, sequence, motion):
-    args = [aapat, "animate", scene, "--taa", preset, "--sequence", sequence, "--motion", motion,
-            "--size", "64", "--json"] + (["--ratio", ratio] if ratio != "1" else [])
-    d = json.loads(subprocess.run(args, check=True, capture_output=True, text=True).stdout)
-    return d["rmse"], d["flicker"]
-
 pool = concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2)
 def measure(sequence):
-    return list(pool.map(lambda i: run(scenes[i], sequence, pans[i]), range(len(scenes))))
+    return list(pool.map(lambda i: random_scenes.rendered(aapat, scenes[i], preset, ratio, sequence,
+                                                          pans[i]), range(len(scenes))))
 
 def objective(m):
     total = 0.0

@@ -122,8 +122,7 @@ std::string file_digest(std::string_view arg) {
 
 // The command a checkpoint belongs to: the arguments less those that do not
 // change a result (--threads, --checkpoint, --fresh-checkpoint,
-// --progress-lines), each file
-// argument's content digest, and the version.
+// --progress-lines), each file argument's content digest, and the version.
 std::string fingerprint(int argc, const char* const* argv) {
   std::string text = "aapat " AAPAT_VERSION;
   for (int i = 1; i < argc; ++i) {
