@@ -67,8 +67,9 @@ void bind_temporal(py::module_& m) {
       },
       py::arg("spec"), py::arg("pattern") = py::none(),
       R"doc(A sequence: a generator spec ("halton:frames=8", "r2:frames=16",
-"sobol:frames=16,seed=1", "msaa-alternating:samples=2,frames=2", "split:frames=K"
-with pattern=...), a name of the optimized ones ("aapat-taa-8") or a file.)doc");
+"sobol:frames=16,seed=1", "random:frames=16,seed=1", "display-lattice:ratio=1.5",
+"msaa-alternating:samples=2,frames=2", "split:frames=K" with pattern=...; `aapat list`
+has them all), a name of the optimized ones ("aapat-taa-8") or a file.)doc");
 
   m.def(
       "sequence_eval",

@@ -13,10 +13,10 @@
 # step, down to MIN_STEP; MAX_TRIES (0: none) ends it early; START_ONLY=1
 # writes the start to OUT and renders nothing. Deterministic: the renders
 # are. OUT is rewritten (whole, then renamed) at each improvement.
-# START: a sequence file, or `lattice`: the offsets at which display pixel
-# centres fall in a render pixel (-1/3, 0, 1/3 at R = 1.5), frame k at
-# (c[k mod n], c[(k + floor(k / n)) mod n]) (n consecutive frames take each
-# offset once per axis), repeated to the length of BASE.
+# START: a sequence file or generator spec of BASE's length, or `lattice`:
+# the display-phase lattice as long as BASE (`display-lattice:ratio=RATIO`,
+# docs/temporal.md: the offsets at which display pixel centres fall in a
+# render pixel, -1/3, 0, 1/3 at R = 1.5, in a Latin order).
 # Usage: SEED=1001 COUNT=40 scripts/render-search.sh fsr2 1.5 lattice \
 #   halton:frames=18 OUT.json (docs/temporal.md, "Under motion": "A search on
 # the renders themselves"). On 2 cores with the references cached, a try
@@ -27,7 +27,7 @@ aapat=${AAPAT:-$root/build/release/aapat}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 AAPAT="$aapat" WORK="$work" PYTHONPATH="$root/scripts" /usr/bin/python3 - "$@" <<'PY'
-import concurrent.futures, fractions, json, math, os, subprocess, sys
+import concurrent.futures, json, math, os, subprocess, sys
 
 import random_scenes
 
@@ -59,22 +59,15 @@ def wins(m):
     return (sum(r < rb for (r, _), (rb, _) in zip(m, base)),
             sum(f < fb for (_, f), (_, fb) in zip(m, base)))
 
-def display_offsets(r):
-    """The offsets from a render pixel's centre at which display pixel centres
-    fall (display x sits at render (x - (R - 1)/2)/R)."""
-    r = fractions.Fraction(r).limit_denominator(16)
-    phases = sorted({((x - (r - 1) / 2) / r) % 1 for x in range(4 * r.numerator)})
-    return [float(p - fractions.Fraction(1, 2)) for p in phases]
-
 frames = len(json.loads(subprocess.run([aapat, "sequence", "generate", base_spec, "-o", "-"],
                                       check=True, capture_output=True, text=True).stdout)["jitter"])
-if start == "lattice":
-    c = display_offsets(ratio)
-    n = len(c)
-    lattice = [(c[k % n], c[(k + k // n) % n]) for k in range(n * n)]
-    jitter = [lattice[k % len(lattice)] for k in range(frames)]
-else:
-    jitter = [tuple(p) for p in json.load(open(start))["jitter"]]
+if start == "lattice":  # the library's display-phase lattice, as long as BASE
+    start = f"display-lattice:ratio={ratio},frames={frames}"
+jitter = [tuple(p) for p in json.loads(subprocess.run(
+    [aapat, "sequence", "generate", start, "-o", "-"], check=True, capture_output=True,
+    text=True).stdout)["jitter"]]
+if len(jitter) != frames:
+    sys.exit(f"render-search: START has {len(jitter)} frames, BASE {frames}")
 
 def save(path, pts, value=None, m=None, tries=0):
     """Writes a sequence file (whole, then renamed); with a measurement, its

@@ -345,8 +345,9 @@ std::vector<std::string> random_command() {
               // an evaluation's kernels are large)
       a = {"sequence",
            "pan",
-           *one_of(
-               {"halton:frames=2", "r2:frames=3", "msaa-alternating:samples=2,frames=2", "nosuch"}),
+           *one_of({"halton:frames=2", "r2:frames=3", "msaa-alternating:samples=2,frames=2",
+                    "random:frames=3,seed=4", "display-lattice:ratio=2,frames=4",
+                    "display-lattice:ratio=0.5,frames=4", "nosuch"}),
            "--taa",
            *one_of({"ue4", "fsr2", "godot", "bevy", "nosuch"}),
            "--acuity",

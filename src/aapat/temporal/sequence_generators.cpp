@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "aapat/generate/catalog.h"
+#include "aapat/generate/unit_random.h"
+#include "aapat/temporal/upscale_model.h"
 
 namespace aapat {
 namespace {
@@ -227,6 +230,38 @@ const SequenceRegistry& sequence_registry() {
             at.push_back({x * 0x1.0p-32 - 0.5, y * 0x1.0p-32 - 0.5});
           }
           return jitter_sequence(s.canonical(), "Owen-scrambled Sobol jitter", at);
+        }},
+       {{"random",
+         "white-noise jitter: every frame uniform in the pixel, independently",
+         "aapat: the baseline any structured jitter must beat; the points of `aapat generate "
+         "random --seed S` less 1/2",
+         {{"frames", "16", "phases"}, {"seed", "1", "random seed"}}},
+        [](const Spec& s, const std::optional<Pattern>&) {
+          const int frames = s.whole("frames", 1, kMaxSequenceFrames);
+          std::mt19937_64 rng(static_cast<uint64_t>(s.whole("seed", 0, 1 << 30)));
+          std::vector<Vec2> at(static_cast<size_t>(frames));
+          for (Vec2& v : at) {  // x before y, as the point generator draws them
+            const double x = unit_double(rng);
+            v = {x - 0.5, unit_double(rng) - 0.5};
+          }
+          return jitter_sequence(s.canonical(), "white-noise jitter", at);
+        }},
+       {{"display-lattice",
+         "the render offsets at which display pixel centres fall at ratio R (the upscale "
+         "model's display phases less 1/2: -1/3, 0, 1/3 at 1.5), n per axis, frame k at "
+         "(c[k mod n], c[(k + floor(k / n)) mod n]): every n frames take each offset once per "
+         "axis, every n^2 each lattice point once",
+         "aapat: docs/temporal.md, 'Under motion'",
+         {{"ratio", "1.5", "display / render resolution"},
+          {"frames", "", "phases (default: n^2, n display phases per axis)"}}},
+        [](const Spec& s, const std::optional<Pattern>&) {
+          const std::vector<double> phases = upscale_phases(s.in_range("ratio", 1, 16));
+          const int n = static_cast<int>(phases.size());
+          const int frames = s.given("frames") ? s.whole("frames", 1, kMaxSequenceFrames) : n * n;
+          std::vector<Vec2> at;
+          for (int k = 0; k < frames; ++k)
+            at.push_back({phases[size_t(k % n)] - 0.5, phases[size_t((k + k / n) % n)] - 0.5});
+          return jitter_sequence(s.canonical(), "display-phase lattice jitter", at);
         }},
        {{"split",
          "a one-pixel pattern's samples in K frames, sample i in frame i mod K",

@@ -8,6 +8,10 @@
 //                                       n/g, n/g^2 mod 1, from 1/2)
 //   sobol:frames=16,seed=1              the first two Sobol dimensions,
 //                                       Owen-scrambled (nested uniform) by seed
+//   random:frames=16,seed=1             white noise: each frame uniform
+//   display-lattice:ratio=1.5           the offsets where display pixel
+//                                       centres fall in a render pixel, in a
+//                                       Latin order (n^2 frames by default)
 // From a pattern of n samples (one pixel):
 //   split:frames=K                      K frames of n/K samples each, sample i
 //                                       in frame i mod K (any pattern file;

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "aapat/generate/catalog.h"
+#include "aapat/generate/point_generators.h"
 #include "aapat/temporal/sequence_generators.h"
 #include "aapat/temporal/sequence_json.h"
 #include "aapat/temporal/temporal_metrics.h"
@@ -62,6 +63,55 @@ TEST(SequenceGenerators, SobolIsANetScrambledOrNot) {
     EXPECT_EQ(xs.size(), 16u) << seed;
     EXPECT_EQ(ys.size(), 16u) << seed;
   }
+}
+
+// White noise is the point generator's uniform points less 1/2, so the two
+// faces of "random" with one seed are the same points.
+TEST(SequenceGenerators, RandomIsThePointGeneratorsUniformPoints) {
+  for (uint64_t seed : {0, 1, 9}) {
+    const Sequence s = make_sequence(fmt::format("random:frames=18,seed={}", seed));
+    const std::vector<Vec2> points = generate_points("random", 18, seed);
+    ASSERT_EQ(s.period(), 18);
+    for (int f = 0; f < 18; ++f) {
+      EXPECT_EQ(offset(s, f).x, points[size_t(f)].x - 0.5) << seed << " " << f;
+      EXPECT_EQ(offset(s, f).y, points[size_t(f)].y - 0.5) << seed << " " << f;
+    }
+  }
+  EXPECT_NE(offset(make_sequence("random:seed=1"), 0).x,
+            offset(make_sequence("random:seed=2"), 0).x);
+}
+
+// At R = 3/2 display centres fall at render offsets -1/3, 0, 1/3: nine
+// frames visit each pair once and every three consecutive frames each offset
+// once per axis; at R = 2, -1/4 and 1/4 in four frames.
+TEST(SequenceGenerators, DisplayLatticeVisitsEveryDisplayPhaseInALatinOrder) {
+  const Sequence s = make_sequence("display-lattice:ratio=1.5");
+  ASSERT_EQ(s.period(), 9);
+  std::set<std::pair<int, int>> pairs;
+  for (int k = 0; k < 9; ++k) {
+    const int i = static_cast<int>(std::lround(3 * offset(s, k).x)),
+              j = static_cast<int>(std::lround(3 * offset(s, k).y));
+    EXPECT_NEAR(offset(s, k).x, i / 3.0, 1e-12);
+    EXPECT_NEAR(offset(s, k).y, j / 3.0, 1e-12);
+    pairs.insert({i, j});
+  }
+  EXPECT_EQ(pairs.size(), 9u);
+  for (int first : {0, 3, 6}) {
+    std::set<int> xs, ys;
+    for (int k = first; k < first + 3; ++k) {
+      xs.insert(static_cast<int>(std::lround(3 * offset(s, k).x)));
+      ys.insert(static_cast<int>(std::lround(3 * offset(s, k).y)));
+    }
+    EXPECT_EQ(xs.size(), 3u);
+    EXPECT_EQ(ys.size(), 3u);
+  }
+  const Sequence two = make_sequence("display-lattice:ratio=2,frames=6");
+  ASSERT_EQ(two.period(), 6);
+  EXPECT_NEAR(offset(two, 0).x, -0.25, 1e-12);
+  EXPECT_NEAR(offset(two, 1).x, 0.25, 1e-12);
+  EXPECT_NEAR(offset(two, 4).x, -0.25, 1e-12);  // the cycle of four again
+  EXPECT_NEAR(offset(two, 4).y, -0.25, 1e-12);
+  EXPECT_THROW(make_sequence("display-lattice:ratio=0.5"), Error);
 }
 
 // FSR 2 computes int32_t(8 * ratio^2) in float: Quality 1.5 -> 18, Balanced
