@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <tuple>
 
 #include "aapat/core/hardware_layout.h"
 #include "aapat/core/nearest_name.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/io/atomic_file.h"
+#include "aapat/io/file_header.h"
 #include "aapat/io/pattern_text.h"
 
 namespace aapat {
@@ -19,20 +21,20 @@ namespace {
 
 using json = nlohmann::ordered_json;  // keeps the file's key order
 
-constexpr std::string_view kFormat = "aapat-pattern";
-constexpr int kVersion = 1;
+const FileHeader kHeader{"pattern file",
+                         "aapat-pattern",
+                         1,
+                         {"format", "version", "name", "description", "family", "tile", "footprint",
+                          "sets", "kernels", "provenance"},
+                         {"format", "version", "name", "tile", "footprint", "sets", "kernels"}};
 constexpr int kPerLine = 4;  // samples (or 2 x weights) per line
 
 std::string number(double v) {
   return json(v).dump();
 }
 
-std::string json_string(std::string_view s) {
-  return json(std::string(s)).dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
 [[noreturn]] void fail(std::string_view source, const std::string& message) {
-  throw Error(fmt::format("pattern file {}: {}", source, message));
+  file_error(kHeader.kind, source, message);
 }
 
 double get_number(const json& v, std::string_view source, const std::string& field) {
@@ -43,13 +45,10 @@ double get_number(const json& v, std::string_view source, const std::string& fie
 }  // namespace
 
 std::string pattern_to_json(const Pattern& p) {
-  std::string out = "{\n";
-  out += fmt::format("  \"format\": {},\n  \"version\": {},\n", json_string(kFormat), kVersion);
-  out += fmt::format("  \"name\": {},\n", json_string(p.name));
-  out += fmt::format("  \"description\": {},\n", json_string(p.description));
-  out += fmt::format("  \"family\": {},\n", json_string(family(p)));
+  std::string out = header_json(kHeader, p.name, p.description);
+  out += fmt::format("  \"family\": {},\n", json_quoted(family(p)));
   out += fmt::format("  \"tile\": [{}, {}],\n", p.tile_w, p.tile_h);
-  out += fmt::format("  \"footprint\": {},\n", json_string(p.footprint.text()));
+  out += fmt::format("  \"footprint\": {},\n", json_quoted(p.footprint.text()));
   out += "  \"sets\": [\n";
   for (size_t k = 0; k < p.sets.size(); ++k) {
     out += "    [";
@@ -68,45 +67,14 @@ std::string pattern_to_json(const Pattern& p) {
     }
     out += k + 1 < p.weights.size() ? "],\n" : "]\n";
   }
-  out += "  ],\n  \"provenance\": {";
-  for (size_t i = 0; i < p.provenance.size(); ++i)
-    out += fmt::format("{}\n    {}: {}", i ? "," : "", json_string(p.provenance[i].first),
-                       json_string(p.provenance[i].second));
-  out += p.provenance.empty() ? "}\n}\n" : "\n  }\n}\n";
+  out += "  ],\n" + provenance_json(p.provenance);
   return out;
 }
 
 Pattern pattern_from_json(std::string_view text, std::string_view source) {
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {  // parse errors and number overflow
-    fail(source, fmt::format("not valid JSON: {}", e.what()));
-  }
-  if (!doc.is_object()) fail(source, "expected a JSON object at the top level");
-  static const std::vector<std::string> kKeys = {"format",  "version",   "name",      "description",
-                                                 "family",  "tile",      "footprint", "sets",
-                                                 "kernels", "provenance"};
-  for (const auto& [key, value] : doc.items())
-    if (std::find(kKeys.begin(), kKeys.end(), key) == kKeys.end())
-      fail(source, fmt::format("{}: unknown field (known: format, version, name, description, "
-                               "family, tile, footprint, sets, kernels, provenance)",
-                               key));
-  for (const char* key : {"format", "version", "name", "tile", "footprint", "sets", "kernels"})
-    if (!doc.contains(key)) fail(source, fmt::format("{}: missing", key));
-  if (doc["format"] != kFormat)
-    fail(source, fmt::format("format: expected \"{}\", got {}", kFormat, doc["format"].dump()));
-  if (doc["version"] != kVersion)
-    fail(source, fmt::format("version: {} is not supported (this aapat reads version {})",
-                             doc["version"].dump(), kVersion));
-
+  json doc = parse_file(kHeader, text, source);
   Pattern p;
-  if (!doc["name"].is_string()) fail(source, "name: expected a string");
-  p.name = doc["name"].get<std::string>();
-  if (doc.contains("description")) {
-    if (!doc["description"].is_string()) fail(source, "description: expected a string");
-    p.description = doc["description"].get<std::string>();
-  }
+  std::tie(p.name, p.description) = read_name_and_description(kHeader, doc, source);
   const json& tile = doc["tile"];
   if (!tile.is_array() || tile.size() != 2 || !tile[0].is_number_integer() ||
       !tile[1].is_number_integer())
@@ -161,14 +129,7 @@ Pattern pattern_from_json(std::string_view text, std::string_view source) {
       w.push_back(get_number(kernels[k][i], source, fmt::format("kernels[{}][{}]", k, i)));
     p.weights.push_back(std::move(w));
   }
-  if (doc.contains("provenance")) {
-    const json& prov = doc["provenance"];
-    if (!prov.is_object()) fail(source, "provenance: expected an object of strings");
-    for (const auto& [key, value] : prov.items()) {
-      if (!value.is_string()) fail(source, fmt::format("provenance.{}: expected a string", key));
-      p.provenance.emplace_back(key, value.get<std::string>());
-    }
-  }
+  p.provenance = read_provenance(kHeader, doc, source);
   try {
     validate(p);
   } catch (const Error& e) {

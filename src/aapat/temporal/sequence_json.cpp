@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <tuple>
 
 #include "aapat/io/atomic_file.h"
+#include "aapat/io/file_header.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/temporal/sequence_generators.h"
 
@@ -21,15 +23,15 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-constexpr std::string_view kFormat = "aapat-sequence";
-constexpr int kVersion = 1;
-
-std::string text_of(std::string_view s) {
-  return json(std::string(s)).dump(-1, ' ', false, json::error_handler_t::replace);
-}
+const FileHeader kHeader{
+    "sequence file",
+    "aapat-sequence",
+    1,
+    {"format", "version", "name", "description", "family", "jitter", "frames", "provenance"},
+    {"format", "version", "name"}};
 
 [[noreturn]] void fail(std::string_view source, const std::string& message) {
-  throw Error(fmt::format("sequence file {}: {}", source, message));
+  file_error(kHeader.kind, source, message);
 }
 
 bool is_jitter(const Sequence& s) {
@@ -59,11 +61,8 @@ std::string indented(const std::string& text) {
 
 std::string sequence_to_json(const Sequence& s) {
   validate(s);
-  std::string out = "{\n";
-  out += fmt::format("  \"format\": {},\n  \"version\": {},\n", text_of(kFormat), kVersion);
-  out += fmt::format("  \"name\": {},\n", text_of(s.name));
-  out += fmt::format("  \"description\": {},\n", text_of(s.description));
-  out += fmt::format("  \"family\": {},\n", text_of(family(s.frames[0])));
+  std::string out = header_json(kHeader, s.name, s.description);
+  out += fmt::format("  \"family\": {},\n", json_quoted(family(s.frames[0])));
   if (is_jitter(s)) {
     out += "  \"jitter\": [";
     for (size_t f = 0; f < s.frames.size(); ++f) {
@@ -78,47 +77,17 @@ std::string sequence_to_json(const Sequence& s) {
       out += indented(pattern_to_json(s.frames[f])) + (f + 1 < s.frames.size() ? ",\n" : "\n");
     out += "  ],\n";
   }
-  out += "  \"provenance\": {";
-  for (size_t i = 0; i < s.provenance.size(); ++i)
-    out += fmt::format("{}\n    {}: {}", i ? "," : "", text_of(s.provenance[i].first),
-                       text_of(s.provenance[i].second));
-  out += s.provenance.empty() ? "}\n}\n" : "\n  }\n}\n";
-  return out;
+  return out + provenance_json(s.provenance);
 }
 
 Sequence sequence_from_json(std::string_view text, std::string_view source) {
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {
-    fail(source, fmt::format("not valid JSON: {}", e.what()));
-  }
-  if (!doc.is_object()) fail(source, "expected a JSON object at the top level");
-  static const std::vector<std::string> kKeys = {"format", "version", "name",   "description",
-                                                 "family", "jitter",  "frames", "provenance"};
-  for (const auto& [key, value] : doc.items())
-    if (std::find(kKeys.begin(), kKeys.end(), key) == kKeys.end())
-      fail(source, fmt::format("{}: unknown field (known: format, version, name, description, "
-                               "family, jitter, frames, provenance)",
-                               key));
-  for (const char* key : {"format", "version", "name"})
-    if (!doc.contains(key)) fail(source, fmt::format("{}: missing", key));
-  if (doc["format"] != kFormat)
-    fail(source, fmt::format("format: expected \"{}\", got {}", kFormat, doc["format"].dump()));
-  if (doc["version"] != kVersion)
-    fail(source, fmt::format("version: {} is not supported (this aapat reads version {})",
-                             doc["version"].dump(), kVersion));
+  json doc = parse_file(kHeader, text, source);
   if (doc.contains("jitter") == doc.contains("frames"))
     fail(source,
          "give the frames as exactly one of \"jitter\" (one offset per frame) and "
          "\"frames\" (a pattern per frame)");
   Sequence s;
-  if (!doc["name"].is_string()) fail(source, "name: expected a string");
-  s.name = doc["name"].get<std::string>();
-  if (doc.contains("description")) {
-    if (!doc["description"].is_string()) fail(source, "description: expected a string");
-    s.description = doc["description"].get<std::string>();
-  }
+  std::tie(s.name, s.description) = read_name_and_description(kHeader, doc, source);
   const std::string_view list = doc.contains("jitter") ? "jitter" : "frames";
   const json& frames = doc[std::string(list)];
   if (!frames.is_array() || frames.empty())
@@ -144,14 +113,7 @@ Sequence sequence_from_json(std::string_view text, std::string_view source) {
       s.frames.push_back(pattern_from_json(frame.dump(), fmt::format("{} {}", source, field)));
     }
   }
-  if (doc.contains("provenance")) {
-    const json& prov = doc["provenance"];
-    if (!prov.is_object()) fail(source, "provenance: expected an object of strings");
-    for (const auto& [key, value] : prov.items()) {
-      if (!value.is_string()) fail(source, fmt::format("provenance.{}: expected a string", key));
-      s.provenance.emplace_back(key, value.get<std::string>());
-    }
-  }
+  s.provenance = read_provenance(kHeader, doc, source);
   try {
     validate(s);
   } catch (const Error& e) {
