@@ -215,15 +215,6 @@ struct Binned {
   }
   double at(long i) const { return p[static_cast<size_t>(i - first)]; }
 };
-// floor(x / kPanBin) for the projections' range (well inside a long): the
-// division by a power of two is exact, and the floor is taken without a
-// call into libm (the baseline target has no rounding instruction).
-long bin_of(double x) {
-  const double scaled = x * (1 / kPanBin);
-  const auto t = static_cast<long>(scaled);  // toward zero
-  return scaled < static_cast<double>(t) ? t - 1 : t;
-}
-
 std::vector<Binned> bin_kernel(const Kernel& k, const Metric& metric) {
   std::vector<Binned> out(static_cast<size_t>(metric.angle_count()));
   double total = 0;
@@ -236,7 +227,7 @@ std::vector<Binned> bin_kernel(const Kernel& k, const Metric& metric) {
     long lo = std::numeric_limits<long>::max(), hi = std::numeric_limits<long>::min();
     for (size_t i = 0; i < k.w.size(); ++i) {
       proj[i] = metric.cos(a) * k.y[i] - metric.sin(a) * k.x[i];
-      bin[i] = bin_of(proj[i]);
+      bin[i] = pan_bin(proj[i]);
       lo = std::min(lo, bin[i]);
       hi = std::max(hi, bin[i]);
     }

@@ -114,6 +114,15 @@ Vec2 parse_velocity(std::string_view text);
 // frame under a bilinear history spreads over thousands of pixels' weights,
 // more than the metric's exact sums can take per evaluation.
 inline constexpr double kPanBin = 1.0 / 64, kPanAgeCut = 1e-3, kPanEvaluationChainCut = 1e-5;
+// The bin of a projection: floor(position / kPanBin), exactly (the division
+// by a power of two is), without a call into libm (the baseline x86-64
+// target has no rounding instruction, and binning is the pan model's hot
+// loop). Positions stay far inside a long's range.
+inline long pan_bin(double position) {
+  const double scaled = position * (1 / kPanBin);
+  const auto t = static_cast<long>(scaled);  // toward zero
+  return scaled < static_cast<double>(t) ? t - 1 : t;
+}
 struct PanReport {
   double mean_e2 = 0, flicker = 0;
 };

@@ -137,8 +137,7 @@ struct PanObjective::State {
       double* angle_bins = bins + 2 * c.begin[an];
       for (size_t i = 0; i < sw.size(); ++i) {
         const double p = cs * sy[i] - sn * sx[i];
-        const auto at = static_cast<size_t>(
-            std::clamp(static_cast<long>(std::floor(p / kPanBin)) - first, 0L, last));
+        const auto at = static_cast<size_t>(std::clamp(pan_bin(p) - first, 0L, last));
         angle_bins[2 * at] += sw[i];
         angle_bins[2 * at + 1] += sw[i] * p;
       }
