@@ -31,7 +31,8 @@ TEST(Acuity, UniformAndLinearTables) {
   EXPECT_NEAR(l.weights[1], 3.93 - (3.93 - 2.5) / 3, 1e-15);  // 15
 }
 
-void expect_error(const std::string& spec_or_text, const std::string& message, bool csv = false) {
+void expect_acuity_error(const std::string& spec_or_text, const std::string& message,
+                         bool csv = false) {
   EXPECT_EQ(testing::error_message([&] {
               if (csv)
                 parse_acuity_csv(spec_or_text, "t.csv");
@@ -46,26 +47,32 @@ TEST(Acuity, CsvRowsAndErrors) {
   const AcuityTable t = parse_acuity_csv("# angle,weight\n0, 2\n\n30,1.5 # comment\n", "t.csv");
   EXPECT_EQ(t.angles_deg, (std::vector<double>{0, 30}));
   EXPECT_EQ(t.weights, (std::vector<double>{2, 1.5}));
-  expect_error("0,1\n45\n", "acuity table t.csv line 2: expected 'angle,weight', got '45'", true);
-  expect_error("0,1,2\n", "acuity table t.csv line 1: expected 'angle,weight', got '0,1,2'", true);
-  expect_error("0,-1\n", "acuity table t.csv line 1: weight -1 is out of range [0, 1000000]", true);
-  expect_error("0,x\n", "acuity table t.csv line 1: weight: 'x' is not a finite number", true);
-  expect_error("10,1\n190,1\n",
-               "acuity table t.csv line 2: angle 190 repeats angle 10 (edge directions repeat "
-               "every 180)",
-               true);
-  expect_error("# nothing\n", "acuity table t.csv: no rows", true);
+  expect_acuity_error("0,1\n45\n", "acuity table t.csv line 2: expected 'angle,weight', got '45'",
+                      true);
+  expect_acuity_error("0,1,2\n", "acuity table t.csv line 1: expected 'angle,weight', got '0,1,2'",
+                      true);
+  expect_acuity_error("0,-1\n", "acuity table t.csv line 1: weight -1 is out of range [0, 1000000]",
+                      true);
+  expect_acuity_error("0,x\n", "acuity table t.csv line 1: weight: 'x' is not a finite number",
+                      true);
+  expect_acuity_error(
+      "10,1\n190,1\n",
+      "acuity table t.csv line 2: angle 190 repeats angle 10 (edge directions repeat "
+      "every 180)",
+      true);
+  expect_acuity_error("# nothing\n", "acuity table t.csv: no rows", true);
   // Repeats modulo 180 are found in a sorted pass, naming the later line.
-  expect_error("0,1\n45,1\n90,1\n-135,1\n",
-               "acuity table t.csv line 4: angle -135 repeats angle 45 (edge directions repeat "
-               "every 180)",
-               true);
-  expect_error("0,1\n720,1\n", "acuity table t.csv line 2: angle 720 is out of range [-360, 360]",
-               true);
-  expect_error("0,0\n90,0\n", "acuity table t.csv: every weight is 0, so every pattern scores 0",
-               true);
-  expect_error("0,1e7\n", "acuity table t.csv line 1: weight 10000000 is out of range [0, 1000000]",
-               true);
+  expect_acuity_error(
+      "0,1\n45,1\n90,1\n-135,1\n",
+      "acuity table t.csv line 4: angle -135 repeats angle 45 (edge directions repeat "
+      "every 180)",
+      true);
+  expect_acuity_error("0,1\n720,1\n",
+                      "acuity table t.csv line 2: angle 720 is out of range [-360, 360]", true);
+  expect_acuity_error("0,0\n90,0\n",
+                      "acuity table t.csv: every weight is 0, so every pattern scores 0", true);
+  expect_acuity_error(
+      "0,1e7\n", "acuity table t.csv line 1: weight 10000000 is out of range [0, 1000000]", true);
 }
 
 TEST(Acuity, ValidateChecksTablesBuiltInCode) {
@@ -82,15 +89,17 @@ TEST(Acuity, ValidateChecksTablesBuiltInCode) {
 }
 
 TEST(Acuity, SpecErrors) {
-  expect_error(
+  expect_acuity_error(
       "uniform:step=0",
       "acuity step 0 is out of range [0.005, 90] degrees (at most 36000 angles in [0, 180))");
-  expect_error("uniform:size=2",
-               "acuity uniform: unknown parameter 'size=2' (it takes step, weight)");
-  expect_error("linear:weight=2", "acuity linear: unknown parameter 'weight=2' (it takes step)");
-  expect_error("no/such.csv",
-               "unknown acuity table 'no/such.csv': not laine-aila, uniform:step=S, linear:step=S "
-               "or a readable CSV file");
+  expect_acuity_error("uniform:size=2",
+                      "acuity uniform: unknown parameter 'size=2' (it takes step, weight)");
+  expect_acuity_error("linear:weight=2",
+                      "acuity linear: unknown parameter 'weight=2' (it takes step)");
+  expect_acuity_error(
+      "no/such.csv",
+      "unknown acuity table 'no/such.csv': not laine-aila, uniform:step=S, linear:step=S "
+      "or a readable CSV file");
 }
 
 TEST(Acuity, LoadsAFile) {

@@ -148,26 +148,30 @@ TEST(FilterSpec, ParsesFractions) {
   EXPECT_DOUBLE_EQ(parse_number("+0.5", "x"), 0.5);
 }
 
-void expect_error(const std::string& spec, const std::string& message) {
+void expect_filter_error(const std::string& spec, const std::string& message) {
   EXPECT_EQ(testing::error_message([&] { make_filter(spec); }), message) << spec;
 }
 
 TEST(FilterSpec, RejectsBadSpecsWithClearMessages) {
-  expect_error("mitchel",
-               "unknown filter 'mitchel' (did you mean 'mitchell'?): known filters are box, tent, "
-               "gaussian, gaussian-half, "
-               "mitchell, notch, catmull-rom, keys, lanczos, lanczos-gaussian, blinn");
-  expect_error("mitchell:d=1", "filter mitchell: unknown parameter 'd=1' (it takes b, c)");
-  expect_error("notch:b=1", "filter notch: unknown parameter 'b=1' (it takes no parameters)");
-  expect_error("gaussian:sigma=0", "filter gaussian: sigma = 0 is out of range [0.001, 16]");
-  expect_error("gaussian:sigma=nan", "filter gaussian: sigma: 'nan' is not a finite number");
-  expect_error("lanczos:lobes=2.5", "filter lanczos: lobes = 2.5 must be a whole number in 1..16");
-  expect_error("mitchell:b=1/0", "filter mitchell: b: '1/0' divides by zero");
-  expect_error("box:width=abc", "filter box: width: 'abc' is not a finite number");
+  expect_filter_error(
+      "mitchel",
+      "unknown filter 'mitchel' (did you mean 'mitchell'?): known filters are box, tent, "
+      "gaussian, gaussian-half, "
+      "mitchell, notch, catmull-rom, keys, lanczos, lanczos-gaussian, blinn");
+  expect_filter_error("mitchell:d=1", "filter mitchell: unknown parameter 'd=1' (it takes b, c)");
+  expect_filter_error("notch:b=1",
+                      "filter notch: unknown parameter 'b=1' (it takes no parameters)");
+  expect_filter_error("gaussian:sigma=0", "filter gaussian: sigma = 0 is out of range [0.001, 16]");
+  expect_filter_error("gaussian:sigma=nan", "filter gaussian: sigma: 'nan' is not a finite number");
+  expect_filter_error("lanczos:lobes=2.5",
+                      "filter lanczos: lobes = 2.5 must be a whole number in 1..16");
+  expect_filter_error("mitchell:b=1/0", "filter mitchell: b: '1/0' divides by zero");
+  expect_filter_error("box:width=abc", "filter box: width: 'abc' is not a finite number");
   // Narrower than 4096 pieces can tabulate to 1e-9 of the peak: refused, not wrong.
-  expect_error("lanczos-gaussian:lobes=16,sigma=0.001",
-               "filter lanczos-gaussian:lobes=16,sigma=0.001: too narrow to tabulate to 1e-09 of "
-               "its peak with 4096 pieces (error 0.00051); widen it");
+  expect_filter_error(
+      "lanczos-gaussian:lobes=16,sigma=0.001",
+      "filter lanczos-gaussian:lobes=16,sigma=0.001: too narrow to tabulate to 1e-09 of "
+      "its peak with 4096 pieces (error 0.00051); widen it");
 }
 
 // A narrow Gaussian gets finer pieces and keeps its accuracy: its step

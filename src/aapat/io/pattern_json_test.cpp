@@ -47,7 +47,7 @@ const char* kMinimal = R"({
   "tile": [1, 1], "footprint": "1", "sets": [[[0, 0]]], "kernels": [[1]]
 })";
 
-void expect_error(const std::string& text, const std::string& message) {
+void expect_pattern_file_error(const std::string& text, const std::string& message) {
   EXPECT_EQ(testing::error_message([&] { pattern_from_json(text, "p.json"); }), message) << text;
 }
 
@@ -65,45 +65,56 @@ TEST(PatternJson, MinimalFileLoads) {
 // Each load rule with its exact message.
 TEST(PatternJson, RejectsMalformedFilesNamingTheField) {
   const std::string m = kMinimal;
-  expect_error("{",
-               "pattern file p.json: not valid JSON: [json.exception.parse_error.101] parse "
-               "error at line 1, column 2: syntax error while parsing object key - unexpected "
-               "end of input; expected string literal");
-  expect_error("[]", "pattern file p.json: expected a JSON object at the top level");
-  expect_error(with(m, "\"name\": \"one\",", "\"name\": \"one\", \"weight\": 1,"),
-               "pattern file p.json: weight: unknown field (known: format, version, name, "
-               "description, family, tile, footprint, sets, kernels, provenance)");
-  expect_error(with(m, "\"tile\": [1, 1], ", ""), "pattern file p.json: tile: missing");
-  expect_error(with(m, "aapat-pattern", "other"),
-               "pattern file p.json: format: expected \"aapat-pattern\", got \"other\"");
-  expect_error(with(m, "\"version\": 1", "\"version\": 2"),
-               "pattern file p.json: version: 2 is not supported (this aapat reads version 1)");
-  expect_error(with(m, "\"name\": \"one\"", "\"name\": 5"),
-               "pattern file p.json: name: expected a string");
-  expect_error(with(m, "[1, 1]", "[1.5, 1]"),
-               "pattern file p.json: tile: expected [width, height] in pixels");
-  expect_error(with(m, "\"footprint\": \"1\"", "\"footprint\": \"3x3\""),
-               "pattern file p.json: footprint: '3x3' is not one of 1, 1+, 2x2, 2x2+, 4x4, 4x4+ "
-               "(or r = 4, 16 with optional +)");
-  expect_error(with(m, "[1, 1]", "[4294967297, 1]"),
-               "pattern file p.json: tile: 4294967297x1 is not a tile size: each side must be 1 to "
-               "128 pixels");
-  expect_error(with(m, "[[[0, 0]]]", "[[[0, 0, 0]]]"),
-               "pattern file p.json: sets[0][0]: expected [x, y]");
-  expect_error(with(m, "[[[0, 0]]]", "[[[0, \"a\"]]]"),
-               "pattern file p.json: sets[0][0].y: expected a number");
-  expect_error(with(m, "[[[0, 0]]]", "[[[0, 0.7]]]"),
-               "pattern file p.json: sets[0][0]: (0, 0.7) lies outside the pixel [-0.5, 0.5] x "
-               "[-0.5, 0.5]");
-  expect_error(
+  expect_pattern_file_error(
+      "{",
+      "pattern file p.json: not valid JSON: [json.exception.parse_error.101] parse "
+      "error at line 1, column 2: syntax error while parsing object key - unexpected "
+      "end of input; expected string literal");
+  expect_pattern_file_error("[]", "pattern file p.json: expected a JSON object at the top level");
+  expect_pattern_file_error(
+      with(m, "\"name\": \"one\",", "\"name\": \"one\", \"weight\": 1,"),
+      "pattern file p.json: weight: unknown field (known: format, version, name, "
+      "description, family, tile, footprint, sets, kernels, provenance)");
+  expect_pattern_file_error(with(m, "\"tile\": [1, 1], ", ""),
+                            "pattern file p.json: tile: missing");
+  expect_pattern_file_error(
+      with(m, "aapat-pattern", "other"),
+      "pattern file p.json: format: expected \"aapat-pattern\", got \"other\"");
+  expect_pattern_file_error(
+      with(m, "\"version\": 1", "\"version\": 2"),
+      "pattern file p.json: version: 2 is not supported (this aapat reads version 1)");
+  expect_pattern_file_error(with(m, "\"name\": \"one\"", "\"name\": 5"),
+                            "pattern file p.json: name: expected a string");
+  expect_pattern_file_error(with(m, "[1, 1]", "[1.5, 1]"),
+                            "pattern file p.json: tile: expected [width, height] in pixels");
+  expect_pattern_file_error(
+      with(m, "\"footprint\": \"1\"", "\"footprint\": \"3x3\""),
+      "pattern file p.json: footprint: '3x3' is not one of 1, 1+, 2x2, 2x2+, 4x4, 4x4+ "
+      "(or r = 4, 16 with optional +)");
+  expect_pattern_file_error(
+      with(m, "[1, 1]", "[4294967297, 1]"),
+      "pattern file p.json: tile: 4294967297x1 is not a tile size: each side must be 1 to "
+      "128 pixels");
+  expect_pattern_file_error(with(m, "[[[0, 0]]]", "[[[0, 0, 0]]]"),
+                            "pattern file p.json: sets[0][0]: expected [x, y]");
+  expect_pattern_file_error(with(m, "[[[0, 0]]]", "[[[0, \"a\"]]]"),
+                            "pattern file p.json: sets[0][0].y: expected a number");
+  expect_pattern_file_error(
+      with(m, "[[[0, 0]]]", "[[[0, 0.7]]]"),
+      "pattern file p.json: sets[0][0]: (0, 0.7) lies outside the pixel [-0.5, 0.5] x "
+      "[-0.5, 0.5]");
+  expect_pattern_file_error(
       with(m, "[[1]]", "[[0.5]]"),
       "pattern file p.json: kernels[0]: weights sum to 0.5 instead of 1 (tolerance 1e-06)");
-  expect_error(with(m, "[[1]]", "[[1, 0]]"),
-               "pattern file p.json: kernels[0]: the kernel reads 1 samples but has 2 weights");
-  expect_error(with(m, "\"kernels\": [[1]]", "\"kernels\": [[1]], \"family\": \"P(1,1,2)\""),
-               "pattern file p.json: family: the file says P(1,1,2) but its samples make P(1,1,1)");
-  expect_error(with(m, "\"kernels\": [[1]]", "\"kernels\": [[1]], \"provenance\": {\"seed\": 4}"),
-               "pattern file p.json: provenance.seed: expected a string");
+  expect_pattern_file_error(
+      with(m, "[[1]]", "[[1, 0]]"),
+      "pattern file p.json: kernels[0]: the kernel reads 1 samples but has 2 weights");
+  expect_pattern_file_error(
+      with(m, "\"kernels\": [[1]]", "\"kernels\": [[1]], \"family\": \"P(1,1,2)\""),
+      "pattern file p.json: family: the file says P(1,1,2) but its samples make P(1,1,1)");
+  expect_pattern_file_error(
+      with(m, "\"kernels\": [[1]]", "\"kernels\": [[1]], \"provenance\": {\"seed\": 4}"),
+      "pattern file p.json: provenance.seed: expected a string");
 }
 
 TEST(PatternJson, OverflowingNumbersAreRejected) {
