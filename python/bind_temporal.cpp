@@ -5,6 +5,7 @@
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/hardware_layout.h"
 #include "aapat/temporal/engine_taa_settings.h"
+#include "aapat/temporal/pan_distribution.h"
 #include "aapat/temporal/pan_model.h"
 #include "aapat/temporal/pan_search.h"
 #include "aapat/temporal/sequence_generators.h"
@@ -197,37 +198,48 @@ called as each step size finishes, or None.)doc"));
       [](const std::vector<py::object>& sequences, const std::string& taa, double ratio,
          const py::dict& settings,
          const std::optional<std::vector<std::pair<double, double>>>& velocities,
-         const py::object& progress, const py::object& objective, const py::object& filter,
-         const py::object& acuity, const py::object& norm) {
+         int random_velocities, double max_speed, uint64_t seed, const py::object& progress,
+         const py::object& objective, const py::object& filter, const py::object& acuity,
+         const py::object& norm) {
         const EngineTaa t = make_engine_taa(taa, ratio, taa_overrides_of(settings));
         std::vector<Sequence> seqs;
         for (const py::object& q : sequences)
           seqs.push_back(py::isinstance<Sequence>(q)
                              ? q.cast<Sequence>()
                              : resolve_sequence_for_ratio(q.cast<std::string>(), ratio, nullptr));
-        std::vector<Vec2> vs = velocities ? std::vector<Vec2>{} : default_pan_velocities();
+        std::vector<Vec2> vs =
+            velocities || random_velocities != 0 ? std::vector<Vec2>{} : default_pan_velocities();
         if (velocities)
           for (const auto& [dx, dy] : *velocities) vs.push_back({dx, dy});
+        if (random_velocities != 0)
+          for (const Vec2 v : random_pan_velocities(random_velocities, max_speed, seed))
+            vs.push_back(v);
         const Metric metric = make_metric(objective, filter, acuity, norm);
         const auto report = progress_of(progress);
         const auto rows = interruptible([&] { return evaluate_pans(seqs, t, vs, metric, report); });
         py::list out;
         for (size_t i = 0; i < seqs.size(); ++i)
-          out.append(to_python(pan_row_json(seqs[i], vs, rows[i])));
+          out.append(to_python(i == 0 ? pan_row_json(seqs[i], vs, rows[i])
+                                      : pan_row_json(seqs[i], vs, rows[i], &seqs[0], &rows[0])));
         return out;
       },
       py::arg("sequences"), py::kw_only(), py::arg("taa"), py::arg("ratio") = 1.0,
       py::arg("settings") = py::dict(), py::arg("velocities") = py::none(),
-      py::arg("progress") = py::none(), AAPAT_OBJECTIVE_ARGS,
+      py::arg("random_velocities") = 0, py::arg("max_speed") = kDefaultRandomPanSpeed,
+      py::arg("seed") = 1, py::arg("progress") = py::none(), AAPAT_OBJECTIVE_ARGS,
       with_metric_args(R"doc(aapat sequence pan: the steady mean E2 and flicker of each sequence (a
 Sequence or a spec; a generator without frames= takes the upscaler's phases
 for ratio) under an engine preset's reconstruction, history sampler and blend
 (settings: overrides by key, as engine_taa's; rectification is not in the model)
 while the scene pans at each velocity ((dx, dy) display pixels per frame;
-(0, 0): still; default the command line's), by the linear model before
+(0, 0): still; default the command line's) and at random_velocities more
+(each component uniform in +-max_speed from seed, as --random-velocities;
+without velocities, instead of the defaults), by the linear model before
 rectification (docs/temporal.md). A list with one dict per sequence, the rows
 of `aapat sequence pan --json`: sequence, phases, mean_e2, flicker (the means
-over the velocities), velocities [{velocity, mean_e2, flicker}]. progress: a
+over the velocities), velocities [{velocity, mean_e2, flicker}], and for each
+after the first against_first {sequence, lower_at, velocities, mean_change,
+lowest_change, highest_change}. progress: a
 callable f(done, total, note) called as each sequence and velocity finishes,
 or None.)doc"));
 }

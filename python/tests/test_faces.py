@@ -77,6 +77,30 @@ def test_sequence_pan_rows_are_the_cli_rows(aapat_cli):
     assert again == py and sorted(calls) == [(1, 2), (2, 2)]
 
 
+def test_sequence_pan_over_random_velocities_is_the_cli_comparison(aapat_cli):
+    """The same random pans and the same comparison with the first on both faces,
+    and the comparison is what the rows say."""
+    args = ["halton:frames=4", "r2:frames=4", "--taa", "bevy", "--acuity", "uniform:step=30",
+            "--random-velocities", "3", "--max-speed", "0.8", "--seed", "5"]
+    cli = cli_json(aapat_cli, "sequence", "pan", *args)
+    py = aapat.sequence_pan(["halton:frames=4", "r2:frames=4"], taa="bevy",
+                            acuity="uniform:step=30", random_velocities=3, max_speed=0.8, seed=5)
+    assert py == cli["rows"]
+    velocities = [v["velocity"] for v in py[0]["velocities"]]
+    assert len(velocities) == 3 and all(abs(c) <= 0.8 for v in velocities for c in v)
+    assert all(round(c, 3) == c for v in velocities for c in v)
+    assert "against_first" not in py[0]
+    c = py[1]["against_first"]
+    changes = [b["mean_e2"] / a["mean_e2"] - 1
+               for a, b in zip(py[0]["velocities"], py[1]["velocities"])]
+    assert c["sequence"] == py[0]["sequence"] and c["velocities"] == 3
+    assert c["lower_at"] == sum(x < 0 for x in changes)
+    assert c["mean_change"] == pytest.approx(sum(changes) / 3, rel=1e-12)
+    assert (c["lowest_change"], c["highest_change"]) == (min(changes), max(changes))
+    with pytest.raises(aapat.Error, match="max_speed"):
+        aapat.sequence_pan(["r2"], taa="bevy", random_velocities=2, max_speed=float("nan"))
+
+
 def assert_same_search(py_result, cli, out):
     """A Python search's dict against the command line's --json and -o file."""
     py = {k: v for k, v in py_result.items() if k not in ("command", "schema")}

@@ -355,6 +355,9 @@ std::vector<std::string> random_command() {
            "--velocity",
            *one_of({"0,0", "0.37,0.21", "1e9,0", "nan,1", "1", "a,b"})};
       maybe(a, "--ratio", {"1", "1.5", "0.5", "nan"});
+      maybe(a, "--random-velocities", {"1", "2", "0", "257", "-1"});
+      maybe(a, "--max-speed", {"0.5", "0", "nan", "17"});
+      maybe(a, "--seed", {"3", "x"});
       maybe(a, "--taa-set",
             {"history=catmull-rom-5", "alpha=0.2", "alpha=0", "bogus=1", "history"});
       maybe_flag(a, "--json");

@@ -13,6 +13,7 @@
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/point_set_file.h"
 #include "aapat/temporal/engine_taa_settings.h"
+#include "aapat/temporal/pan_distribution.h"
 #include "aapat/temporal/pan_model.h"
 #include "aapat/temporal/sequence_export.h"
 #include "aapat/temporal/sequence_generators.h"
@@ -28,6 +29,8 @@
 
 namespace aapat {
 namespace {
+
+constexpr size_t kMaxPanColumns = 8;  // velocities shown one by one in the text table
 
 std::optional<Pattern> optional_pattern(const std::string& name) {
   if (name.empty()) return std::nullopt;
@@ -170,14 +173,16 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
     std::vector<std::string> sequences, velocities{kPanVelocities.begin(), kPanVelocities.end()};
     std::string taa;
     std::vector<std::string> taa_set;
-    double ratio = 1;
+    double ratio = 1, max_speed = kDefaultRandomPanSpeed;
+    int random_velocities = 0;
+    uint64_t seed = 1;
     MetricOptions metric;
     bool json = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("sequences", o->sequences,
                   "sequence files or generator specs (a generator without frames= takes the "
-                  "upscaler's phases for --ratio)")
+                  "upscaler's phases for --ratio); each after the first is compared with it")
       ->required();
   cmd->add_option("--taa", o->taa,
                   "the engine preset: its reconstruction, history sampler and blend")
@@ -188,19 +193,33 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
                   "in it)");
   auto* ratio = cmd->add_option("--ratio", o->ratio, "display / render resolution (>= 1)")
                     ->capture_default_str();
-  cmd->add_option(
-         "--velocity", o->velocities,
-         "DX,DY display pixels per frame, repeatable (0,0: still, the preset's still blend)")
+  auto* velocity =
+      cmd->add_option(
+             "--velocity", o->velocities,
+             "DX,DY display pixels per frame, repeatable (0,0: still, the preset's still blend)")
+          ->capture_default_str();
+  cmd->add_option("--random-velocities", o->random_velocities,
+                  fmt::format("N more velocities, each component uniform in +-MAX_SPEED from "
+                              "--seed (1 to {}; without --velocity, instead of its defaults): "
+                              "a comparison over many pans, as the velocity decides each one",
+                              kMaxRandomPanVelocities));
+  cmd->add_option("--max-speed", o->max_speed,
+                  "--random-velocities: the largest component, display pixels per frame")
       ->capture_default_str();
+  cmd->add_option("--seed", o->seed, "--random-velocities: the random seed")->capture_default_str();
   o->metric.add_to(cmd);
   cmd->add_flag("--json", o->json, "print JSON");
-  action = [o, cmd, ratio](std::ostream& out) {
+  action = [o, cmd, ratio, velocity](std::ostream& out) {
     if (!cmd->parsed()) return;
     const Objective objective = o->metric.resolve();
     const Metric metric = objective.metric();
     const EngineTaa taa = make_engine_taa(o->taa, o->ratio, parse_taa_overrides(o->taa_set));
     std::vector<Vec2> velocities;
-    for (const std::string& v : o->velocities) velocities.push_back(parse_velocity(v));
+    if (velocity->count() || o->random_velocities == 0)
+      for (const std::string& v : o->velocities) velocities.push_back(parse_velocity(v));
+    if (o->random_velocities != 0)
+      for (const Vec2 v : random_pan_velocities(o->random_velocities, o->max_speed, o->seed))
+        velocities.push_back(v);
     std::vector<Sequence> sequences;
     for (const std::string& spec : o->sequences) {
       std::string warning;
@@ -221,28 +240,41 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
       js["ratio"] = o->ratio;
       JsonObject::array_t list;
       for (size_t i = 0; i < sequences.size(); ++i)
-        list.push_back(pan_row_json(sequences[i], velocities, rows[i]));
+        list.push_back(
+            i == 0 ? pan_row_json(sequences[i], velocities, rows[i])
+                   : pan_row_json(sequences[i], velocities, rows[i], &sequences[0], &rows[0]));
       js["rows"] = list;
       out << json_text(js);
       return;
     }
     out << fmt::format("{}, panning: steady mean E2 / mean flicker per velocity (px/frame); {}\n",
                        engine_taa_text(taa), objective.caption());
+    // Past kMaxPanColumns velocities (--json has each) only the mean.
+    const bool each = velocities.size() <= kMaxPanColumns;
     size_t width = 8;
     for (const Sequence& s : sequences) width = std::max(width, s.name.size());
     out << fmt::format("{:<{}}", "sequence", width);
-    for (const Vec2 v : velocities)
-      out << fmt::format(" {:>15}", fmt::format("{:g},{:g}", v.x, v.y));
-    out << fmt::format(" {:>15}\n", "mean");
+    if (each)
+      for (const Vec2 v : velocities)
+        out << fmt::format(" {:>15}", fmt::format("{:g},{:g}", v.x, v.y));
+    out << fmt::format(" {:>15}\n", each ? "mean" : fmt::format("mean of {}", velocities.size()));
     for (size_t i = 0; i < sequences.size(); ++i) {
       out << fmt::format("{:<{}}", sequences[i].name, width);
       double e2 = 0, flicker = 0;
       for (const PanReport& r : rows[i]) {
-        out << fmt::format(" {:>7.4f}/{:<7.4f}", r.mean_e2, r.flicker);
+        if (each) out << fmt::format(" {:>7.4f}/{:<7.4f}", r.mean_e2, r.flicker);
         e2 += r.mean_e2 / static_cast<double>(rows[i].size());
         flicker += r.flicker / static_cast<double>(rows[i].size());
       }
       out << fmt::format(" {:>7.4f}/{:<7.4f}\n", e2, flicker);
+    }
+    for (size_t i = 1; i < sequences.size(); ++i) {
+      const PanComparison c = compare_pans(rows[i], rows[0]);
+      out << fmt::format(
+          "{} against {}: mean E2 lower at {} of {} velocities, {:+.2f} % on "
+          "average ({:+.1f} % to {:+.1f} %)\n",
+          sequences[i].name, sequences[0].name, c.lower, c.velocities, 100 * c.mean_change,
+          100 * c.lowest_change, 100 * c.highest_change);
     }
   };
 }

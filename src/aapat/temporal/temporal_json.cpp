@@ -1,5 +1,6 @@
 #include "aapat/temporal/temporal_json.h"
 
+#include "aapat/temporal/pan_distribution.h"
 #include "aapat/temporal/sequence_json.h"
 
 namespace aapat {
@@ -119,7 +120,8 @@ JsonObject engine_taa_json(std::string_view scene, const EngineRun& run, const S
 }
 
 JsonObject pan_row_json(const Sequence& s, const std::vector<Vec2>& velocities,
-                        const std::vector<PanReport>& reports) {
+                        const std::vector<PanReport>& reports, const Sequence* first,
+                        const std::vector<PanReport>* first_reports) {
   JsonObject::array_t per;
   double e2 = 0, flicker = 0;
   const auto n = static_cast<double>(velocities.size());
@@ -130,11 +132,19 @@ JsonObject pan_row_json(const Sequence& s, const std::vector<Vec2>& velocities,
     e2 += reports[k].mean_e2 / n;
     flicker += reports[k].flicker / n;
   }
-  return {{"sequence", s.name},
-          {"phases", s.period()},
-          {"mean_e2", e2},
-          {"flicker", flicker},
-          {"velocities", per}};
+  JsonObject row{{"sequence", s.name},
+                 {"phases", s.period()},
+                 {"mean_e2", e2},
+                 {"flicker", flicker},
+                 {"velocities", per}};
+  if (first && first_reports) {
+    const PanComparison c = compare_pans(reports, *first_reports);
+    row["against_first"] = {
+        {"sequence", first->name},          {"lower_at", c.lower},
+        {"velocities", c.velocities},       {"mean_change", c.mean_change},
+        {"lowest_change", c.lowest_change}, {"highest_change", c.highest_change}};
+  }
+  return row;
 }
 
 }  // namespace aapat
