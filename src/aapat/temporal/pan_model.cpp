@@ -102,8 +102,8 @@ void check_pan_input(const Sequence& s, const PanModel& m) {
 //
 // Frame f's reconstruction at display pixel pixel + (dx, dy) is the same for
 // every age and every frame k of a period that reads it, so `cache` (one per
-// display pixel, or null) keeps each one that was made: a pixel's period
-// reads each about K times (19 for Halton 18 under FSR 2 at 1.5).
+// display pixel) keeps each one that was made: a pixel's period reads each
+// about K times (19 for Halton 18 under FSR 2 at 1.5).
 struct Reconstruction {
   UpscaledSamples samples;
   double total = 0;
@@ -113,11 +113,10 @@ using ReconstructionCache = std::unordered_map<uint64_t, Reconstruction>;
 Kernel kernel_on_chains(const Sequence& s, const PanModel& m,
                         const std::vector<double>& age_weights,
                         const std::vector<std::vector<PanChainEntry>>& chains, int k,
-                        std::array<int, 2> pixel, ReconstructionCache* cache) {
+                        std::array<int, 2> pixel, ReconstructionCache& cache) {
   const Filter& h = m.reconstruction;
   const int period = s.period();
   Kernel out;
-  Reconstruction made;  // without a cache, the one reconstruction at a time
   // One frame's render sample reaches the pixel through many chain offsets:
   // its weights are summed into one sample (keyed by its position on a
   // 1/1024-pixel grid; two render samples are a render pixel apart), which
@@ -137,25 +136,19 @@ Kernel kernel_on_chains(const Sequence& s, const PanModel& m,
     for (const auto [dx, dy, c] : chains[d]) {
       const std::array<int, 2> at{dx, dy};
       // The frame's reconstruction at display pixel pixel + at.
-      Reconstruction* r = &made;
-      bool fresh = true;
-      if (cache) {
-        // Chain offsets stay far inside 2^23 pixels (kMaxPanSpeed per frame).
-        const uint64_t where = uint64_t(uint32_t(f)) << 48 |
-                               uint64_t(uint32_t(dx + (1 << 23)) & 0xffffff) << 24 |
-                               uint64_t(uint32_t(dy + (1 << 23)) & 0xffffff);
-        const auto [slot, added] = cache->try_emplace(where);
-        r = &slot->second, fresh = added;
-      }
-      if (fresh) {
-        UpscaledSamples& frame = r->samples;
-        frame.x.clear(), frame.y.clear(), frame.w.clear(), frame.frame.clear();
-        r->total = reconstruction_samples(
+      // Chain offsets stay far inside 2^23 pixels (kMaxPanSpeed per frame).
+      const uint64_t where = uint64_t(uint32_t(f)) << 48 |
+                             uint64_t(uint32_t(dx + (1 << 23)) & 0xffffff) << 24 |
+                             uint64_t(uint32_t(dy + (1 << 23)) & 0xffffff);
+      const auto [slot, added] = cache.try_emplace(where);
+      Reconstruction& r = slot->second;
+      if (added)
+        r.total = reconstruction_samples(
             jitter, m.ratio, h,
-            {to_render(pixel[0] + at[0], m.ratio), to_render(pixel[1] + at[1], m.ratio)}, f, frame);
-      }
-      const UpscaledSamples& frame = r->samples;
-      const double total = r->total;
+            {to_render(pixel[0] + at[0], m.ratio), to_render(pixel[1] + at[1], m.ratio)}, f,
+            r.samples);
+      const UpscaledSamples& frame = r.samples;
+      const double total = r.total;
       if (!(std::abs(total) > 1e-9))  // where the engine falls back to one sample
         throw Error(fmt::format("the reconstruction filter {} gives frame {} of {} no weight",
                                 h.name(), f, s.name));
@@ -183,7 +176,8 @@ Kernel kernel_on_chains(const Sequence& s, const PanModel& m,
 Kernel pan_kernel(const Sequence& s, const PanModel& m, const std::vector<double>& age_weights,
                   int k, std::array<int, 2> pixel) {
   check_pan_input(s, m);
-  return kernel_on_chains(s, m, age_weights, pan_chains(m, age_weights.size()), k, pixel, nullptr);
+  ReconstructionCache cache;
+  return kernel_on_chains(s, m, age_weights, pan_chains(m, age_weights.size()), k, pixel, cache);
 }
 
 std::vector<int> pan_phase_pixels(double ratio) {
@@ -324,11 +318,11 @@ PanReport evaluate_pan(const Sequence& s, PanModel m, double alpha, const Metric
     };
     ReconstructionCache cache;
     const std::vector<Binned> first =
-        bin_kernel(kernel_on_chains(s, m, ages, chains, 0, pixel, &cache), metric);
+        bin_kernel(kernel_on_chains(s, m, ages, chains, 0, pixel, cache), metric);
     std::vector<Binned> before = first;
     for (int k = 1; k < period; ++k) {
       std::vector<Binned> now =
-          bin_kernel(kernel_on_chains(s, m, ages, chains, k, pixel, &cache), metric);
+          bin_kernel(kernel_on_chains(s, m, ages, chains, k, pixel, cache), metric);
       add_frame(now, before);
       before = std::move(now);
     }
