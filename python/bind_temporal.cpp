@@ -207,21 +207,16 @@ called as each step size finishes, or None.)doc"));
           seqs.push_back(py::isinstance<Sequence>(q)
                              ? q.cast<Sequence>()
                              : resolve_sequence_for_ratio(q.cast<std::string>(), ratio, nullptr));
-        std::vector<Vec2> vs =
-            velocities || random_velocities != 0 ? std::vector<Vec2>{} : default_pan_velocities();
-        if (velocities)
-          for (const auto& [dx, dy] : *velocities) vs.push_back({dx, dy});
-        if (random_velocities != 0)
-          for (const Vec2 v : random_pan_velocities(random_velocities, max_speed, seed))
-            vs.push_back(v);
+        std::optional<std::vector<Vec2>> given;
+        if (velocities) {
+          given.emplace();
+          for (const auto& [dx, dy] : *velocities) given->push_back({dx, dy});
+        }
+        const std::vector<Vec2> vs = pan_velocities(given, random_velocities, max_speed, seed);
         const Metric metric = make_metric(objective, filter, acuity, norm);
         const auto report = progress_of(progress);
         const auto rows = interruptible([&] { return evaluate_pans(seqs, t, vs, metric, report); });
-        py::list out;
-        for (size_t i = 0; i < seqs.size(); ++i)
-          out.append(to_python(i == 0 ? pan_row_json(seqs[i], vs, rows[i])
-                                      : pan_row_json(seqs[i], vs, rows[i], &seqs[0], &rows[0])));
-        return out;
+        return to_python(JsonObject(pan_rows_json(seqs, vs, rows))).cast<py::list>();
       },
       py::arg("sequences"), py::kw_only(), py::arg("taa"), py::arg("ratio") = 1.0,
       py::arg("settings") = py::dict(), py::arg("velocities") = py::none(),

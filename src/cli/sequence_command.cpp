@@ -214,12 +214,13 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
     const Objective objective = o->metric.resolve();
     const Metric metric = objective.metric();
     const EngineTaa taa = make_engine_taa(o->taa, o->ratio, parse_taa_overrides(o->taa_set));
-    std::vector<Vec2> velocities;
-    if (velocity->count() || o->random_velocities == 0)
-      for (const std::string& v : o->velocities) velocities.push_back(parse_velocity(v));
-    if (o->random_velocities != 0)
-      for (const Vec2 v : random_pan_velocities(o->random_velocities, o->max_speed, o->seed))
-        velocities.push_back(v);
+    std::optional<std::vector<Vec2>> given;
+    if (velocity->count()) {
+      given.emplace();
+      for (const std::string& v : o->velocities) given->push_back(parse_velocity(v));
+    }
+    const std::vector<Vec2> velocities =
+        pan_velocities(given, o->random_velocities, o->max_speed, o->seed);
     std::vector<Sequence> sequences;
     for (const std::string& spec : o->sequences) {
       std::string warning;
@@ -238,12 +239,7 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
       js["taa"] = o->taa;
       js["taa_settings"] = engine_taa_text(taa);
       js["ratio"] = o->ratio;
-      JsonObject::array_t list;
-      for (size_t i = 0; i < sequences.size(); ++i)
-        list.push_back(
-            i == 0 ? pan_row_json(sequences[i], velocities, rows[i])
-                   : pan_row_json(sequences[i], velocities, rows[i], &sequences[0], &rows[0]));
-      js["rows"] = list;
+      js["rows"] = pan_rows_json(sequences, velocities, rows);
       out << json_text(js);
       return;
     }

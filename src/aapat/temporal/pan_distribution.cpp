@@ -30,6 +30,16 @@ std::vector<Vec2> random_pan_velocities(int count, double max_speed, uint64_t se
   return out;
 }
 
+std::vector<Vec2> pan_velocities(const std::optional<std::vector<Vec2>>& given, int random_count,
+                                 double max_speed, uint64_t seed) {
+  std::vector<Vec2> out = given               ? *given
+                          : random_count == 0 ? default_pan_velocities()
+                                              : std::vector<Vec2>{};
+  if (random_count != 0)
+    for (const Vec2 v : random_pan_velocities(random_count, max_speed, seed)) out.push_back(v);
+  return out;
+}
+
 PanComparison compare_pans(const std::vector<PanReport>& ours,
                            const std::vector<PanReport>& theirs) {
   if (ours.size() != theirs.size() || ours.empty())

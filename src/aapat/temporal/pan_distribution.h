@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "aapat/core/geometry.h"
@@ -20,6 +21,12 @@ inline constexpr double kDefaultRandomPanSpeed = 1.5;
 // rounded to 1/1000 so that they print as they are used. Throws
 // ParameterError naming "random-velocities" or "max-speed".
 std::vector<Vec2> random_pan_velocities(int count, double max_speed, uint64_t seed);
+
+// What `sequence pan` and Python's sequence_pan evaluate: the velocities
+// given (none given: default_pan_velocities(), unless random ones are
+// asked for), then `random_count` random ones (0: none).
+std::vector<Vec2> pan_velocities(const std::optional<std::vector<Vec2>>& given, int random_count,
+                                 double max_speed, uint64_t seed);
 
 // One sequence's steady mean E2 against another's (the first of a
 // comparison) at the same velocities: at how many it is lower, and the

@@ -119,32 +119,36 @@ JsonObject engine_taa_json(std::string_view scene, const EngineRun& run, const S
   return doc;
 }
 
-JsonObject pan_row_json(const Sequence& s, const std::vector<Vec2>& velocities,
-                        const std::vector<PanReport>& reports, const Sequence* first,
-                        const std::vector<PanReport>* first_reports) {
-  JsonObject::array_t per;
-  double e2 = 0, flicker = 0;
+JsonObject::array_t pan_rows_json(const std::vector<Sequence>& sequences,
+                                  const std::vector<Vec2>& velocities,
+                                  const std::vector<std::vector<PanReport>>& reports) {
+  JsonObject::array_t rows;
   const auto n = static_cast<double>(velocities.size());
-  for (size_t k = 0; k < velocities.size(); ++k) {
-    per.push_back({{"velocity", {velocities[k].x, velocities[k].y}},
-                   {"mean_e2", reports[k].mean_e2},
-                   {"flicker", reports[k].flicker}});
-    e2 += reports[k].mean_e2 / n;
-    flicker += reports[k].flicker / n;
+  for (size_t i = 0; i < sequences.size(); ++i) {
+    JsonObject::array_t per;
+    double e2 = 0, flicker = 0;
+    for (size_t k = 0; k < velocities.size(); ++k) {
+      per.push_back({{"velocity", {velocities[k].x, velocities[k].y}},
+                     {"mean_e2", reports[i][k].mean_e2},
+                     {"flicker", reports[i][k].flicker}});
+      e2 += reports[i][k].mean_e2 / n;
+      flicker += reports[i][k].flicker / n;
+    }
+    JsonObject row{{"sequence", sequences[i].name},
+                   {"phases", sequences[i].period()},
+                   {"mean_e2", e2},
+                   {"flicker", flicker},
+                   {"velocities", per}};
+    if (i > 0) {
+      const PanComparison c = compare_pans(reports[i], reports[0]);
+      row["against_first"] = {
+          {"sequence", sequences[0].name},    {"lower_at", c.lower},
+          {"velocities", c.velocities},       {"mean_change", c.mean_change},
+          {"lowest_change", c.lowest_change}, {"highest_change", c.highest_change}};
+    }
+    rows.push_back(row);
   }
-  JsonObject row{{"sequence", s.name},
-                 {"phases", s.period()},
-                 {"mean_e2", e2},
-                 {"flicker", flicker},
-                 {"velocities", per}};
-  if (first && first_reports) {
-    const PanComparison c = compare_pans(reports, *first_reports);
-    row["against_first"] = {
-        {"sequence", first->name},          {"lower_at", c.lower},
-        {"velocities", c.velocities},       {"mean_change", c.mean_change},
-        {"lowest_change", c.lowest_change}, {"highest_change", c.highest_change}};
-  }
-  return row;
+  return rows;
 }
 
 }  // namespace aapat

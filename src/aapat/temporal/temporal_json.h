@@ -37,14 +37,14 @@ JsonObject sequence_search_json(const SequenceSearch& search, std::string_view m
 JsonObject engine_taa_json(std::string_view scene, const EngineRun& run, const Sequence& s,
                            const EngineTaa& taa, const EngineResult& r);
 
-// One row of `aapat sequence pan --json` (Python's sequence_pan returns the
-// list): sequence, phases, mean_e2 and flicker (the means over the
-// velocities), velocities: [{velocity [dx, dy], mean_e2, flicker}]; with
-// the first row's reports (every row after the first), against_first:
-// {sequence, lower_at, velocities, mean_change, lowest_change,
-// highest_change} (pan_distribution.h; changes as fractions).
-JsonObject pan_row_json(const Sequence& s, const std::vector<Vec2>& velocities,
-                        const std::vector<PanReport>& reports, const Sequence* first = nullptr,
-                        const std::vector<PanReport>* first_reports = nullptr);
+// The rows of `aapat sequence pan --json` (Python's sequence_pan returns
+// them), one per sequence: sequence, phases, mean_e2 and flicker (the means
+// over the velocities), velocities: [{velocity [dx, dy], mean_e2, flicker}];
+// every row after the first, against_first: {sequence, lower_at,
+// velocities, mean_change, lowest_change, highest_change} (its mean E2
+// against the first's, pan_distribution.h; changes as fractions).
+JsonObject::array_t pan_rows_json(const std::vector<Sequence>& sequences,
+                                  const std::vector<Vec2>& velocities,
+                                  const std::vector<std::vector<PanReport>>& reports);
 
 }  // namespace aapat
