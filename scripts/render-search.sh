@@ -59,13 +59,18 @@ def wins(m):
     return (sum(r < rb for (r, _), (rb, _) in zip(m, base)),
             sum(f < fb for (_, f), (_, fb) in zip(m, base)))
 
-frames = len(json.loads(subprocess.run([aapat, "sequence", "generate", base_spec, "-o", "-"],
-                                      check=True, capture_output=True, text=True).stdout)["jitter"])
+def jitter_of(spec_or_file):
+    """A sequence file's jitter, or a generator spec's (aapat sequence generate)."""
+    if os.path.isfile(spec_or_file):
+        return [tuple(p) for p in json.load(open(spec_or_file))["jitter"]]
+    return [tuple(p) for p in json.loads(subprocess.run(
+        [aapat, "sequence", "generate", spec_or_file, "-o", "-"], check=True,
+        capture_output=True, text=True).stdout)["jitter"]]
+
+frames = len(jitter_of(base_spec))
 if start == "lattice":  # the library's display-phase lattice, as long as BASE
     start = f"display-lattice:ratio={ratio},frames={frames}"
-jitter = [tuple(p) for p in json.loads(subprocess.run(
-    [aapat, "sequence", "generate", start, "-o", "-"], check=True, capture_output=True,
-    text=True).stdout)["jitter"]]
+jitter = jitter_of(start)
 if len(jitter) != frames:
     sys.exit(f"render-search: START has {len(jitter)} frames, BASE {frames}")
 
