@@ -9,9 +9,9 @@
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/objective.h"
-#include "aapat/temporal/engine_taa.h"
-#include "aapat/temporal/sequence_generators.h"
-#include "aapat/temporal/sequence_optimizer.h"
+#include "aapat/temporal/engine/engine_taa.h"
+#include "aapat/temporal/search/still_search.h"
+#include "aapat/temporal/sequence/sequence_generators.h"
 
 namespace aapat {
 namespace {
@@ -50,8 +50,7 @@ void UpscaleObjective(benchmark::State& state) {
   const Metric metric = parse_objective("recommended").metric();
   SequenceSearch search;
   search.frames = 18;
-  search.ratio = 1.5;
-  search.reconstruction = make_filter("lanczos:lobes=2");
+  search.upscale = make_upscale(1.5);
   const Sequence s = make_sequence("halton:frames=18");
   for (auto _ : state) benchmark::DoNotOptimize(sequence_objective(s, search, metric).objective);
 }

@@ -1,19 +1,19 @@
 // Temporal E2 evaluations per second (issue 16): one evaluation is the
 // sequence's objective under EMA alpha 0.1, the accumulated kernel of every
 // steady phase built and its E2 taken, plus the flicker of every transition
-// (temporal/sequence_optimizer.h), for K = 8, 16, 64 Halton jitter frames.
+// (temporal/search/still_search.h), for K = 8, 16, 64 Halton jitter frames.
 // Results and the machine: docs/benchmarks.md.
 #include <benchmark/benchmark.h>
 
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter_catalog.h"
-#include "aapat/temporal/engine_taa_settings.h"
-#include "aapat/temporal/pan_model.h"
-#include "aapat/temporal/pan_objective.h"
-#include "aapat/temporal/sequence_epigraph.h"
-#include "aapat/temporal/sequence_generators.h"
-#include "aapat/temporal/sequence_optimizer.h"
-#include "aapat/temporal/temporal_metrics.h"
+#include "aapat/temporal/engine/engine_taa_settings.h"
+#include "aapat/temporal/model/pan_model.h"
+#include "aapat/temporal/model/temporal_metrics.h"
+#include "aapat/temporal/search/pan_objective.h"
+#include "aapat/temporal/search/still_epigraph.h"
+#include "aapat/temporal/search/still_search.h"
+#include "aapat/temporal/sequence/sequence_generators.h"
 
 namespace aapat {
 namespace {
@@ -76,7 +76,7 @@ void SequenceConstraints(benchmark::State& state) {
 }
 BENCHMARK(SequenceConstraints)->Arg(8)->Arg(18)->Arg(32)->Arg(72)->Unit(benchmark::kMicrosecond);
 
-// The search under motion's objective (temporal/pan_objective.h): FSR 2 at
+// The search under motion's objective (temporal/search/pan_objective.h): FSR 2 at
 // 1.5, Halton 18, the five default velocities, acuity uniform:step=4.
 // Arg 0: set() (every kernel binned); 1: one move() (a frame's ages rebinned);
 // 2: evaluate_pan of the same five, what each try cost before; 3: one
@@ -88,7 +88,7 @@ void PanObjectiveUpdate(benchmark::State& state) {
   std::vector<PanCase> cases;
   for (const std::string_view v : kPanVelocities) {
     const Vec2 velocity = parse_velocity(v);
-    cases.push_back({PanModel{1.5, taa.reconstruction, taa.history, velocity},
+    cases.push_back({PanModel{{1.5, taa.upscale.reconstruction}, taa.history, velocity},
                      steady_alpha(taa, velocity.x != 0 || velocity.y != 0)});
   }
   std::vector<Vec2> jitter;

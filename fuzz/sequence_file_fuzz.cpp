@@ -7,9 +7,9 @@
 
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter_catalog.h"
-#include "aapat/temporal/accumulation.h"
-#include "aapat/temporal/sequence_json.h"
-#include "aapat/temporal/temporal_metrics.h"
+#include "aapat/temporal/model/accumulation.h"
+#include "aapat/temporal/model/temporal_metrics.h"
+#include "aapat/temporal/sequence/sequence_json.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

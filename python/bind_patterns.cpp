@@ -8,10 +8,10 @@
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/aapat_catalog.h"
 #include "aapat/io/pattern_json.h"
-#include "aapat/limits/limits_table.h"
+#include "aapat/registry/limits_table.h"
+#include "aapat/registry/spec_registries.h"
 #include "aapat/render/scene.h"
 #include "aapat/render/texture_filter.h"
-#include "aapat/temporal/spec_registries.h"
 #include "bindings.h"
 
 namespace aapat::python {

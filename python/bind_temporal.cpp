@@ -4,15 +4,17 @@
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/hardware_layout.h"
-#include "aapat/temporal/engine_taa_settings.h"
-#include "aapat/temporal/pan_distribution.h"
-#include "aapat/temporal/pan_model.h"
-#include "aapat/temporal/pan_search.h"
-#include "aapat/temporal/sequence_generators.h"
-#include "aapat/temporal/sequence_json.h"
-#include "aapat/temporal/sequence_optimizer.h"
-#include "aapat/temporal/temporal_json.h"
-#include "aapat/temporal/temporal_metrics.h"
+#include "aapat/temporal/engine/engine_pans.h"
+#include "aapat/temporal/engine/engine_taa_settings.h"
+#include "aapat/temporal/model/model_json.h"
+#include "aapat/temporal/model/pan_distribution.h"
+#include "aapat/temporal/model/pan_model.h"
+#include "aapat/temporal/model/temporal_metrics.h"
+#include "aapat/temporal/search/pan_search.h"
+#include "aapat/temporal/search/search_json.h"
+#include "aapat/temporal/search/still_search.h"
+#include "aapat/temporal/sequence/sequence_generators.h"
+#include "aapat/temporal/sequence/sequence_json.h"
 #include "bindings.h"
 
 namespace aapat::python {
@@ -85,8 +87,9 @@ has them all), a name of the optimized ones ("aapat-taa-8") or a file.)doc");
         const auto r = interruptible([&] { return evaluate_temporal(s, a, metric); });
         return to_python(temporal_report_json(s, r));
       },
-      py::arg("sequence"), py::kw_only(), py::arg("model") = "ema", py::arg("alpha") = 0.1,
-      py::arg("window") = 0, py::arg("resolve") = "", AAPAT_OBJECTIVE_ARGS,
+      py::arg("sequence"), py::kw_only(), py::arg("model") = std::string(kDefaultAccumulation),
+      py::arg("alpha") = kDefaultAlpha, py::arg("window") = 0, py::arg("resolve") = "",
+      AAPAT_OBJECTIVE_ARGS,
       with_metric_args(
           (std::string(R"doc(The temporal metrics of a sequence (a Sequence or a spec) under an
 accumulation model: a dict with the keys of one row of `aapat sequence eval
@@ -105,10 +108,7 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
          const py::object& progress, const py::object& objective, const py::object& filter,
          const py::object& acuity, const py::object& norm) {
         SequenceSearch s;
-        if (!ratio.is_none()) {
-          s.ratio = ratio.cast<double>();
-          s.reconstruction = make_filter(reconstruct);
-        }
+        if (!ratio.is_none()) s.upscale = make_upscale(ratio.cast<double>(), reconstruct);
         s.frames = frames;
         s.samples_per_frame = samples_per_frame;
         s.flicker_weight = flicker_weight;
@@ -138,8 +138,9 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
       py::arg("jitter_radius") = py::none(), py::arg("measure") = "worst",
       py::arg("starts") = SequenceSearch{}.starts, py::arg("seed") = SequenceSearch{}.seed,
       py::arg("iterations") = SequenceSearch{}.iterations, py::arg("equal_weights") = false,
-      py::arg("api") = "", py::arg("model") = "ema", py::arg("alpha") = 0.1, py::arg("window") = 0,
-      py::arg("ratio") = py::none(), py::arg("reconstruct") = "lanczos:lobes=2",
+      py::arg("api") = "", py::arg("model") = std::string(kDefaultAccumulation),
+      py::arg("alpha") = kDefaultAlpha, py::arg("window") = 0, py::arg("ratio") = py::none(),
+      py::arg("reconstruct") = std::string(kDefaultReconstruction),
       py::arg("progress") = py::none(), AAPAT_OBJECTIVE_ARGS,
       R"doc(aapat optimize --sequence: the positions of every frame's samples minimizing
 worst (or mean) steady E2 + flicker_weight x flicker under the model. The same
@@ -216,7 +217,7 @@ called as each step size finishes, or None.)doc"));
         const Metric metric = make_metric(objective, filter, acuity, norm);
         const auto report = progress_of(progress);
         const auto rows = interruptible([&] { return evaluate_pans(seqs, t, vs, metric, report); });
-        return to_python(JsonObject(pan_rows_json(seqs, vs, rows))).cast<py::list>();
+        return to_python(JsonObject(pan_rows_json(rows))).cast<py::list>();
       },
       py::arg("sequences"), py::kw_only(), py::arg("taa"), py::arg("ratio") = 1.0,
       py::arg("settings") = py::dict(), py::arg("velocities") = py::none(),

@@ -1,11 +1,11 @@
-// `aapat limits`: every limit aapat checks (limits/limits_table.h), as text,
+// `aapat limits`: every limit aapat checks (registry/limits_table.h), as text,
 // --json (Python's aapat.limits()) or --markdown (docs/limits.md's table).
 #include <fmt/format.h>
 
 #include <memory>
 #include <ostream>
 
-#include "aapat/limits/limits_table.h"
+#include "aapat/registry/limits_table.h"
 #include "cli/commands.h"
 
 namespace aapat {

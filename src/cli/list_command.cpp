@@ -1,4 +1,4 @@
-// `aapat list`: every registry of specs and catalog (temporal/spec_registries.h),
+// `aapat list`: every registry of specs and catalog (registry/spec_registries.h),
 // one line per entry, with their parameters and defaults; --json as Python's
 // aapat.registry().
 #include <fmt/format.h>
@@ -8,7 +8,7 @@
 
 #include "aapat/generate/catalog.h"
 #include "aapat/io/json_report.h"
-#include "aapat/temporal/spec_registries.h"
+#include "aapat/registry/spec_registries.h"
 #include "cli/commands.h"
 
 namespace aapat {

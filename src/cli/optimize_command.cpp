@@ -18,13 +18,13 @@
 #include "aapat/optimize/lattice_search.h"
 #include "aapat/optimize/multistart.h"
 #include "aapat/study/optimize_run.h"
-#include "aapat/temporal/engine_taa_settings.h"
-#include "aapat/temporal/pan_model.h"
-#include "aapat/temporal/pan_search.h"
-#include "aapat/temporal/sequence_generators.h"
-#include "aapat/temporal/sequence_json.h"
-#include "aapat/temporal/sequence_optimizer.h"
-#include "aapat/temporal/temporal_json.h"
+#include "aapat/temporal/engine/engine_taa_settings.h"
+#include "aapat/temporal/model/pan_model.h"
+#include "aapat/temporal/search/pan_search.h"
+#include "aapat/temporal/search/search_json.h"
+#include "aapat/temporal/search/still_search.h"
+#include "aapat/temporal/sequence/sequence_generators.h"
+#include "aapat/temporal/sequence/sequence_json.h"
 #include "aapat/work/work_items.h"
 #include "cli/app.h"
 #include "cli/commands.h"
@@ -109,22 +109,12 @@ struct OptimizeOptions {
   // --ratio R: the jitter of an upscale from display / R, reconstructed by --reconstruct.
   double ratio = 1;
   bool ratio_given = false;
-  std::string reconstruct = "lanczos:lobes=2";
-  // --taa PRESET: the search under motion (temporal/pan_search.h).
+  std::string reconstruct{kDefaultReconstruction};
+  // --taa PRESET: the search under motion (temporal/search/pan_search.h).
   std::string taa, from;
   std::vector<std::string> taa_set, velocities;
   double step = PanSequenceSearch{}.step, min_step = PanSequenceSearch{}.min_step;
 };
-
-// A jitter shorter than FSR 2's phase count at the ratio works, but is not
-// what an upscaler expects: a warning, not an error.
-void warn_short_of_upscaler_rule(int frames, double ratio) {
-  if (frames < upscaler_phase_count(ratio))
-    warnings() << fmt::format(
-        "aapat: warning: --sequence {} is shorter than the upscaler's rule int(8 R^2) = {} at "
-        "ratio {:g} (FSR 2's ffxFsr2GetJitterPhaseCount)\n",
-        frames, upscaler_phase_count(ratio), ratio);
-}
 
 // `optimize --sequence K --taa PRESET`: the compass search on the pan model.
 void run_pan_search(const OptimizeOptions& o, std::ostream& out) {
@@ -138,7 +128,6 @@ void run_pan_search(const OptimizeOptions& o, std::ostream& out) {
   s.step = o.step;
   s.min_step = o.min_step;
   s.jitter_bound = o.jitter_bound;
-  if (o.ratio_given) warn_short_of_upscaler_rule(o.sequence, o.ratio);
   PanSequenceSearchResult r;
   try {
     s.start = pan_search_start(o.sequence, o.from);
@@ -148,6 +137,7 @@ void run_pan_search(const OptimizeOptions& o, std::ostream& out) {
   } catch (const ParameterError& e) {
     throw Error(fmt::format("--{}{}", e.parameter(), e.detail()));
   }
+  for (const std::string& warning : r.warnings) warnings() << "aapat: warning: " << warning << "\n";
   if (!o.output.empty()) save_sequence_file(r.best, o.output);
   if (o.json) {
     out << json_text(pan_search_json(s, objective, r));
@@ -169,7 +159,7 @@ void run_pan_search(const OptimizeOptions& o, std::ostream& out) {
   if (!o.output.empty()) out << "wrote " << o.output << "\n";
 }
 
-// `optimize --sequence K`: the temporal search (temporal/sequence_optimizer.h).
+// `optimize --sequence K`: the temporal search (temporal/search/still_search.h).
 void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   if (!o.pattern.empty() || !o.family.empty())
     throw Error("--sequence searches K one-pixel frames: give no PATTERN and no --family");
@@ -196,11 +186,7 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   s.seed = o.seed;
   s.iterations = o.iterations;
   if (!o.api.empty()) s.profile = &api_profile(o.api);
-  if (o.ratio_given) {
-    s.ratio = o.ratio;
-    s.reconstruction = make_filter(o.reconstruct);
-    warn_short_of_upscaler_rule(s.frames, o.ratio);
-  }
+  if (o.ratio_given) s.upscale = make_upscale(o.ratio, o.reconstruct);
   SequenceSearchResult r;
   try {
     tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
@@ -209,6 +195,7 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   } catch (const ParameterError& e) {
     throw Error(fmt::format("--{}{}", e.parameter(), e.detail()));
   }
+  for (const std::string& warning : r.warnings) warnings() << "aapat: warning: " << warning << "\n";
   if (!o.output.empty()) save_sequence_file(r.best, o.output);
   if (o.json) {
     out << json_text(sequence_search_json(s, o.model.text(), objective, r));
@@ -216,9 +203,9 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   }
   out << fmt::format("optimized {} frames of {} sample(s) under {}{}, {}\n", s.frames,
                      s.samples_per_frame, o.model.text(),
-                     s.reconstruction ? fmt::format(", upscaled {:g}x through {}", s.ratio,
-                                                    s.reconstruction->name())
-                                      : "",
+                     s.upscale ? fmt::format(", upscaled {:g}x through {}", s.upscale->ratio,
+                                             s.upscale->reconstruction.name())
+                               : "",
                      objective.caption());
   out << fmt::format(
       "J = {} E2 + {} x mean flicker: {:.5f} (worst E2 {:.5f}, mean E2 {:.5f}, mean flicker "
@@ -241,8 +228,7 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
 
 void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ostream& out) {
   if (o.sequence > 0) return run_sequence_search(o, out);
-  if (o.pattern.empty() == o.family.empty())
-    throw Error("optimize: give either --family (a search) or a PATTERN to polish");
+  check_family_or_pattern(!o.family.empty(), !o.pattern.empty());
   if (!o.output.empty() && !is_pattern_path(o.output))
     throw Error(fmt::format("--output: '{}' must end in .json or .xyw", o.output));
   const Objective objective = o.metric.resolve();

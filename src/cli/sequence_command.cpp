@@ -12,15 +12,16 @@
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/point_set_file.h"
-#include "aapat/temporal/engine_taa_settings.h"
-#include "aapat/temporal/pan_distribution.h"
-#include "aapat/temporal/pan_model.h"
-#include "aapat/temporal/sequence_export.h"
-#include "aapat/temporal/sequence_generators.h"
-#include "aapat/temporal/sequence_json.h"
-#include "aapat/temporal/sequence_svg.h"
-#include "aapat/temporal/temporal_json.h"
-#include "aapat/temporal/temporal_metrics.h"
+#include "aapat/temporal/engine/engine_pans.h"
+#include "aapat/temporal/engine/engine_taa_settings.h"
+#include "aapat/temporal/model/model_json.h"
+#include "aapat/temporal/model/pan_distribution.h"
+#include "aapat/temporal/model/pan_model.h"
+#include "aapat/temporal/model/temporal_metrics.h"
+#include "aapat/temporal/sequence/sequence_export.h"
+#include "aapat/temporal/sequence/sequence_generators.h"
+#include "aapat/temporal/sequence/sequence_json.h"
+#include "aapat/temporal/sequence/sequence_svg.h"
 #include "cli/app.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
@@ -228,10 +229,10 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
           resolve_sequence_for_ratio(spec, o->ratio, ratio->count() ? &warning : nullptr));
       if (!warning.empty()) warnings() << "aapat: warning: " << warning << "\n";
     }
-    std::vector<std::vector<PanReport>> rows;
+    PanTable table;
     {
       Progress bar("pan");
-      rows = evaluate_pans(sequences, taa, velocities, metric, bar.callback());
+      table = evaluate_pans(sequences, taa, velocities, metric, bar.callback());
     }
     if (o->json) {
       JsonObject js = json_report("sequence pan");
@@ -239,7 +240,7 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
       js["taa"] = o->taa;
       js["taa_settings"] = engine_taa_text(taa);
       js["ratio"] = o->ratio;
-      js["rows"] = pan_rows_json(sequences, velocities, rows);
+      js["rows"] = pan_rows_json(table);
       out << json_text(js);
       return;
     }
@@ -254,22 +255,20 @@ void add_pan(CLI::App* parent, std::function<void(std::ostream&)>& action) {
       for (const Vec2 v : velocities)
         out << fmt::format(" {:>15}", fmt::format("{:g},{:g}", v.x, v.y));
     out << fmt::format(" {:>15}\n", each ? "mean" : fmt::format("mean of {}", velocities.size()));
-    for (size_t i = 0; i < sequences.size(); ++i) {
-      out << fmt::format("{:<{}}", sequences[i].name, width);
-      double e2 = 0, flicker = 0;
-      for (const PanReport& r : rows[i]) {
-        if (each) out << fmt::format(" {:>7.4f}/{:<7.4f}", r.mean_e2, r.flicker);
-        e2 += r.mean_e2 / static_cast<double>(rows[i].size());
-        flicker += r.flicker / static_cast<double>(rows[i].size());
-      }
-      out << fmt::format(" {:>7.4f}/{:<7.4f}\n", e2, flicker);
+    for (const PanRow& row : table.rows) {
+      out << fmt::format("{:<{}}", row.sequence, width);
+      if (each)
+        for (const PanReport& r : row.at)
+          out << fmt::format(" {:>7.4f}/{:<7.4f}", r.mean_e2, r.flicker);
+      out << fmt::format(" {:>7.4f}/{:<7.4f}\n", row.mean.mean_e2, row.mean.flicker);
     }
-    for (size_t i = 1; i < sequences.size(); ++i) {
-      const PanComparison c = compare_pans(rows[i], rows[0]);
+    for (const PanRow& row : table.rows) {
+      if (!row.against_first) continue;
+      const PanComparison& c = *row.against_first;
       out << fmt::format(
           "{} against {}: mean E2 lower at {} of {} velocities, {:+.2f} % on "
           "average ({:+.1f} % to {:+.1f} %)\n",
-          sequences[i].name, sequences[0].name, c.lower, c.velocities, 100 * c.mean_change,
+          row.sequence, table.rows[0].sequence, c.lower, c.velocities, 100 * c.mean_change,
           100 * c.lowest_change, 100 * c.highest_change);
     }
   };

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "aapat/temporal/sequence_json.h"
+#include "aapat/temporal/sequence/sequence_json.h"
 #include "testing/cli_run.h"
 
 namespace aapat {

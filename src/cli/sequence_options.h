@@ -5,13 +5,13 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "aapat/temporal/accumulation.h"
+#include "aapat/temporal/model/accumulation.h"
 
 namespace aapat {
 
 struct ModelOptions {
-  std::string model = "ema", resolve;
-  double alpha = 0.1;
+  std::string model{kDefaultAccumulation}, resolve;
+  double alpha = kDefaultAlpha;
   int window = 0;
 
   void add_to(CLI::App* cmd);

@@ -1,0 +1,75 @@
+// TAA as engines run it (engine_taa.h renders it): the settings, and the
+// presets named after public implementations, each a set of values read at
+// its source (docs/temporal.md, "Engine presets", gives the file and line of
+// every number). Any setting of a preset can be overridden by its key:
+//   reconstruct        filter spec: each frame's samples into display pixels
+//                      (distances in render pixels; box:width=1 is the
+//                      render pixel's own sample)
+//   history            bilinear, catmull-rom-9, catmull-rom-5, lanczos2
+//   rectify            none, clamp, clip;  box  minmax, variance;  gamma
+//   alpha              a fixed current-frame weight (sets alpha_min = alpha_max)
+//   alpha_min, alpha_max, count_step, count_max, count_max_motion
+//                      the blend: alpha = clamp(1 / (1 + count_step n),
+//                      alpha_min, alpha_max), n the frames the pixel's history
+//                      holds, at most count_max (count_max_motion while the
+//                      scene moves); a pixel without history takes alpha 1.
+#pragma once
+
+#include <algorithm>
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "aapat/core/filter.h"
+#include "aapat/temporal/engine/rectification.h"
+#include "aapat/temporal/model/history_sampling.h"
+#include "aapat/temporal/sequence/render_scale.h"
+
+namespace aapat {
+
+struct EngineTaa {
+  std::string preset = "custom";
+  Upscale upscale;     // the render scale and each frame's reconstruction filter
+  std::string jitter;  // the preset's own sequence spec (its phases for the ratio)
+  HistorySampler history = HistorySampler::bilinear;
+  Rectification rectify = Rectification::clip;
+  RectificationBox box = RectificationBox::variance;
+  double gamma = 1;
+  double alpha_min = 0, alpha_max = 1, count_step = 1;
+  int count_max = 16, count_max_motion = 16;
+  std::vector<std::pair<std::string, std::string>> overrides;  // as given, for reports
+};
+
+struct EnginePresetInfo {
+  std::string name, summary, source;
+};
+// ue4, fsr2, godot, bevy.
+const std::vector<EnginePresetInfo>& engine_presets();
+
+// The blend's current-frame weight for a pixel whose history holds n frames:
+// clamp(1 / (1 + count_step n), alpha_min, alpha_max).
+inline double blend_alpha(const EngineTaa& t, int n) {
+  return std::clamp(1 / (1 + t.count_step * n), t.alpha_min, t.alpha_max);
+}
+// The weight once every pixel's history is full (n at its cap), still or moving.
+inline double steady_alpha(const EngineTaa& t, bool moving) {
+  return blend_alpha(t, moving ? t.count_max_motion : t.count_max);
+}
+
+// "KEY=VALUE" items (`--taa-set`) as make_engine_taa's overrides; throws
+// ParameterError naming taa-set for an item without a key and an '='.
+std::vector<std::pair<std::string, std::string>> parse_taa_overrides(
+    const std::vector<std::string>& items);
+
+// A preset at a ratio, with overrides (key, value text) applied in order.
+// Throws Error naming the unknown preset or key, or the value out of range.
+EngineTaa make_engine_taa(std::string_view preset, double ratio,
+                          const std::vector<std::pair<std::string, std::string>>& overrides = {});
+
+// "fsr2 at 1.5x (lanczos:lobes=2 reconstruction, lanczos2 history, clamp to a variance box
+// gamma 1.25, alpha 1/(n+1), n <= 16, 4 moving)", for reports.
+std::string engine_taa_text(const EngineTaa& t);
+
+}  // namespace aapat

@@ -1,0 +1,121 @@
+#include "aapat/temporal/engine/engine_taa.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "aapat/render/renderer.h"
+#include "aapat/temporal/sequence/sequence_generators.h"
+#include "testing/centre_reference.h"
+
+namespace aapat {
+namespace {
+
+const ReferenceSource kEngineCheapReference = testing::centre_reference;
+
+EngineTaa plain_accumulation(double alpha_fixed) {
+  EngineTaa t = make_engine_taa("custom", 1,
+                                {{"reconstruct", "box:width=1"},
+                                 {"history", "bilinear"},
+                                 {"rectify", "none"},
+                                 {"count_max", "1000000"},
+                                 {"count_max_motion", "1000000"}});
+  if (alpha_fixed > 0) t.alpha_min = t.alpha_max = alpha_fixed;
+  return t;
+}
+
+std::vector<Image> frames_of(const EngineRun& run, const Sequence& s, const EngineTaa& t) {
+  std::vector<Image> out;
+  render_engine_taa(
+      run, s, t, [&](int, const Image& img) { out.push_back(img); }, kEngineCheapReference);
+  return out;
+}
+
+// At ratio 1 with the pixel's own sample and alpha 1, a frame is the scene
+// rendered with its jitter; with alpha 1/(n + 1) and no rectification, K
+// frames after a cut average the K phases: the linear model's box, which
+// is the K-sample pattern rendered at equal weights.
+TEST(EngineTaa, WithoutRectificationItIsTheLinearAccumulation) {
+  const Scene scene = make_scene("spiral", 14, 11);
+  const Sequence s = make_sequence("r2:frames=5");
+  EngineRun run{scene, make_motion("static", 14, 11), 14, 11, 5, 0, {}};
+  const std::vector<Image> own = frames_of(run, s, plain_accumulation(1));
+  for (int f = 0; f < 5; ++f) {
+    Sampling one;
+    one.pattern = s.frames[static_cast<size_t>(f)];
+    const Image expected = render(scene, 14, 11, one, std::nullopt);
+    for (size_t i = 0; i < expected.values.size(); ++i)
+      ASSERT_NEAR(own[static_cast<size_t>(f)].values[i], expected.values[i], 1e-12);
+  }
+  const std::vector<Image> mean = frames_of(run, s, plain_accumulation(0));
+  const std::vector<Vec2> all = samples_in_order(s);
+  Sampling union_sampling;
+  union_sampling.pattern = single_pixel_pattern("union", all, std::vector<double>(5, 1.0));
+  const Image expected = render(scene, 14, 11, union_sampling, std::nullopt);
+  for (size_t i = 0; i < expected.values.size(); ++i)
+    ASSERT_NEAR(mean[4].values[i], expected.values[i], 1e-12);
+}
+
+// A whole-pixel pan reprojects exactly through the bilinear sampler: away
+// from the border the history entered at, the accumulation equals the
+// moving frame's scene rendered with all the phases' samples.
+TEST(EngineTaa, AWholePixelPanReprojectsExactly) {
+  const Scene scene = make_scene("circles", 20, 12);
+  const Sequence s = make_sequence("halton:frames=4");
+  EngineRun run{scene, make_motion("pan:dx=1,dy=0", 20, 12), 20, 12, 4, 0, {}};
+  const std::vector<Image> frames = frames_of(run, s, plain_accumulation(0));
+  Sampling union_sampling;
+  const std::vector<Vec2> all = samples_in_order(s);
+  union_sampling.pattern = single_pixel_pattern("union", all, std::vector<double>(4, 1.0));
+  const Image expected =
+      render(moved_scene(scene, run.motion, 3), 20, 12, union_sampling, std::nullopt);
+  for (int j = 0; j < 12; ++j)
+    for (int i = 3; i < 20; ++i)
+      ASSERT_NEAR(frames[3].at(i, j), expected.at(i, j), 1e-12) << i << "," << j;
+}
+
+// At ratio 2 the render grid has half the pixels a side, and a display pixel
+// reads its render pixel's sample (box of one render pixel).
+TEST(EngineTaa, RatioTwoSamplesTheCoarseGrid) {
+  const Scene scene = make_scene("spiral", 16, 12);
+  Sequence s;  // the render pixel's centre
+  s.name = "centre";
+  s.frames.push_back(jitter_frame({0, 0}, "centre"));
+  EngineRun run{scene, make_motion("static", 16, 12), 16, 12, 1, 0, {}};
+  EngineTaa t = plain_accumulation(1);
+  t.upscale.ratio = 2;
+  std::vector<Image> frames;
+  const EngineResult r = render_engine_taa(
+      run, s, t, [&](int, const Image& img) { frames.push_back(img); }, kEngineCheapReference);
+  EXPECT_EQ(r.render_width, 8);
+  EXPECT_EQ(r.render_height, 6);
+  // Render pixel (i, j)'s centre sits at display (2i + 1/2, 2j + 1/2),
+  // between the display pixels (2i, 2j) .. (2i + 1, 2j + 1) that show it.
+  for (int j = 0; j < 12; ++j)
+    for (int i = 0; i < 16; ++i) {
+      const double v = shade(scene, {2.0 * (i / 2) + 0.5, 2.0 * (j / 2) + 0.5});
+      ASSERT_NEAR(frames[0].at(i, j), std::clamp(v, 0.0, 1.0), 1e-12) << i << "," << j;
+    }
+}
+
+TEST(EngineTaa, RefusesWhatItCannotRender) {
+  const Scene scene = make_scene("spiral", 10, 10);
+  EngineRun run{scene, make_motion("static", 10, 10), 10, 10, 2, 0, {}};
+  const EngineTaa t = make_engine_taa("fsr2", 1.5);
+  Sequence tiled = make_sequence("halton:frames=2");
+  tiled.frames[0].tile_w = tiled.frames[1].tile_w = 2;
+  tiled.frames[0].sets.push_back(tiled.frames[0].sets[0]);
+  tiled.frames[1].sets.push_back(tiled.frames[1].sets[0]);
+  tiled.frames[0].weights.push_back(tiled.frames[0].weights[0]);
+  tiled.frames[1].weights.push_back(tiled.frames[1].weights[0]);
+  EXPECT_THROW(render_engine_taa(run, tiled, t, {}, kEngineCheapReference), Error);
+  run.frames = 0;
+  EXPECT_THROW(render_engine_taa(run, make_sequence("r2"), t, {}, kEngineCheapReference), Error);
+  run.frames = 2;
+  run.warmup = -1;
+  EXPECT_THROW(render_engine_taa(run, make_sequence("r2"), t, {}, kEngineCheapReference), Error);
+}
+
+}  // namespace
+}  // namespace aapat
