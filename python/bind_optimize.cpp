@@ -65,8 +65,7 @@ OptimizeRunResult run_optimize(const py::object& family, const py::object& patte
     s.start = to_pattern(pattern);
     s.start_label = py::isinstance<py::str>(pattern) ? pattern.cast<std::string>() : s.start->name;
   }
-  if (s.family.empty() == !s.start.has_value())
-    throw Error("optimize: give either family= (a search) or pattern= (to polish)");
+  check_family_or_pattern(!s.family.empty(), s.start.has_value());
   s.placement = placement;
   if (!starts.is_none()) s.starts = starts.cast<int>();
   s.seed = seed;

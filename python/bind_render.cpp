@@ -9,9 +9,9 @@
 #include "aapat/io/scene_json.h"
 #include "aapat/render/animation.h"
 #include "aapat/study/study_json.h"
-#include "aapat/temporal/engine_taa.h"
-#include "aapat/temporal/sequence_json.h"
-#include "aapat/temporal/temporal_json.h"
+#include "aapat/temporal/engine/engine_json.h"
+#include "aapat/temporal/engine/engine_taa.h"
+#include "aapat/temporal/sequence/sequence_json.h"
 #include "bindings.h"
 
 namespace aapat::python {
@@ -110,13 +110,9 @@ FLIP as an (h, w) array.
          bool reference, int reference_samples, const std::string& reference_filter,
          const std::string& texture, const py::dict& options) {
         const auto [w, h] = size;
-        if (!(w >= 1 && h >= 1 && w <= 16384 && h <= 16384))
-          throw Error(fmt::format("render: size {}x{} is out of range 1..16384", w, h));
         RenderSettings s;
         s.width = w;
         s.height = h;
-        if (pattern.is_none() == generator.empty())
-          throw Error("render: give either pattern= or generator=");
         if (!pattern.is_none()) s.sampling.pattern = to_pattern(pattern);
         const std::string pattern_name = pattern.is_none() ? ""
                                          : py::isinstance<py::str>(pattern)
@@ -136,6 +132,7 @@ FLIP as an (h, w) array.
         s.adaptive = o.adaptive_settings(s.sampling);
         s.measure = reference;
         s.reference = {reference_samples, reference_filter, reference_seed(seed)};
+        validate(s);  // the library's one check, before the scene is read
         const Scene sc = resolve_scene(scene, w, h, texture);
         const auto r = interruptible([&] { return render_study(sc, s); });
         // The values of `aapat render --json`, with the images as arrays.
@@ -188,8 +185,7 @@ width), top row first, values in [0, 1]), reference_image, refinement_map
          int warmup, bool cut, int reference_samples, const std::string& reference_filter,
          uint64_t seed, bool images) {
         const auto [w, h] = size;
-        if (!(w >= 8 && h >= 8 && w <= 4096 && h <= 4096))
-          throw Error(fmt::format("engine_taa: size {}x{} is out of range 8..4096", w, h));
+        check_animation_work(w, h, frames + std::max(warmup, 0));  // the library's one check
         const EngineTaa t = make_engine_taa(taa, ratio, taa_overrides_of(settings));
         const Sequence s =
             sequence.is_none() ? resolve_sequence(t.jitter)

@@ -26,17 +26,17 @@
 #include "aapat/io/api_export.h"
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
+#include "aapat/registry/spec_registries.h"
 #include "aapat/render/scene.h"
 #include "aapat/study/eval_study.h"
 #include "aapat/study/optimize_run.h"
 #include "aapat/study/point_set_study.h"
 #include "aapat/study/render_study.h"
 #include "aapat/study/study_json.h"
-#include "aapat/temporal/accumulation.h"
-#include "aapat/temporal/sequence_json.h"
-#include "aapat/temporal/spec_registries.h"
-#include "aapat/temporal/temporal_json.h"
-#include "aapat/temporal/temporal_metrics.h"
+#include "aapat/temporal/model/accumulation.h"
+#include "aapat/temporal/model/model_json.h"
+#include "aapat/temporal/model/temporal_metrics.h"
+#include "aapat/temporal/sequence/sequence_json.h"
 #include "aapat/version.h"
 
 namespace aapat::web {
@@ -241,8 +241,7 @@ std::string optimize(const std::string& request, emscripten::val progress) {
       s.start = pattern_of(r);
       s.start_label = s.start->name;
     }
-    if (s.family.empty() == !s.start.has_value())
-      throw Error("optimize: give either a family (a search) or a pattern (to polish)");
+    check_family_or_pattern(!s.family.empty(), s.start.has_value());
     s.placement = field<std::string>(r, "placement", "");
     if (r.contains("starts")) s.starts = int_field(r, "starts", 1, 1, kMaxStarts);
     s.seed = static_cast<uint64_t>(int_field(r, "seed", 1, 0, 2147483647));
@@ -333,7 +332,8 @@ std::string sequence(const std::string& request) {
     const Json r = parse_request(request);
     const Sequence s = resolve_sequence(field<std::string>(r, "sequence", "aapat-taa-8"));
     const Accumulation a =
-        make_accumulation(field<std::string>(r, "model", "ema"), field<double>(r, "alpha", 0.1),
+        make_accumulation(field<std::string>(r, "model", std::string(kDefaultAccumulation)),
+                          field<double>(r, "alpha", kDefaultAlpha),
                           int_field(r, "window", 0, 0, 4096), field<std::string>(r, "resolve", ""));
     const Metric metric = objective_of_request(r).metric();
     const TemporalReport report = evaluate_temporal(s, a, metric);

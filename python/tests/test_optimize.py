@@ -62,7 +62,7 @@ def test_a_progress_callback_that_raises_stops_the_run():
 
 
 def test_bad_settings_name_the_problem():
-    with pytest.raises(aapat.Error, match="give either family= "):
+    with pytest.raises(aapat.Error, match=r"give either a family \(a search\) or a pattern"):
         aapat.optimize()
     with pytest.raises(aapat.Error, match="family: 'Q' is not of the form"):
         aapat.optimize(family="Q")

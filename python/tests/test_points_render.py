@@ -66,7 +66,7 @@ def test_render_gives_an_image_array_and_the_error_figures():
     assert r["rmse"] > 0 and r["max_deviation"] >= 1
     assert r["reference_image"].shape == (32, 48)
     assert r["reference"] == "64 jittered samples per pixel, mitchell:b=1/3,c=1/3"
-    with pytest.raises(aapat.Error, match="give either pattern= or generator="):
+    with pytest.raises(aapat.Error, match="give either a pattern or a per-pixel generator"):
         aapat.render("disc")
 
 

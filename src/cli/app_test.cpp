@@ -242,7 +242,7 @@ TEST(CliOptimize, PolishesAPatternAndReportsTheCostOfNonNegativeWeights) {
 TEST(CliOptimize, BadArgumentsAreExplained) {
   CliRun r = run({"optimize"});
   EXPECT_EQ(r.code, 1);
-  EXPECT_NE(r.err.find("give either --family (a search) or a PATTERN to polish"),
+  EXPECT_NE(r.err.find("give either a family (a search) or a pattern (to polish)"),
             std::string::npos);
   r = run({"optimize", "--family", "P(4,1+,2)", "--placement", "left,right"});
   EXPECT_EQ(r.code, 1);

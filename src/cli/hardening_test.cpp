@@ -195,7 +195,7 @@ TEST(Hardening, MessagesNameTheRealProblem) {
                "unknown generator 'nosuch'");
   expect_error(run({"render", "checkerboard", "--generator", "jittered"}), kExitError,
                "--generator jittered: per-pixel points have no weights of their own; give a "
-               "--filter");
+               "filter");
   expect_error(run({"render", "checkerboard", "--pattern", "rgss", "--reference-samples", "2"}),
                kExitUsage, "2 is not a square number");
   std::string polygon = R"({"shapes": [{"polygon": [)";

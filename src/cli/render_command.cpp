@@ -22,8 +22,8 @@
 #include "aapat/io/refinement_map.h"
 #include "aapat/io/scene_json.h"
 #include "aapat/study/study_json.h"
-#include "aapat/temporal/sequence_json.h"
-#include "aapat/temporal/taa_render.h"
+#include "aapat/temporal/engine/taa_render.h"
+#include "aapat/temporal/sequence/sequence_json.h"
 #include "cli/commands.h"
 #include "cli/progress.h"
 #include "cli/reference_options.h"
@@ -241,19 +241,10 @@ void write_histogram(const Options& o, const ImageError& e, std::ostream& out) {
 }
 
 RenderSettings single_settings(const Options& o, int w, int h) {
-  if (o.pattern.empty() == o.generator.empty())
-    throw Error("render: give either --pattern or --generator");
   RenderSettings s;
   s.width = w;
   s.height = h;
   if (!o.pattern.empty()) s.sampling.pattern = resolve_pattern(o.pattern);
-  if (!o.generator.empty()) {
-    make_point_generator(o.generator);  // an unknown generator is named before anything else
-    if (o.filter.empty())
-      throw Error(fmt::format(
-          "--generator {}: per-pixel points have no weights of their own; give a --filter",
-          o.generator));
-  }
   s.sampling.generator = o.generator;
   s.sampling.samples = o.samples;
   s.sampling.seed = o.seed;
@@ -264,6 +255,7 @@ RenderSettings single_settings(const Options& o, int w, int h) {
   s.measure = o.measure || o.json || !o.error_png.empty() || !o.histogram.empty() ||
               !o.histogram_svg.empty() || !o.reference_png.empty();
   s.reference = reference_settings(o);
+  validate(s);  // the library's one check, before any work
   return s;
 }
 
@@ -314,7 +306,7 @@ void run_single(const Options& o, std::ostream& out) {
 }
 
 // --sequence: `frames` frames of the scene, each sampled with its phase and
-// accumulated (temporal/taa_render.h).
+// accumulated (temporal/engine/taa_render.h).
 void run_temporal(const Options& o, std::ostream& out) {
   if (!o.pattern.empty() || !o.generator.empty() || o.grid || !o.adaptive.empty() ||
       !o.filter.empty())

@@ -13,6 +13,12 @@
 #include "aapat/work/work_items.h"
 
 namespace aapat {
+
+void check_family_or_pattern(bool has_family, bool has_pattern) {
+  if (has_family == has_pattern)
+    throw Error("optimize: give either a family (a search) or a pattern (to polish), not both");
+}
+
 namespace {
 
 // Start 0 is the pattern itself; later starts jitter it by up to 0.1 pixel.
@@ -74,8 +80,7 @@ LatticeStage lattice_stage(const Metric& metric, const OptimizeRunSettings& s,
 }
 
 void check_settings(const OptimizeRunSettings& s) {
-  if (s.family.empty() && !s.start)
-    throw Error("optimize: give either a family to search or a pattern to polish");
+  if (s.family.empty() && !s.start) check_family_or_pattern(false, false);
   if (s.starts && !(*s.starts >= 1 && *s.starts <= kMaxStarts))
     throw Error(fmt::format("optimize: starts {} is not in [1, {}]", *s.starts, kMaxStarts));
   if (!(s.time_limit >= 0 && std::isfinite(s.time_limit)))

@@ -46,6 +46,11 @@ struct OptimizeRunSettings {
   bool report_nonnegative_cost = true;
 };
 
+// What a face asks for names a family to search or a pattern to polish, not
+// both and not neither; the one message every face gives (a family's seeds
+// from a file are set as the start after this check).
+void check_family_or_pattern(bool has_family, bool has_pattern);
+
 struct LatticeStage {
   int steps = 0;
   std::string profile;  // empty: no API profile

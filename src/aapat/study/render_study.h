@@ -70,6 +70,12 @@ struct RenderResult {
   std::optional<Image> reference;         // when measured
   std::optional<RenderFigures> figures;
 };
+// The one check of a single rendering's settings, whatever face built them:
+// ParameterError("size") for a side outside [1, kMaxImageSide], Error unless
+// exactly one of a pattern and a generator is given, ParameterError
+// ("generator") for per-pixel points without a filter (they have no weights).
+// render_study calls it before any work.
+void validate(const RenderSettings& settings);
 RenderResult render_study(const Scene& scene, const RenderSettings& settings,
                           const ReferenceSource& references = render_reference);
 
