@@ -2,8 +2,11 @@
 // model, optimize (docs/temporal.md).
 #include <fmt/format.h>
 
+#include <tuple>
+
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/hardware_layout.h"
+#include "aapat/temporal/engine/engine_comparison.h"
 #include "aapat/temporal/engine/engine_pans.h"
 #include "aapat/temporal/engine/engine_taa_settings.h"
 #include "aapat/temporal/model/model_json.h"
@@ -238,6 +241,62 @@ after the first against_first {sequence, lower_at, velocities, mean_change,
 lowest_change, highest_change}. progress: a
 callable f(done, total, note) called as each sequence and velocity finishes,
 or None.)doc"));
+
+  m.def(
+      "sequence_compare",
+      [](const std::vector<py::object>& sequences, const std::string& taa, double ratio,
+         const py::dict& settings, const std::optional<std::vector<std::string>>& scenes,
+         int random_scenes, int shapes, const std::string& motion, uint64_t seed, double max_speed,
+         std::pair<int, int> size, int frames, int warmup, int reference_samples,
+         const std::string& reference_filter, int resamples, const py::object& progress) {
+        EngineComparison c;
+        c.taa = make_engine_taa(taa, ratio, taa_overrides_of(settings));
+        if (!scenes && random_scenes == 0)
+          throw Error("sequence_compare: give scenes= or random_scenes=");
+        if (scenes && random_scenes != 0)
+          throw Error("sequence_compare: give scenes= or random_scenes=, not both");
+        c.scenes = scenes ? *scenes : random_scene_specs(random_scenes, shapes, seed);
+        c.motion = motion;
+        std::tie(c.width, c.height) = size;
+        c.frames = frames;
+        c.warmup = warmup;
+        c.reference.samples = reference_samples;
+        c.reference.filter = reference_filter;
+        c.seed = seed;
+        c.max_speed = max_speed;
+        c.resamples = resamples;
+        std::vector<Sequence> seqs;
+        for (const py::object& q : sequences)
+          seqs.push_back(py::isinstance<Sequence>(q)
+                             ? q.cast<Sequence>()
+                             : resolve_sequence_for_ratio(q.cast<std::string>(), ratio, nullptr));
+        validate(c, seqs.size());
+        const auto report = progress_of(progress);
+        const auto r = interruptible([&] { return compare_under_engine(seqs, c, {}, report); });
+        return to_python(engine_comparison_json(c, r));
+      },
+      py::arg("sequences"), py::kw_only(), py::arg("taa"), py::arg("ratio") = 1.0,
+      py::arg("settings") = py::dict(), py::arg("scenes") = py::none(),
+      py::arg("random_scenes") = 0, py::arg("shapes") = 6,
+      py::arg("motion") = EngineComparison{}.motion, py::arg("seed") = 1,
+      py::arg("max_speed") = EngineComparison{}.max_speed,
+      py::arg("size") = std::pair<int, int>{EngineComparison{}.width, EngineComparison{}.height},
+      py::arg("frames") = EngineComparison{}.frames, py::arg("warmup") = EngineComparison{}.warmup,
+      py::arg("reference_samples") = EngineComparison{}.reference.samples,
+      py::arg("reference_filter") = EngineComparison{}.reference.filter,
+      py::arg("resamples") = EngineComparison{}.resamples, py::arg("progress") = py::none(),
+      R"doc(aapat sequence compare: the rendered comparison study. Each sequence (a
+Sequence or a spec; the first is the baseline) is rendered through the engine
+preset's full pipeline (settings: overrides by key) at ratio on the same
+scenes (a list of scene specs or files, or random_scenes generated
+random-shapes:count=shapes,seed=seed+i) under the same motion ("static",
+"cut", "random-pan": each scene its own pan within max_speed from seed, or a
+motion spec). A dict with the keys of `aapat sequence compare --json`:
+scenes [{scene, motion, rows [{sequence, rmse, flicker, flip}]}] and
+against_first [{sequence, against, rmse|flicker|flip: {lower, ties, scenes,
+mean_difference, low, high, mean_ratio, sign_p}}] (a paired bootstrap interval
+over the scenes and an exact sign test). progress: a callable f(done, total,
+note) called after each render, or None.)doc");
 }
 
 }  // namespace aapat::python

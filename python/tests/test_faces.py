@@ -426,3 +426,23 @@ def test_a_value_past_a_limit_is_refused_on_both_faces(aapat_cli):
                  ["render", "disc", "--pattern", "msaa-4", "--reference-samples", "65537"]):
         with pytest.raises(subprocess.CalledProcessError):
             aapat_cli(*args)
+
+
+def test_sequence_compare_is_the_cli_study(aapat_cli):
+    """The rendered comparison on both faces: the same scenes, renders and
+    statistics, and each comparison counts what the rows say."""
+    args = ["halton:frames=4", "r2:frames=4", "--taa", "bevy", "--random-scenes", "3",
+            "--shapes", "4", "--motion", "random-pan", "--seed", "3", "--size", "16",
+            "--frames", "3", "--warmup", "2", "--reference-samples", "4", "--resamples", "100"]
+    cli = cli_json(aapat_cli, "sequence", "compare", *args)
+    py = aapat.sequence_compare(["halton:frames=4", "r2:frames=4"], taa="bevy", random_scenes=3,
+                                shapes=4, motion="random-pan", seed=3, size=(16, 16), frames=3,
+                                warmup=2, reference_samples=4, resamples=100)
+    for key in ("scenes", "against_first", "sequences", "measures", "motion", "taa_settings"):
+        assert py[key] == cli[key], key
+    rmse = cli["against_first"][0]["rmse"]
+    lower = sum(s["rows"][1]["rmse"] < s["rows"][0]["rmse"] for s in cli["scenes"])
+    assert rmse["lower"] == lower and rmse["scenes"] == 3
+    assert cli["scenes"][0]["scene"] == "random-shapes:count=4,seed=3"
+    with pytest.raises(aapat.Error, match="scenes"):
+        aapat.sequence_compare(["r2", "halton"], taa="bevy")

@@ -193,7 +193,7 @@ std::vector<std::string> metric_args(std::vector<std::string> args) {
 
 // A random command line of one of the commands, small enough to run fast.
 std::vector<std::string> random_command() {
-  const int which = uniform(0, 20);
+  const int which = uniform(0, 21);
   std::vector<std::string> a;
   switch (which) {
     case 0:
@@ -392,6 +392,31 @@ std::vector<std::string> random_command() {
       maybe(a, "--from", {"r2:frames=2", "halton:frames=3", "nosuch"});
       maybe(a, "--taa-set", {"history=catmull-rom-5", "bogus=1"});
       maybe(a, "--jitter-bound", {"0.3", "0"});
+      maybe_flag(a, "--json");
+      break;
+    case 20:  // the rendered comparison, tiny (few small scenes, few frames)
+      a = {"sequence",
+           "compare",
+           *one_of({"halton:frames=2", "r2:frames=3", "nosuch"}),
+           *one_of({"halton:frames=4", "random:frames=3,seed=2", "aapat-taa-8"}),
+           "--taa",
+           *one_of({"bevy", "godot", "nosuch"}),
+           "--size",
+           *one_of({"12", "10x8", "0", "5000"}),
+           "--frames",
+           *one_of({"2", "0"}),
+           "--warmup",
+           *one_of({"1", "-1"}),
+           "--reference-samples",
+           "4"};
+      if (uniform(0, 2) == 0)
+        a.insert(a.end(), {"--random-scenes", *one_of({"2", "0", "2000"})});
+      else
+        a.insert(a.end(), {"--scene", *one_of({"random-shapes:count=3", "disc", "nosuch"})});
+      maybe(a, "--motion", {"static", "cut", "random-pan", "pan:dx=0.3,dy=0.1", "spin"});
+      maybe(a, "--shapes", {"3", "0"});
+      maybe(a, "--max-speed", {"0.5", "nan"});
+      maybe(a, "--resamples", {"50", "0"});
       maybe_flag(a, "--json");
       break;
   }

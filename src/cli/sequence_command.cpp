@@ -383,15 +383,17 @@ void add_export(CLI::App* parent, std::function<void(std::ostream&)>& action) {
 Action add_sequence_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("sequence",
                                  "patterns over time: TAA and upscaler jitter, alternating MSAA: "
-                                 "generate, eval, show, export, phases, pan (docs/temporal.md)");
+                                 "generate, eval, show, export, phases, pan, compare "
+                                 "(docs/temporal.md)");
   cmd->require_subcommand(1);
-  auto actions = std::make_shared<std::vector<std::function<void(std::ostream&)>>>(6);
+  auto actions = std::make_shared<std::vector<std::function<void(std::ostream&)>>>(7);
   add_generate(cmd, (*actions)[0]);
   add_eval(cmd, (*actions)[1]);
   add_show(cmd, (*actions)[2]);
   add_export(cmd, (*actions)[3]);
   add_phases(cmd, (*actions)[4]);
   add_pan(cmd, (*actions)[5]);
+  add_sequence_compare(cmd, (*actions)[6]);
   return [actions](std::ostream& out) {
     for (auto& a : *actions) a(out);
   };

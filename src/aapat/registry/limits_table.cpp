@@ -28,6 +28,7 @@
 #include "aapat/render/renderer.h"
 #include "aapat/render/texture.h"
 #include "aapat/study/point_set_study.h"
+#include "aapat/temporal/engine/engine_comparison.h"
 #include "aapat/temporal/engine/engine_taa.h"
 #include "aapat/temporal/engine/engine_taa_settings.h"
 #include "aapat/temporal/model/accumulation.h"
@@ -242,6 +243,11 @@ std::vector<Limit> make_table() {
                    grouped(static_cast<uint64_t>(kMaxPanSweeps))),
        "`kMaxPanObjectiveBytes`, `temporal/search/pan_objective.h`; `kMaxPanSweeps`, "
        "`temporal/search/pan_search.h`"},
+      {"`sequence compare` (`sequence_compare`)",
+       fmt::format("at least two sequences; 1 to {} scenes; `--shapes` 1 to 4096; as engine "
+                   "TAA for the size, frames and warm-up; `--resamples` 1 to 1,000,000",
+                   kMaxComparisonScenes),
+       "`kMaxComparisonScenes`, `temporal/engine/engine_comparison.h`"},
       {"upscaler phases (`sequence phases --ratio`)", "ratio 1 to 16",
        "`upscaler_phase_count`, `temporal/sequence/render_scale.h`"},
   };

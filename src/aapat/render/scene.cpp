@@ -4,10 +4,12 @@
 
 #include <cmath>
 #include <map>
+#include <random>
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/overloaded.h"
 #include "aapat/core/text.h"
+#include "aapat/generate/unit_random.h"
 #include "aapat/render/mesh.h"
 #include "aapat/render/shape_index.h"
 #include "aapat/render/surface.h"
@@ -171,6 +173,34 @@ Frame frame_of(int width, int height) {
 
 }  // namespace
 
+Scene random_shapes(int count, uint64_t seed, int width, int height) {
+  // mt19937_64's raw draws and aapat's own mapping to [0, 1) (unit_random.h),
+  // not the standard distributions, whose output differs between standard
+  // libraries: the same scene natively and in WebAssembly.
+  std::mt19937_64 rng(seed);
+  const auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * unit_double(rng); };
+  const auto grey = [&] { return std::round(unit_double(rng) * 1000) / 1000; };
+  const double w = width, h = height, side = std::min(w, h);
+  ShapesScene scene;
+  scene.background = grey();
+  for (int i = 0; i < count; ++i) {
+    Shape shape;
+    if (unit_double(rng) < 0.5) {
+      const double cx = uniform(0, w), cy = uniform(0, h), r = uniform(side / 8, side / 2);
+      const int corners = 3 + static_cast<int>(unit_double(rng) * 4);  // 3 to 6
+      for (int k = 0; k < corners; ++k)
+        shape.polygon.push_back({cx + uniform(-r, r), cy + uniform(-r, r)});
+    } else {
+      shape.centre = {uniform(0, w), uniform(0, h)};
+      shape.radius = uniform(side / 20, side / 4);
+    }
+    shape.grey = grey();
+    scene.shapes.push_back(std::move(shape));
+  }
+  index_shapes(scene);
+  return Scene{std::move(scene)};
+}
+
 const SceneRegistry& scene_registry() {
   static const SceneRegistry kRegistry(
       "scene",
@@ -231,6 +261,16 @@ const SceneRegistry& scene_registry() {
         [](const Spec& s, int width, int height) -> Scene {
           const Frame f = frame_of(width, height);
           return DiscScene{f.centre, s.in_range("radius", 1e-6, 10) * f.side};
+        }},
+       {{"random-shapes",
+         "count random polygons and circles in random greys over a random background, the same "
+         "for the same seed on every platform: unseen scenes for studies",
+         "aapat: generated test content",
+         {{"count", "6", "shapes, 1 to 4096"}, {"seed", "1", "random seed"}}},
+        [](const Spec& s, int width, int height) -> Scene {
+          return random_shapes(s.whole("count", 1, 4096),
+                               static_cast<uint64_t>(s.whole("seed", 0, 2147483647)), width,
+                               height);
         }},
        {{"halfplane",
          "white where (p - centre) . (cos a, sin a) <= offset",

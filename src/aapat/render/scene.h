@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -155,6 +156,11 @@ Scene make_scene(std::string_view spec, int width, int height);
 Scene animation_frame(std::string_view animation, int width, int height, int frame, int frames);
 
 // Every built-in scene with its parameters (core/spec.h), built for a width x height image.
+// `count` polygons (3 to 6 corners around a random centre) and circles in
+// random greys over a random background, laid out on width x height from the
+// seed (the `random-shapes` spec): the same scene for the same arguments on
+// every platform.
+Scene random_shapes(int count, uint64_t seed, int width, int height);
 using SceneRegistry = Registry<Scene, int, int>;
 const SceneRegistry& scene_registry();
 

@@ -1,0 +1,146 @@
+#include "aapat/temporal/engine/engine_comparison.h"
+
+#include <fmt/format.h>
+
+#include "aapat/io/scene_json.h"
+#include "aapat/render/animation.h"
+#include "aapat/render/motion.h"
+
+namespace aapat {
+
+std::vector<std::string> random_scene_specs(int count, int shapes, uint64_t seed) {
+  if (count < 1 || count > kMaxComparisonScenes)
+    throw ParameterError("random-scenes",
+                         fmt::format(" {}: expected 1 to {} scenes", count, kMaxComparisonScenes));
+  if (shapes < 1 || shapes > 4096)
+    throw ParameterError("shapes", fmt::format(" {}: expected 1 to 4096 shapes a scene", shapes));
+  std::vector<std::string> specs;
+  for (int i = 0; i < count; ++i)
+    specs.push_back(
+        fmt::format("random-shapes:count={},seed={}", shapes, seed + static_cast<uint64_t>(i)));
+  return specs;
+}
+
+void validate(const EngineComparison& c, size_t sequences) {
+  if (c.scenes.empty() || c.scenes.size() > static_cast<size_t>(kMaxComparisonScenes))
+    throw ParameterError("scene", fmt::format(": {} scenes; expected 1 to {}", c.scenes.size(),
+                                              kMaxComparisonScenes));
+  if (sequences < 2)
+    throw Error(
+        fmt::format("a comparison takes at least two sequences (the first is the "
+                    "baseline), not {}",
+                    sequences));
+  if (c.frames < 1 || c.frames > kMaxEngineFrames)
+    throw ParameterError("frames",
+                         fmt::format(" {}: expected 1 to {}", c.frames, kMaxEngineFrames));
+  if (c.warmup < 0 || c.warmup > kMaxWarmupFrames)
+    throw ParameterError("warmup",
+                         fmt::format(" {}: expected 0 to {}", c.warmup, kMaxWarmupFrames));
+  check_animation_work(c.width, c.height, c.frames + c.warmup);
+  if (c.motion == "random-pan") {
+    random_pan_velocities(static_cast<int>(c.scenes.size()), c.max_speed, c.seed);  // checks
+  } else if (c.motion != "static" && c.motion != "cut") {
+    make_motion(c.motion, c.width, c.height);  // names a bad spec before any work
+  }
+  compare_paired(std::vector<double>{0.0}, std::vector<double>{0.0}, c.resamples, c.confidence);
+}
+
+EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequences,
+                                            const EngineComparison& c,
+                                            const ReferenceSource& references,
+                                            const ItemsProgress& progress) {
+  validate(c, sequences.size());
+  std::vector<std::string> motions(c.scenes.size(), c.motion == "cut" ? "static" : c.motion);
+  if (c.motion == "random-pan") {
+    const std::vector<Vec2> v =
+        random_pan_velocities(static_cast<int>(c.scenes.size()), c.max_speed, c.seed);
+    for (size_t m = 0; m < motions.size(); ++m)
+      motions[m] = fmt::format("pan:dx={:g},dy={:g}", v[m].x, v[m].y);
+  }
+  EngineComparisonResult r;
+  for (const Sequence& s : sequences) r.sequences.push_back(s.name);
+  const int renders = static_cast<int>(sequences.size() * c.scenes.size());
+  int done = 0;
+  for (size_t m = 0; m < c.scenes.size(); ++m) {
+    ComparedScene scene{c.scenes[m], motions[m], {}};
+    EngineRun run;
+    run.scene = resolve_scene(c.scenes[m], c.width, c.height);
+    run.motion = make_motion(motions[m], c.width, c.height);
+    run.width = c.width;
+    run.height = c.height;
+    run.frames = c.frames;
+    run.warmup = c.motion == "cut" ? 0 : c.warmup;
+    run.reference = c.reference;
+    for (const Sequence& s : sequences) {
+      const EngineResult e = render_engine_taa(run, s, c.taa, {}, references);
+      scene.measures.push_back({e.total.rmse, e.flicker, e.mean_flip});
+      if (progress) progress(++done, renders, fmt::format("{} on {}", s.name, c.scenes[m]));
+    }
+    r.scenes.push_back(std::move(scene));
+  }
+  for (size_t k = 1; k < sequences.size(); ++k) {
+    std::array<PairedComparison, kComparisonMeasures.size()> per;
+    for (size_t q = 0; q < kComparisonMeasures.size(); ++q) {
+      std::vector<double> ours, theirs;
+      for (const ComparedScene& s : r.scenes) {
+        ours.push_back(s.measures[k][q]);
+        theirs.push_back(s.measures[0][q]);
+      }
+      per[q] = compare_paired(ours, theirs, c.resamples, c.confidence, c.seed);
+    }
+    r.against_first.push_back(per);
+  }
+  return r;
+}
+
+JsonObject engine_comparison_json(const EngineComparison& c, const EngineComparisonResult& r) {
+  JsonObject doc = json_report("sequence compare");
+  JsonObject::array_t scenes;
+  for (const ComparedScene& s : r.scenes) {
+    JsonObject::array_t rows;
+    for (size_t k = 0; k < r.sequences.size(); ++k) {
+      JsonObject row{{"sequence", r.sequences[k]}};
+      for (size_t q = 0; q < kComparisonMeasures.size(); ++q)
+        row[kComparisonMeasures[q]] = s.measures[k][q];
+      rows.push_back(row);
+    }
+    scenes.push_back(JsonObject{{"scene", s.scene}, {"motion", s.motion}, {"rows", rows}});
+  }
+  JsonObject::array_t against;
+  for (size_t k = 1; k < r.sequences.size(); ++k) {
+    JsonObject entry{{"sequence", r.sequences[k]}, {"against", r.sequences[0]}};
+    for (size_t q = 0; q < kComparisonMeasures.size(); ++q) {
+      const PairedComparison& p = r.against_first[k - 1][q];
+      entry[kComparisonMeasures[q]] = JsonObject{{"lower", p.lower},
+                                                 {"ties", p.ties},
+                                                 {"scenes", p.items},
+                                                 {"mean_difference", p.mean_difference},
+                                                 {"low", p.low},
+                                                 {"high", p.high},
+                                                 {"mean_ratio", p.mean_ratio},
+                                                 {"sign_p", p.sign_p}};
+    }
+    against.push_back(entry);
+  }
+  JsonObject::array_t measures;
+  for (const char* m : kComparisonMeasures) measures.push_back(m);
+  doc.update(JsonObject{{"taa", c.taa.preset},
+                        {"taa_settings", engine_taa_text(c.taa)},
+                        {"ratio", c.taa.upscale.ratio},
+                        {"motion", c.motion},
+                        {"width", c.width},
+                        {"height", c.height},
+                        {"frames", c.frames},
+                        {"warmup", c.motion == "cut" ? 0 : c.warmup},
+                        {"reference", describe_reference(c.reference)},
+                        {"resamples", c.resamples},
+                        {"confidence", c.confidence},
+                        {"seed", c.seed},
+                        {"measures", measures},
+                        {"sequences", r.sequences},
+                        {"scenes", scenes},
+                        {"against_first", against}});
+  return doc;
+}
+
+}  // namespace aapat

@@ -1,0 +1,87 @@
+// The rendered comparison study: K jitter sequences, each rendered through
+// an engine preset's full nonlinear pipeline (engine_taa.h) on the same M
+// scenes under the same motion, with per-scene measures (rmse over every
+// frame's pixels, mean flicker, mean FLIP), and every sequence after the
+// first compared with the first per measure: the scenes where it is lower,
+// the mean difference with a paired bootstrap interval over the scenes and
+// an exact sign test (analyze/paired_comparison.h). `aapat sequence compare`
+// and Python's sequence_compare run it; its JSON is one document.
+//
+// Scenes are any scene spec or file; random_scene_specs names M generated
+// ones (the render registry's random-shapes), so that a study on unseen
+// content is one command, with its seeds.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "aapat/analyze/paired_comparison.h"
+#include "aapat/io/json_report.h"
+#include "aapat/render/reference.h"
+#include "aapat/temporal/engine/engine_taa.h"
+#include "aapat/temporal/model/pan_distribution.h"
+#include "aapat/temporal/sequence/sequence.h"
+#include "aapat/work/work_items.h"
+
+namespace aapat {
+
+// The measures compared, each lower = better, in the order of every row.
+inline constexpr std::array<const char*, 3> kComparisonMeasures = {"rmse", "flicker", "flip"};
+using ComparisonMeasures = std::array<double, kComparisonMeasures.size()>;
+inline constexpr int kMaxComparisonScenes = 1024;
+
+struct EngineComparison {
+  EngineTaa taa;
+  std::vector<std::string> scenes;  // scene specs or files
+  // "static": the still scene in steady state (after the warm-up); "cut":
+  // the still scene's first frames after a cut (no warm-up); "random-pan":
+  // each scene its own pan, random_pan_velocities(M, max_speed, seed); else
+  // a motion spec (render/motion.h) for every scene.
+  std::string motion = "static";
+  int width = 64, height = 64;
+  int frames = 16, warmup = 64;
+  ReferenceSettings reference{256, "mitchell", 1};  // as `aapat animate`'s
+  uint64_t seed = 1;
+  double max_speed = kDefaultRandomPanSpeed;
+  int resamples = 2000;
+  double confidence = 0.95;
+};
+
+struct ComparedScene {
+  std::string scene, motion;
+  std::vector<ComparisonMeasures> measures;  // per sequence
+};
+
+struct EngineComparisonResult {
+  std::vector<std::string> sequences;
+  std::vector<ComparedScene> scenes;
+  // Each sequence after the first against the first, per measure.
+  std::vector<std::array<PairedComparison, kComparisonMeasures.size()>> against_first;
+};
+
+// "random-shapes:count=SHAPES,seed=SEED+i" for i = 0 .. count-1. Throws
+// ParameterError naming "random-scenes" or "shapes" out of range.
+std::vector<std::string> random_scene_specs(int count, int shapes, uint64_t seed);
+
+// Throws Error (ParameterError naming the setting) before any work: no
+// scene or too many, fewer than two sequences, a motion it cannot make, a
+// size, frame count or warm-up out of range.
+void validate(const EngineComparison& c, size_t sequences);
+
+// progress: (renders done, renders, "SEQUENCE on SCENE") after each render.
+EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequences,
+                                            const EngineComparison& comparison,
+                                            const ReferenceSource& references = {},
+                                            const ItemsProgress& progress = {});
+
+// `aapat sequence compare --json` and Python's sequence_compare: the settings
+// (taa, taa_settings, ratio, motion, size, frames, warmup, reference,
+// resamples, confidence), measures, sequences, scenes [{scene, motion,
+// rows [{sequence, rmse, flicker, flip}]}], and against_first [{sequence,
+// against, MEASURE: {lower, ties, scenes, mean_difference, low, high,
+// mean_ratio, sign_p}}].
+JsonObject engine_comparison_json(const EngineComparison& c, const EngineComparisonResult& r);
+
+}  // namespace aapat

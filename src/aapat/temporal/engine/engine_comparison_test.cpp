@@ -1,0 +1,94 @@
+#include "aapat/temporal/engine/engine_comparison.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "aapat/io/scene_json.h"
+#include "aapat/render/motion.h"
+#include "aapat/temporal/sequence/sequence_generators.h"
+#include "testing/centre_reference.h"
+#include "testing/error_message.h"
+
+namespace aapat {
+namespace {
+
+EngineComparison small(const std::string& motion) {
+  EngineComparison c;
+  c.taa = make_engine_taa("bevy", 1, {});
+  c.scenes = random_scene_specs(3, 4, 11);
+  c.motion = motion;
+  c.width = c.height = 16;
+  c.frames = 4;
+  c.warmup = 3;
+  c.resamples = 200;
+  return c;
+}
+
+// Every scene's measures are the engine's own render of it, and every
+// comparison is compare_paired of those measures.
+TEST(EngineComparison, ItsMeasuresAreTheRendersAndItsComparisonsThePairedStatistics) {
+  const std::vector<Sequence> seqs{make_sequence("halton:frames=8"), make_sequence("r2:frames=8")};
+  const EngineComparison c = small("random-pan");
+  const EngineComparisonResult r = compare_under_engine(seqs, c, testing::centre_reference);
+  ASSERT_EQ(r.scenes.size(), 3u);
+  ASSERT_EQ(r.against_first.size(), 1u);
+  const std::vector<Vec2> v = random_pan_velocities(3, c.max_speed, c.seed);
+  EngineRun run;
+  run.scene = resolve_scene(c.scenes[1], 16, 16);
+  run.motion = make_motion(r.scenes[1].motion, 16, 16);
+  run.width = run.height = 16;
+  run.frames = 4;
+  run.warmup = 3;
+  run.reference = c.reference;
+  const EngineResult e = render_engine_taa(run, seqs[1], c.taa, {}, testing::centre_reference);
+  EXPECT_EQ(r.scenes[1].motion, fmt::format("pan:dx={:g},dy={:g}", v[1].x, v[1].y));
+  EXPECT_EQ(r.scenes[1].measures[1][0], e.total.rmse);
+  EXPECT_EQ(r.scenes[1].measures[1][1], e.flicker);
+  EXPECT_EQ(r.scenes[1].measures[1][2], e.mean_flip);
+  for (size_t q = 0; q < kComparisonMeasures.size(); ++q) {
+    std::vector<double> ours, theirs;
+    for (const ComparedScene& s : r.scenes)
+      ours.push_back(s.measures[1][q]), theirs.push_back(s.measures[0][q]);
+    const PairedComparison p = compare_paired(ours, theirs, c.resamples, c.confidence, c.seed);
+    EXPECT_EQ(r.against_first[0][q].lower, p.lower) << q;
+    EXPECT_EQ(r.against_first[0][q].low, p.low) << q;
+    EXPECT_EQ(r.against_first[0][q].high, p.high) << q;
+  }
+}
+
+// A sequence against itself ties on every scene; a cut has no warm-up.
+TEST(EngineComparison, ASequenceAgainstItselfTiesEverywhere) {
+  const std::vector<Sequence> seqs{make_sequence("halton:frames=4"),
+                                   make_sequence("halton:frames=4")};
+  const EngineComparisonResult r =
+      compare_under_engine(seqs, small("cut"), testing::centre_reference);
+  for (const PairedComparison& p : r.against_first[0]) {
+    EXPECT_EQ(p.ties, 3);
+    EXPECT_EQ(p.mean_difference, 0.0);
+    EXPECT_EQ(p.sign_p, 1.0);
+  }
+  EXPECT_EQ(r.scenes[0].motion, "static");
+  EXPECT_EQ(engine_comparison_json(small("cut"), r)["warmup"], 0);
+}
+
+// Settings out of range are refused by name before any render.
+TEST(EngineComparison, RefusesSettingsByName) {
+  const std::vector<Sequence> two{make_sequence("halton:frames=4"), make_sequence("r2:frames=4")};
+  EngineComparison c = small("static");
+  c.scenes.clear();
+  EXPECT_EQ(testing::error_parameter([&] { validate(c, 2); }), "scene");
+  c = small("static");
+  EXPECT_THROW(validate(c, 1), Error);
+  c.frames = 0;
+  EXPECT_EQ(testing::error_parameter([&] { validate(c, 2); }), "frames");
+  c = small("spin:fast");
+  EXPECT_THROW(validate(c, 2), Error);
+  EXPECT_EQ(testing::error_parameter([&] { random_scene_specs(0, 4, 1); }), "random-scenes");
+  EXPECT_EQ(testing::error_parameter([&] { random_scene_specs(3, 0, 1); }), "shapes");
+  EXPECT_EQ(random_scene_specs(2, 5, 7)[1], "random-shapes:count=5,seed=8");
+}
+
+}  // namespace
+}  // namespace aapat
