@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "aapat/optimize/compass_search.h"
 #include "aapat/temporal/engine/engine_pans.h"
 #include "aapat/temporal/model/pan_model.h"
 #include "aapat/temporal/search/pan_objective.h"
@@ -60,41 +61,42 @@ PanSequenceSearchResult search_sequence_under_pans(const PanSequenceSearch& sear
                lo = -search.jitter_bound;
   for (const Pattern& f : search.start.frames)
     jitter.push_back({std::clamp(f.sets[0][0].x, lo, hi), std::clamp(f.sets[0][0].y, lo, hi)});
-  objective.set(jitter);
-  r.start_values = objective.case_values();
-  r.start_value = objective.value();
-  double best = r.start_value;
-  const int levels =
-      1 + static_cast<int>(std::floor(std::log2(search.step / search.min_step) + 1e-9));
-  double step = search.step;
-  for (int level = 0; level < levels; ++level, step /= 2) {
-    for (int sweep = 0, kept_any = 1; kept_any && sweep < kMaxPanSweeps; ++sweep) {
-      kept_any = 0;
-      for (int f = 0; f < search.start.period(); ++f) {
-        const Vec2 at = objective.jitter()[static_cast<size_t>(f)];
-        for (const Vec2 d : {Vec2{step, 0}, Vec2{-step, 0}, Vec2{0, step}, Vec2{0, -step}}) {
-          const Vec2 to{at.x + d.x, at.y + d.y};
-          if (to.x < lo || to.x > hi || to.y < lo || to.y > hi) continue;
-          ++r.tries;
-          const double v = objective.try_move(f, to);
-          if (v < best * (1 - 1e-12)) {
-            objective.move(f, to);
-            best = v;
-            ++r.kept;
-            kept_any = 1;
-            break;
-          }
-        }
-      }
-      // Rebuilt from scratch once a sweep: what the moves' sums drifted.
-      objective.set(objective.jitter());
-      best = objective.value();
-      if (progress && kept_any)
-        progress(level, levels,
-                 fmt::format("J {:.6f} at step {:g}, sweep {}", best, step, sweep + 1));
+  // The pan objective under the generic compass search: a frame's x and y
+  // are one block, moved incrementally (pan_objective.h).
+  class Adapter final : public CompassObjective {
+   public:
+    explicit Adapter(PanObjective& o) : o_(o) {}
+    std::vector<double> start_values;
+    double set(std::span<const double> x) override {
+      std::vector<Vec2> j(x.size() / 2);
+      for (size_t f = 0; f < j.size(); ++f) j[f] = {x[2 * f], x[2 * f + 1]};
+      o_.set(j);
+      if (start_values.empty()) start_values = o_.case_values();
+      return o_.value();
     }
-    if (progress) progress(level + 1, levels, fmt::format("J {:.6f} at step {:g}", best, step));
-  }
+    double try_move(size_t block, std::span<const double> to) override {
+      return o_.try_move(static_cast<int>(block), {to[0], to[1]});
+    }
+    void move(size_t block, std::span<const double> to) override {
+      o_.move(static_cast<int>(block), {to[0], to[1]});
+    }
+
+   private:
+    PanObjective& o_;
+  } adapter(objective);
+  std::vector<double> x;
+  for (const Vec2 j : jitter) x.insert(x.end(), {j.x, j.y});
+  CompassSettings settings;
+  settings.step = search.step;
+  settings.min_step = search.min_step;
+  settings.lo = lo;
+  settings.hi = hi;
+  settings.max_sweeps = kMaxPanSweeps;
+  const CompassResult found = compass_search(adapter, std::move(x), settings, progress);
+  r.start_values = adapter.start_values;
+  r.start_value = found.start_value;
+  r.tries = found.tries;
+  r.kept = found.kept;
   r.values = objective.case_values();
   r.value = objective.value();
   r.best = search.start;
