@@ -140,9 +140,8 @@ error_bound (on |P - exact P| at every f != 0; 0 for the exact sum).)doc");
          double max_frequency) {
         const auto spectra =
             interruptible([&] { return line_spectra(kinds, n, seed, frequencies, max_frequency); });
-        std::vector<double> f(static_cast<size_t>(frequencies));
-        for (int k = 0; k < frequencies; ++k) f[k] = k * max_frequency / frequencies;
-        py::dict d(py::arg("frequency") = from_vector(f));
+        py::dict d(py::arg("frequency") =
+                       from_vector(line_frequencies(frequencies, max_frequency)));
         for (const LineSpectrum& s : spectra) d[py::str(s.kind)] = from_vector(s.power);
         return d;
       },

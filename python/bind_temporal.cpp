@@ -14,6 +14,7 @@
 #include "aapat/temporal/model/pan_model.h"
 #include "aapat/temporal/model/temporal_metrics.h"
 #include "aapat/temporal/search/pan_search.h"
+#include "aapat/temporal/search/rendered_search.h"
 #include "aapat/temporal/search/search_json.h"
 #include "aapat/temporal/search/still_search.h"
 #include "aapat/temporal/sequence/sequence_generators.h"
@@ -47,6 +48,36 @@ constexpr const char* kModelArgs = R"doc(
         (e.g. "gaussian:sigma=0.47,radius=1.5"); "" for none.)doc";
 
 }  // namespace
+
+// The rendered commands' shared settings, as keyword arguments (the CLI's
+// ComparisonOptions).
+EngineComparison comparison_of(const std::string& taa, double ratio, const py::dict& settings,
+                               const std::optional<std::vector<std::string>>& scenes,
+                               int random_scenes, int shapes, const std::string& motion,
+                               uint64_t seed, double max_speed, std::pair<int, int> size,
+                               int frames, int warmup, int reference_samples,
+                               const std::string& reference_filter) {
+  EngineComparison c;
+  c.taa = make_engine_taa(taa, ratio, taa_overrides_of(settings));
+  if (!scenes && random_scenes == 0) throw Error("give scenes= or random_scenes=");
+  if (scenes && random_scenes != 0) throw Error("give scenes= or random_scenes=, not both");
+  c.scenes = scenes ? *scenes : random_scene_specs(random_scenes, shapes, seed);
+  c.motion = motion;
+  std::tie(c.width, c.height) = size;
+  c.frames = frames;
+  c.warmup = warmup;
+  c.reference.samples = reference_samples;
+  c.reference.filter = reference_filter;
+  c.seed = seed;
+  c.max_speed = max_speed;
+  return c;
+}
+
+Sequence sequence_arg(const py::object& q, double ratio) {
+  return py::isinstance<Sequence>(q)
+             ? q.cast<Sequence>()
+             : resolve_sequence_for_ratio(q.cast<std::string>(), ratio, nullptr);
+}
 
 void bind_temporal(py::module_& m) {
   py::class_<Sequence>(m, "Sequence", "K frame patterns used in turn (docs/temporal.md).")
@@ -117,9 +148,7 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
         s.flicker_weight = flicker_weight;
         s.jitter_bound = jitter_bound;
         if (!jitter_radius.is_none()) s.jitter_radius = jitter_radius.cast<double>();
-        if (measure != "worst" && measure != "mean")
-          throw Error("measure '" + measure + "': expected worst or mean");
-        s.frame_measure = measure == "mean" ? FrameMeasure::mean : FrameMeasure::worst;
+        s.frame_measure = parse_frame_measure(measure);
         s.starts = starts;
         s.seed = seed;
         s.iterations = iterations;
@@ -138,7 +167,7 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
       py::arg("samples_per_frame") = SequenceSearch{}.samples_per_frame,
       py::arg("flicker_weight") = SequenceSearch{}.flicker_weight,
       py::arg("jitter_bound") = SequenceSearch{}.jitter_bound,
-      py::arg("jitter_radius") = py::none(), py::arg("measure") = "worst",
+      py::arg("jitter_radius") = py::none(), py::arg("measure") = std::string(frame_measure_name(SequenceSearch{}.frame_measure)),
       py::arg("starts") = SequenceSearch{}.starts, py::arg("seed") = SequenceSearch{}.seed,
       py::arg("iterations") = SequenceSearch{}.iterations, py::arg("equal_weights") = false,
       py::arg("api") = "", py::arg("model") = std::string(kDefaultAccumulation),
@@ -249,27 +278,12 @@ or None.)doc"));
          int random_scenes, int shapes, const std::string& motion, uint64_t seed, double max_speed,
          std::pair<int, int> size, int frames, int warmup, int reference_samples,
          const std::string& reference_filter, int resamples, const py::object& progress) {
-        EngineComparison c;
-        c.taa = make_engine_taa(taa, ratio, taa_overrides_of(settings));
-        if (!scenes && random_scenes == 0)
-          throw Error("sequence_compare: give scenes= or random_scenes=");
-        if (scenes && random_scenes != 0)
-          throw Error("sequence_compare: give scenes= or random_scenes=, not both");
-        c.scenes = scenes ? *scenes : random_scene_specs(random_scenes, shapes, seed);
-        c.motion = motion;
-        std::tie(c.width, c.height) = size;
-        c.frames = frames;
-        c.warmup = warmup;
-        c.reference.samples = reference_samples;
-        c.reference.filter = reference_filter;
-        c.seed = seed;
-        c.max_speed = max_speed;
+        EngineComparison c =
+            comparison_of(taa, ratio, settings, scenes, random_scenes, shapes, motion, seed,
+                          max_speed, size, frames, warmup, reference_samples, reference_filter);
         c.resamples = resamples;
         std::vector<Sequence> seqs;
-        for (const py::object& q : sequences)
-          seqs.push_back(py::isinstance<Sequence>(q)
-                             ? q.cast<Sequence>()
-                             : resolve_sequence_for_ratio(q.cast<std::string>(), ratio, nullptr));
+        for (const py::object& q : sequences) seqs.push_back(sequence_arg(q, ratio));
         validate(c, seqs.size());
         const auto report = progress_of(progress);
         const auto r = interruptible([&] { return compare_under_engine(seqs, c, {}, report); });
@@ -297,6 +311,56 @@ against_first [{sequence, against, rmse|flicker|flip: {lower, ties, scenes,
 mean_difference, low, high, mean_ratio, sign_p}}] (a paired bootstrap interval
 over the scenes and an exact sign test). progress: a callable f(done, total,
 note) called after each render, or None.)doc");
+
+  m.def(
+      "sequence_search",
+      [](const py::object& start, const std::string& taa, const py::object& against, double ratio,
+         const py::dict& settings, const std::optional<std::vector<std::string>>& scenes,
+         int random_scenes, int shapes, const std::string& motion, uint64_t seed, double max_speed,
+         std::pair<int, int> size, int frames, int warmup, int reference_samples,
+         const std::string& reference_filter, double step, double min_step, double loss,
+         double jitter_bound, int max_tries, const py::object& progress) {
+        RenderedSearch s;
+        s.comparison =
+            comparison_of(taa, ratio, settings, scenes, random_scenes, shapes, motion, seed,
+                          max_speed, size, frames, warmup, reference_samples, reference_filter);
+        s.start = sequence_arg(start, ratio);
+        s.baseline = against.is_none() ? resolve_sequence(s.comparison.taa.jitter)
+                                       : sequence_arg(against, ratio);
+        s.step = step;
+        s.min_step = min_step;
+        s.loss = loss;
+        s.jitter_bound = jitter_bound;
+        s.max_tries = max_tries;
+        validate(s);
+        const auto report = progress_of(progress);
+        const auto r = interruptible([&] { return search_rendered(s, {}, report); });
+        py::dict d = to_python(rendered_search_json(s, r));
+        d["result"] = r.best;
+        return d;
+      },
+      py::arg("start"), py::kw_only(), py::arg("taa"), py::arg("against") = py::none(),
+      py::arg("ratio") = 1.0, py::arg("settings") = py::dict(), py::arg("scenes") = py::none(),
+      py::arg("random_scenes") = 0, py::arg("shapes") = 6,
+      py::arg("motion") = EngineComparison{}.motion, py::arg("seed") = 1,
+      py::arg("max_speed") = EngineComparison{}.max_speed,
+      py::arg("size") = std::pair<int, int>{EngineComparison{}.width, EngineComparison{}.height},
+      py::arg("frames") = EngineComparison{}.frames, py::arg("warmup") = EngineComparison{}.warmup,
+      py::arg("reference_samples") = EngineComparison{}.reference.samples,
+      py::arg("reference_filter") = EngineComparison{}.reference.filter,
+      py::arg("step") = RenderedSearch{}.step, py::arg("min_step") = RenderedSearch{}.min_step,
+      py::arg("loss") = RenderedSearch{}.loss,
+      py::arg("jitter_bound") = RenderedSearch{}.jitter_bound, py::arg("max_tries") = 0,
+      py::arg("progress") = py::none(),
+      R"doc(aapat sequence search: a jitter searched on rendered error. A compass search
+from `start` (a Sequence or spec) whose objective renders the sequence through
+the engine preset's full pipeline on the scenes (as sequence_compare takes
+them) against `against` (default: the preset's own jitter): the mean over the
+scenes of log(rmse ratio) + log(flicker ratio) + loss (the positive parts), so
+a scene lost weighs 1 + loss. A dict with the keys of `aapat sequence search
+--json` (start_value, value, tries, kept, ...), its "result" the
+aapat.Sequence found. progress: a callable f(done, total, note) as each step
+size finishes, or None.)doc");
 }
 
 }  // namespace aapat::python

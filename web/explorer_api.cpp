@@ -112,14 +112,6 @@ Objective objective_of_request(const Json& request) {
                          "objective");
 }
 
-JsonObject objective_doc(const Objective& o) {
-  return {{"text", o.text()},
-          {"caption", o.caption()},
-          {"filter", o.filter},
-          {"acuity", o.acuity},
-          {"norm", std::isinf(o.norm) ? JsonObject("inf") : JsonObject(o.norm)}};
-}
-
 // ---------------------------------------------------------------------------
 
 std::string info() {
@@ -166,7 +158,8 @@ std::string evaluate(const std::string& request) {
     const Pattern p = pattern_of(r);
     const auto evaluations = evaluate_patterns(metric, {p}, false, true);
     return JsonObject{{"eval", eval_json(o, metric.angle_count(), {p}, evaluations)},
-                      {"objective", objective_doc(o)},
+                      {"objective", objective_json(o)},  // the keys of every --json
+                      {"caption", o.caption()},
                       {"angles_deg", metric.acuity().angles_deg},
                       {"acuity_weights", metric.acuity().weights},
                       {"profile", evaluations[0].worst_profile}};
@@ -290,15 +283,14 @@ std::string render(const std::string& request) {
       return it->second;
     };
     const RenderResult result = render_study(scene, s, cached);
-    return JsonObject{{"scene", canonical_text(scene)},
-                      {"width", size},
-                      {"height", size},
-                      {"reference", describe_reference(s.reference)},
-                      {"rmse", result.figures->error.rmse},
-                      {"max_deviation", result.figures->error.max_deviation},
-                      {"flip", result.figures->flip},
-                      {"image", result.image.values},
-                      {"reference_image", result.reference->values}};
+    JsonObject doc{{"scene", canonical_text(scene)},
+                   {"width", size},
+                   {"height", size},
+                   {"reference", describe_reference(s.reference)}};
+    doc.update(figures_json(*result.figures));  // the figures of `aapat render --json`
+    doc["image"] = result.image.values;
+    doc["reference_image"] = result.reference->values;
+    return doc;
   });
 }
 

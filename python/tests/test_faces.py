@@ -446,3 +446,21 @@ def test_sequence_compare_is_the_cli_study(aapat_cli):
     assert cli["scenes"][0]["scene"] == "random-shapes:count=4,seed=3"
     with pytest.raises(aapat.Error, match="scenes"):
         aapat.sequence_compare(["r2", "halton"], taa="bevy")
+
+
+def test_sequence_search_is_the_cli_search(aapat_cli, tmp_path):
+    """The rendered search on both faces: the same tries, the same sequence."""
+    out = str(tmp_path / "s.json")
+    args = ["halton:frames=4", "--taa", "bevy", "--random-scenes", "2", "--shapes", "3",
+            "--motion", "random-pan", "--size", "12", "--frames", "3", "--warmup", "2",
+            "--reference-samples", "4", "--max-tries", "6", "--step", "0.125",
+            "--min-step", "0.0625", "-o", out]
+    cli = cli_json(aapat_cli, "sequence", "search", *args)
+    py = aapat.sequence_search("halton:frames=4", taa="bevy", random_scenes=2, shapes=3,
+                               motion="random-pan", size=(12, 12), frames=3, warmup=2,
+                               reference_samples=4, max_tries=6, step=0.125, min_step=0.0625)
+    for key in ("start_value", "value", "tries", "kept", "against", "scenes"):
+        assert py[key] == cli[key], key
+    assert py["result"].to_json() == aapat.sequence(out).to_json()
+    assert cli["value"] <= cli["start_value"]
+    assert cli["against"] == "halton:b1=2,b2=3,frames=8,start=1"  # the preset's own jitter

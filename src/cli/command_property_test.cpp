@@ -193,7 +193,7 @@ std::vector<std::string> metric_args(std::vector<std::string> args) {
 
 // A random command line of one of the commands, small enough to run fast.
 std::vector<std::string> random_command() {
-  const int which = uniform(0, 21);
+  const int which = uniform(0, 22);
   std::vector<std::string> a;
   switch (which) {
     case 0:
@@ -417,6 +417,31 @@ std::vector<std::string> random_command() {
       maybe(a, "--shapes", {"3", "0"});
       maybe(a, "--max-speed", {"0.5", "nan"});
       maybe(a, "--resamples", {"50", "0"});
+      maybe_flag(a, "--json");
+      break;
+    case 21:  // the rendered search, tiny (one small scene, a few tries)
+      a = {"sequence",
+           "search",
+           *one_of({"halton:frames=2", "r2:frames=3", "msaa-alternating", "nosuch"}),
+           "--taa",
+           *one_of({"bevy", "godot", "nosuch"}),
+           "--random-scenes",
+           *one_of({"1", "0"}),
+           "--size",
+           *one_of({"10", "0"}),
+           "--frames",
+           "2",
+           "--warmup",
+           "1",
+           "--reference-samples",
+           "4",
+           "--max-tries",
+           *one_of({"3", "-1"})};
+      maybe(a, "--against", {"halton:frames=4", "nosuch"});
+      maybe(a, "--motion", {"random-pan", "cut", "spin"});
+      maybe(a, "--loss", {"0", "-1", "nan"});
+      maybe(a, "--step", {"0.125", "0", "0.75"});
+      maybe(a, "-o", {"s.json", "s.txt"});
       maybe_flag(a, "--json");
       break;
   }

@@ -32,8 +32,10 @@ Action add_study_command(CLI::App& app);
 Action add_sequence_command(CLI::App& app);
 Action add_diff_command(CLI::App& app);
 
-// `aapat sequence compare` (sequence_compare_command.cpp), a subcommand of `sequence`.
+// `aapat sequence compare` and `aapat sequence search` (rendered_sequence_commands.cpp),
+// subcommands of `sequence`.
 void add_sequence_compare(CLI::App* parent, std::function<void(std::ostream&)>& action);
+void add_sequence_search(CLI::App* parent, std::function<void(std::ostream&)>& action);
 
 // --seed: a whole number from 0 to 2^64 - 1; "-1" is refused, not wrapped.
 CLI::Option* add_seed_option(CLI::App* cmd, uint64_t& seed, const std::string& help);

@@ -103,7 +103,7 @@ struct OptimizeOptions {
   double flicker_weight = SequenceSearch{}.flicker_weight;
   double jitter_bound = SequenceSearch{}.jitter_bound;
   std::optional<double> jitter_radius;
-  std::string frame_measure = "worst";
+  std::string frame_measure{frame_measure_name(SequenceSearch{}.frame_measure)};
   bool equal_weights = false;
   ModelOptions model;
   // --ratio R: the jitter of an upscale from display / R, reconstructed by --reconstruct.
@@ -180,7 +180,7 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   s.flicker_weight = o.flicker_weight;
   s.jitter_bound = o.jitter_bound;
   s.jitter_radius = o.jitter_radius;
-  s.frame_measure = o.frame_measure == "mean" ? FrameMeasure::mean : FrameMeasure::worst;
+  s.frame_measure = parse_frame_measure(o.frame_measure);
   s.optimize_weights = !o.equal_weights;
   s.starts = o.starts;
   s.seed = o.seed;

@@ -156,7 +156,6 @@ void run_grid(const Options& o, std::ostream& out) {
       const std::vector<int> map = map_of(c);
       most = std::max(most, *std::max_element(map.begin(), map.end()));
     }
-  JsonObject rows = JsonObject::array();
   for (const RenderGridCell& c : cells) {
     const ImageError& e = c.figures.error;
     if (c.show_map) {
@@ -176,19 +175,6 @@ void run_grid(const Options& o, std::ostream& out) {
       table += c.adaptive ? fmt::format(" {:.1f}% |", 100 * c.adaptive->refined_fraction) : " - |";
     table += fmt::format(" {:.3f} | {} | {} | {:.4f} |\n", e.rmse, e.max_deviation,
                          ssim_text(c.figures), c.figures.flip);
-    JsonObject cell = c.sampling.pattern ? JsonObject{{"pattern", c.row}}
-                                         : JsonObject{{"generator", c.sampling.generator},
-                                                      {"samples", c.sampling.samples}};
-    cell.update(JsonObject{{"filter", c.column}, {"samples_per_pixel", c.stats.samples_per_pixel}});
-    cell.update(shading_json(c.sampling, c.stats));
-    if (c.adaptive) {
-      RenderOptions options;
-      split_options(c.row, options);
-      split_options(c.column, options);
-      cell["adaptive"] = adaptive_json(*options.adaptive_settings(c.sampling), *c.adaptive);
-    }
-    cell.update(figures_json(c.figures));
-    rows.push_back(std::move(cell));
   }
   const SheetRaster r = compose_sheet(sheet);
   if (r.channels == 3)
@@ -204,14 +190,7 @@ void run_grid(const Options& o, std::ostream& out) {
     out << heading + table;
     return;
   }
-  JsonObject doc = json_report("render");
-  doc.update(JsonObject{{"scene", o.scene},
-                        {"texture", o.texture.empty() ? JsonObject() : JsonObject(o.texture)},
-                        {"width", w},
-                        {"height", h},
-                        {"reference", describe_reference(s.reference)},
-                        {"rows", rows}});
-  out << json_text(doc);
+  out << json_text(render_grid_json(o.scene, o.texture, w, h, s.reference, cells));
 }
 
 // The squared-error histogram as CSV and as a plot.

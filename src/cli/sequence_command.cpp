@@ -383,10 +383,10 @@ void add_export(CLI::App* parent, std::function<void(std::ostream&)>& action) {
 Action add_sequence_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("sequence",
                                  "patterns over time: TAA and upscaler jitter, alternating MSAA: "
-                                 "generate, eval, show, export, phases, pan, compare "
+                                 "generate, eval, show, export, phases, pan, compare, search "
                                  "(docs/temporal.md)");
   cmd->require_subcommand(1);
-  auto actions = std::make_shared<std::vector<std::function<void(std::ostream&)>>>(7);
+  auto actions = std::make_shared<std::vector<std::function<void(std::ostream&)>>>(8);
   add_generate(cmd, (*actions)[0]);
   add_eval(cmd, (*actions)[1]);
   add_show(cmd, (*actions)[2]);
@@ -394,6 +394,7 @@ Action add_sequence_command(CLI::App& app) {
   add_phases(cmd, (*actions)[4]);
   add_pan(cmd, (*actions)[5]);
   add_sequence_compare(cmd, (*actions)[6]);
+  add_sequence_search(cmd, (*actions)[7]);
   return [actions](std::ostream& out) {
     for (auto& a : *actions) a(out);
   };

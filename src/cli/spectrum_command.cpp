@@ -71,34 +71,20 @@ void run_line_spectra(const SpectrumOptions& o, std::ostream& out) {
   const int n = o.n_option->count() ? o.src.n : kDefaultLinePoints;
   const auto spectra = line_spectra(kinds, n, o.src.seed, o.frequencies, o.max_frequency);
   const size_t count = spectra.back().points;
-  auto frequency = [&](int k) { return k * o.max_frequency / o.frequencies; };
+  const std::vector<double> frequency = line_frequencies(o.frequencies, o.max_frequency);
   if (!o.csv.empty()) {
     std::string csv = "frequency";
     for (const auto& kind : kinds) csv += "," + kind;
     csv += "\n";
     for (int k = 0; k < o.frequencies; ++k) {
-      csv += fmt::format("{:.6g}", frequency(k));
+      csv += fmt::format("{:.6g}", frequency[static_cast<size_t>(k)]);
       for (const auto& sp : spectra) csv += fmt::format(",{:.6g}", sp.power[k]);
       csv += "\n";
     }
     write_output(o.csv, csv, out);
   }
   if (o.json) {
-    JsonObject doc = json_report("spectrum");
-    doc.update(JsonObject{{"dimensions", 1},
-                          {"kinds", kinds},
-                          {"points", count},
-                          {"seed", o.src.seed},
-                          {"frequencies", o.frequencies},
-                          {"max_frequency", o.max_frequency}});
-    JsonObject rows = JsonObject::array();
-    for (int k = 0; k < o.frequencies; ++k) {
-      JsonObject row{{"frequency", frequency(k)}};
-      for (const auto& sp : spectra) row[sp.kind] = sp.power[k];
-      rows.push_back(std::move(row));
-    }
-    doc["rows"] = std::move(rows);
-    out << json_text(doc);
+    out << json_text(line_spectra_json(kinds, o.src.seed, o.frequencies, o.max_frequency, spectra));
   }
   if (!o.svg.empty()) {
     std::vector<LineSeries> lines;

@@ -274,7 +274,7 @@
     $('worst-angle').textContent = String(row.worst_angle_deg);
     $('family').textContent = row.family;
     $('cost').textContent = String(row.n);
-    $('objective-caption').textContent = e.objective.caption;
+    $('objective-caption').textContent = e.caption;
     drawPolar(e);
     return true;
   }

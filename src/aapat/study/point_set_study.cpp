@@ -120,6 +120,12 @@ SpectrumStudy spectrum_study(const PointSource& source, const SpectrumSettings& 
   return out;
 }
 
+std::vector<double> line_frequencies(int frequencies, double max_frequency) {
+  std::vector<double> f(static_cast<size_t>(std::max(frequencies, 0)));
+  for (int k = 0; k < frequencies; ++k) f[static_cast<size_t>(k)] = k * max_frequency / frequencies;
+  return f;
+}
+
 std::vector<LineSpectrum> line_spectra(const std::vector<std::string>& kinds, int n, uint64_t seed,
                                        int frequencies, double max_frequency) {
   if (frequencies < kMinLineFrequencies || frequencies > kMaxLineFrequencies)

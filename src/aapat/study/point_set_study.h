@@ -87,5 +87,7 @@ inline constexpr int kMinLineFrequencies = 16, kMaxLineFrequencies = 10'000'000;
 inline constexpr double kMinLineMaxFrequency = 0.01, kMaxLineMaxFrequency = 1000;
 std::vector<LineSpectrum> line_spectra(const std::vector<std::string>& kinds, int n, uint64_t seed,
                                        int frequencies, double max_frequency);
+// The frequencies a LineSpectrum's power is at: k * max_frequency / frequencies.
+std::vector<double> line_frequencies(int frequencies, double max_frequency);
 
 }  // namespace aapat

@@ -146,6 +146,58 @@ JsonObject adaptive_json(const AdaptiveSettings& a, const AdaptiveImage& r) {
           {"evaluations", r.evaluations}};
 }
 
+JsonObject grid_cell_json(const RenderGridCell& c) {
+  JsonObject cell = c.sampling.pattern ? JsonObject{{"pattern", c.row}}
+                                       : JsonObject{{"generator", c.sampling.generator},
+                                                    {"samples", c.sampling.samples}};
+  cell.update(JsonObject{{"filter", c.column}, {"samples_per_pixel", c.stats.samples_per_pixel}});
+  cell.update(shading_json(c.sampling, c.stats));
+  if (c.adaptive) {
+    RenderOptions options;
+    split_options(c.row, options);
+    split_options(c.column, options);
+    cell["adaptive"] = adaptive_json(*options.adaptive_settings(c.sampling), *c.adaptive);
+  }
+  cell.update(figures_json(c.figures));
+  return cell;
+}
+
+JsonObject render_grid_json(const std::string& scene_name, const std::string& texture, int width,
+                            int height, const ReferenceSettings& reference,
+                            const std::vector<RenderGridCell>& cells) {
+  JsonObject rows = JsonObject::array();
+  for (const RenderGridCell& c : cells)
+    if (!c.show_map) rows.push_back(grid_cell_json(c));
+  JsonObject doc = json_report("render");
+  doc.update(JsonObject{{"scene", scene_name},
+                        {"texture", texture.empty() ? JsonObject() : JsonObject(texture)},
+                        {"width", width},
+                        {"height", height},
+                        {"reference", describe_reference(reference)},
+                        {"rows", rows}});
+  return doc;
+}
+
+JsonObject line_spectra_json(const std::vector<std::string>& kinds, uint64_t seed, int frequencies,
+                             double max_frequency, const std::vector<LineSpectrum>& spectra) {
+  JsonObject doc = json_report("spectrum");
+  doc.update(JsonObject{{"dimensions", 1},
+                        {"kinds", kinds},
+                        {"points", spectra.back().points},
+                        {"seed", seed},
+                        {"frequencies", frequencies},
+                        {"max_frequency", max_frequency}});
+  const std::vector<double> f = line_frequencies(frequencies, max_frequency);
+  JsonObject rows = JsonObject::array();
+  for (int k = 0; k < frequencies; ++k) {
+    JsonObject row{{"frequency", f[static_cast<size_t>(k)]}};
+    for (const auto& sp : spectra) row[sp.kind] = sp.power[static_cast<size_t>(k)];
+    rows.push_back(std::move(row));
+  }
+  doc["rows"] = std::move(rows);
+  return doc;
+}
+
 JsonObject figures_json(const RenderFigures& f) {
   return {{"rmse", f.error.rmse},
           {"max_deviation", f.error.max_deviation},

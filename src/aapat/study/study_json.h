@@ -61,6 +61,22 @@ JsonObject adaptive_json(const AdaptiveSettings& settings, const AdaptiveImage& 
 // window), flip (the mean FLIP).
 JsonObject figures_json(const RenderFigures& figures);
 
+// One cell of `aapat render --grid --json`: the row's pattern (or generator
+// and samples), the column's filter, samples per pixel, the shading, the
+// refinement when adaptive, and the figures.
+JsonObject grid_cell_json(const RenderGridCell& cell);
+
+// `aapat render --grid --json`: the scene, texture (null: none), size and
+// reference, and a row per cell that is not a refinement map's.
+JsonObject render_grid_json(const std::string& scene_name, const std::string& texture, int width,
+                            int height, const ReferenceSettings& reference,
+                            const std::vector<RenderGridCell>& cells);
+
+// `aapat spectrum --1d --json`: the kinds, points, seed, frequencies and
+// max_frequency, and a row per frequency {frequency, KIND: power, ...}.
+JsonObject line_spectra_json(const std::vector<std::string>& kinds, uint64_t seed, int frequencies,
+                             double max_frequency, const std::vector<LineSpectrum>& spectra);
+
 // One rendering (`aapat render --json`, aapat.render's values): scene,
 // texture, width, height, pattern (or generator and samples), filter,
 // samples_per_pixel, the shading keys, adaptive {...} when refined, and when

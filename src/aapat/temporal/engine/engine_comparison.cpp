@@ -45,35 +45,54 @@ void validate(const EngineComparison& c, size_t sequences) {
   compare_paired(std::vector<double>{0.0}, std::vector<double>{0.0}, c.resamples, c.confidence);
 }
 
-EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequences,
-                                            const EngineComparison& c,
-                                            const ReferenceSource& references,
-                                            const ItemsProgress& progress) {
-  validate(c, sequences.size());
-  std::vector<std::string> motions(c.scenes.size(), c.motion == "cut" ? "static" : c.motion);
+PreparedScenes::PreparedScenes(const EngineComparison& c, const ReferenceSource& references)
+    : source_(references ? references : ReferenceSource(render_reference)), memo_(c.scenes.size()) {
+  motions_.assign(c.scenes.size(), c.motion == "cut" ? "static" : c.motion);
   if (c.motion == "random-pan") {
     const std::vector<Vec2> v =
         random_pan_velocities(static_cast<int>(c.scenes.size()), c.max_speed, c.seed);
-    for (size_t m = 0; m < motions.size(); ++m)
-      motions[m] = fmt::format("pan:dx={:g},dy={:g}", v[m].x, v[m].y);
+    for (size_t m = 0; m < motions_.size(); ++m)
+      motions_[m] = fmt::format("pan:dx={:g},dy={:g}", v[m].x, v[m].y);
   }
-  EngineComparisonResult r;
-  for (const Sequence& s : sequences) r.sequences.push_back(s.name);
-  const int renders = static_cast<int>(sequences.size() * c.scenes.size());
-  int done = 0;
   for (size_t m = 0; m < c.scenes.size(); ++m) {
-    ComparedScene scene{c.scenes[m], motions[m], {}};
     EngineRun run;
     run.scene = resolve_scene(c.scenes[m], c.width, c.height);
-    run.motion = make_motion(motions[m], c.width, c.height);
+    run.motion = make_motion(motions_[m], c.width, c.height);
     run.width = c.width;
     run.height = c.height;
     run.frames = c.frames;
     run.warmup = c.motion == "cut" ? 0 : c.warmup;
     run.reference = c.reference;
+    runs_.push_back(std::move(run));
+  }
+}
+
+ComparisonMeasures PreparedScenes::render(size_t scene, const Sequence& s, const EngineTaa& taa) {
+  std::map<uint64_t, Image>& memo = memo_[scene];
+  const ReferenceSource remembered = [&](const Scene& sc, int w, int h,
+                                         const ReferenceSettings& ref, double offset) {
+    const auto it = memo.find(ref.seed);
+    if (it != memo.end()) return it->second;
+    return memo.emplace(ref.seed, source_(sc, w, h, ref, offset)).first->second;
+  };
+  const EngineResult e = render_engine_taa(runs_[scene], s, taa, {}, remembered);
+  return {e.total.rmse, e.flicker, e.mean_flip};
+}
+
+EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequences,
+                                            const EngineComparison& c,
+                                            const ReferenceSource& references,
+                                            const ItemsProgress& progress) {
+  validate(c, sequences.size());
+  PreparedScenes prepared(c, references);
+  EngineComparisonResult r;
+  for (const Sequence& s : sequences) r.sequences.push_back(s.name);
+  const int renders = static_cast<int>(sequences.size() * c.scenes.size());
+  int done = 0;
+  for (size_t m = 0; m < c.scenes.size(); ++m) {
+    ComparedScene scene{c.scenes[m], prepared.motion(m), {}};
     for (const Sequence& s : sequences) {
-      const EngineResult e = render_engine_taa(run, s, c.taa, {}, references);
-      scene.measures.push_back({e.total.rmse, e.flicker, e.mean_flip});
+      scene.measures.push_back(prepared.render(m, s, c.taa));
       if (progress) progress(++done, renders, fmt::format("{} on {}", s.name, c.scenes[m]));
     }
     r.scenes.push_back(std::move(scene));

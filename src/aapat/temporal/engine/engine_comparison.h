@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,26 @@ std::vector<std::string> random_scene_specs(int count, int shapes, uint64_t seed
 // scene or too many, fewer than two sequences, a motion it cannot make, a
 // size, frame count or warm-up out of range.
 void validate(const EngineComparison& c, size_t sequences);
+
+// The comparison's scenes resolved once, each with its motion and its run
+// settings, and every reference they have needed kept in memory (by scene and
+// frame seed), so that each sequence rendered on them reads the same
+// references, rendered once: a comparison of K sequences, or a search that
+// renders hundreds. Call validate first.
+class PreparedScenes {
+ public:
+  PreparedScenes(const EngineComparison& comparison, const ReferenceSource& references);
+  size_t size() const { return runs_.size(); }
+  const std::string& motion(size_t scene) const { return motions_[scene]; }
+  // One sequence on scene i under the preset.
+  ComparisonMeasures render(size_t scene, const Sequence& s, const EngineTaa& taa);
+
+ private:
+  std::vector<EngineRun> runs_;
+  std::vector<std::string> motions_;
+  ReferenceSource source_;
+  std::vector<std::map<uint64_t, Image>> memo_;  // per scene, by frame seed
+};
 
 // progress: (renders done, renders, "SEQUENCE on SCENE") after each render.
 EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequences,

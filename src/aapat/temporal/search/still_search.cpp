@@ -201,6 +201,16 @@ Sequence lattice_polish(Sequence seq, const SequenceSearch& s, const Metric& met
 
 }  // namespace
 
+FrameMeasure parse_frame_measure(std::string_view text) {
+  if (text == "worst") return FrameMeasure::worst;
+  if (text == "mean") return FrameMeasure::mean;
+  throw ParameterError("frame-measure", fmt::format(" '{}': expected worst or mean", text));
+}
+
+std::string_view frame_measure_name(FrameMeasure m) {
+  return m == FrameMeasure::mean ? "mean" : "worst";
+}
+
 void validate(const SequenceSearch& s) {
   if (s.frames < 1 || s.frames > kMaxSequenceFrames)
     throw ParameterError("sequence",

@@ -26,6 +26,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "aapat/core/filter.h"
@@ -40,6 +41,10 @@ namespace aapat {
 // The frames' E2 in J: the worst steady frame, or the mean over the phases
 // (which rendered RMSE over many frames follows more closely; docs/temporal.md).
 enum class FrameMeasure { worst, mean };
+// "worst" or "mean", the one spelling every face takes and reports; throws
+// ParameterError naming "frame-measure" for another.
+FrameMeasure parse_frame_measure(std::string_view text);
+std::string_view frame_measure_name(FrameMeasure m);
 
 inline constexpr double kMinJitterBound = 0.01;   // --jitter-bound's and --jitter-radius's smallest
 inline constexpr double kMaxJitterRadius = 0.71;  // past the pixel's corner: no constraint

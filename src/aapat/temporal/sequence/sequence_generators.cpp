@@ -13,7 +13,7 @@
 namespace aapat {
 namespace {
 
-uint64_t mix(uint64_t x) {  // splitmix64's finalizer: a hash of the key
+uint64_t splitmix_finalizer(uint64_t x) {  // splitmix64's finalizer: a hash of the key
   x += 0x9e3779b97f4a7c15ull;
   x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
   x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
@@ -39,7 +39,7 @@ uint32_t owen_scramble(uint32_t v, uint64_t seed, int dim) {
   for (int b = 31; b >= 0; --b) {
     const uint64_t prefix = b == 31 ? 0 : (uint64_t(v) >> (b + 1)) | (1ull << (31 - b));
     const uint32_t flip =
-        static_cast<uint32_t>(mix(seed * 0x100000001b3ull + uint64_t(dim) * 977 + mix(prefix)) & 1);
+        static_cast<uint32_t>(splitmix_finalizer(seed * 0x100000001b3ull + uint64_t(dim) * 977 + splitmix_finalizer(prefix)) & 1);
     out |= (((v >> b) & 1u) ^ flip) << b;
   }
   return out;

@@ -1,0 +1,149 @@
+#include "aapat/temporal/search/rendered_search.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "aapat/optimize/compass_search.h"
+#include "aapat/temporal/search/still_search.h"
+#include "aapat/temporal/sequence/render_scale.h"
+#include "aapat/temporal/sequence/sequence_json.h"
+
+namespace aapat {
+
+namespace {
+
+void check_jitter(const Sequence& s, const char* what) {
+  validate(s);
+  for (const Pattern& f : s.frames)
+    if (f.footprint.size != 1 || f.set_count() != 1 || f.sets[0].size() != 1)
+      throw Error(
+          fmt::format("{} {}: a rendered search takes one-sample one-pixel frames", what, s.name));
+}
+
+}  // namespace
+
+void validate(const RenderedSearch& s) {
+  validate(s.comparison, 2);
+  check_jitter(s.start, "start");
+  check_jitter(s.baseline, "baseline");
+  if (!(s.step > 0 && s.step <= 0.5))
+    throw ParameterError("step", fmt::format(" {}: expected (0, 0.5] pixels", s.step));
+  if (!(s.min_step > 0 && s.min_step <= s.step))
+    throw ParameterError("min-step",
+                         fmt::format(" {}: expected (0, step = {}]", s.min_step, s.step));
+  if (!(s.loss >= 0 && s.loss <= 100))
+    throw ParameterError("loss", fmt::format(" {}: expected 0 to 100", s.loss));
+  if (!(s.jitter_bound >= kMinJitterBound && s.jitter_bound <= 0.5))
+    throw ParameterError("jitter-bound", fmt::format(" {}: expected {} to 0.5 pixels",
+                                                     s.jitter_bound, kMinJitterBound));
+  if (s.max_tries < 0)
+    throw ParameterError("max-tries",
+                         fmt::format(" {}: expected 0 (no limit) or more", s.max_tries));
+}
+
+RenderedSearchResult search_rendered(const RenderedSearch& s, const ReferenceSource& references,
+                                     const ItemsProgress& progress) {
+  validate(s);
+  PreparedScenes scenes(s.comparison, references);
+  std::vector<ComparisonMeasures> base;
+  for (size_t m = 0; m < scenes.size(); ++m) {
+    base.push_back(scenes.render(m, s.baseline, s.comparison.taa));
+    if (!(base.back()[0] > 0 && base.back()[1] > 0))
+      throw Error(fmt::format(
+          "the baseline {} has rmse {} and flicker {} on {} ({}): a ratio cannot be taken; "
+          "choose a motion or scenes where it errs and flickers",
+          s.baseline.name, base.back()[0], base.back()[1], s.comparison.scenes[m],
+          scenes.motion(m)));
+  }
+  Sequence trial = s.start;
+  const auto objective = [&](std::span<const double> x) {
+    for (size_t f = 0; f < trial.frames.size(); ++f)
+      trial.frames[f].sets[0][0] = {x[2 * f], x[2 * f + 1]};
+    double sum = 0;
+    for (size_t m = 0; m < scenes.size(); ++m) {
+      const ComparisonMeasures v = scenes.render(m, trial, s.comparison.taa);
+      const double a = std::log(v[0] / base[m][0]), b = std::log(v[1] / base[m][1]);
+      sum += a + b + s.loss * (std::max(0.0, a) + std::max(0.0, b));
+    }
+    return sum / static_cast<double>(scenes.size());
+  };
+  FunctionObjective f(objective, 2);
+  // Inside the pixel ([-1/2, 1/2), as a sequence file holds it) and the bound.
+  CompassSettings settings;
+  settings.step = s.step;
+  settings.min_step = s.min_step;
+  settings.hi = std::min(s.jitter_bound, std::nextafter(0.5, 0.0));
+  settings.lo = -s.jitter_bound;
+  settings.max_tries = s.max_tries;
+  std::vector<double> x;
+  for (const Pattern& p : s.start.frames)
+    x.insert(x.end(), {std::clamp(p.sets[0][0].x, settings.lo, settings.hi),
+                       std::clamp(p.sets[0][0].y, settings.lo, settings.hi)});
+  // Each value is rendered afresh (no incremental sums): any lower value is a gain.
+  settings.min_gain = 0;
+  const CompassResult found = compass_search(f, std::move(x), settings, progress);
+  RenderedSearchResult r;
+  r.start_value = found.start_value;
+  r.value = found.value;
+  r.tries = found.tries;
+  r.kept = found.kept;
+  r.best = s.start;
+  for (size_t i = 0; i < r.best.frames.size(); ++i)
+    r.best.frames[i].sets[0][0] = {found.x[2 * i], found.x[2 * i + 1]};
+  r.best.name = fmt::format("rendered-search-{}", r.best.period());
+  r.best.description = fmt::format(
+      "{} frames of 1 sample searched on rendered error under {} at {:g}x against {}: the mean "
+      "log ratio of rmse and flicker over {} scenes ({}), losses weighted {}",
+      r.best.period(), s.comparison.taa.preset, s.comparison.taa.upscale.ratio, s.baseline.name,
+      scenes.size(), s.comparison.motion, 1 + s.loss);
+  r.best.provenance = {{"optimizer", "aapat sequence search (compass search on rendered error)"},
+                       {"taa", s.comparison.taa.preset},
+                       {"taa_settings", engine_taa_text(s.comparison.taa)},
+                       {"ratio", fmt::format("{:g}", s.comparison.taa.upscale.ratio)},
+                       {"against", s.baseline.name},
+                       {"from", s.start.name},
+                       {"scenes", std::to_string(scenes.size())},
+                       {"motion", s.comparison.motion},
+                       {"seed", std::to_string(s.comparison.seed)},
+                       {"loss", fmt::format("{:g}", s.loss)},
+                       {"start_value", fmt::format("{:.6f}", r.start_value)},
+                       {"value", fmt::format("{:.6f}", r.value)}};
+  if (s.comparison.taa.upscale.ratio > 1) {
+    std::string warning =
+        upscaler_rule_warning(r.best.name, r.best.period(), s.comparison.taa.upscale.ratio);
+    if (!warning.empty()) r.warnings.push_back(std::move(warning));
+  }
+  return r;
+}
+
+JsonObject rendered_search_json(const RenderedSearch& s, const RenderedSearchResult& r) {
+  JsonObject doc = json_report("sequence search");
+  const EngineComparison& c = s.comparison;
+  doc.update(JsonObject{{"taa", c.taa.preset},
+                        {"taa_settings", engine_taa_text(c.taa)},
+                        {"ratio", c.taa.upscale.ratio},
+                        {"scenes", c.scenes},
+                        {"motion", c.motion},
+                        {"width", c.width},
+                        {"height", c.height},
+                        {"frames", c.frames},
+                        {"warmup", c.motion == "cut" ? 0 : c.warmup},
+                        {"reference", describe_reference(c.reference)},
+                        {"seed", c.seed},
+                        {"against", s.baseline.name},
+                        {"from", s.start.name},
+                        {"step", s.step},
+                        {"min_step", s.min_step},
+                        {"loss", s.loss},
+                        {"jitter_bound", s.jitter_bound},
+                        {"start_value", r.start_value},
+                        {"value", r.value},
+                        {"tries", r.tries},
+                        {"kept", r.kept}});
+  doc["result"] = JsonObject::parse(sequence_to_json(r.best));
+  return doc;
+}
+
+}  // namespace aapat

@@ -1,0 +1,74 @@
+#include "aapat/temporal/search/rendered_search.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "aapat/temporal/sequence/sequence_generators.h"
+#include "testing/centre_reference.h"
+#include "testing/error_message.h"
+
+namespace aapat {
+namespace {
+
+RenderedSearch tiny() {
+  RenderedSearch s;
+  s.comparison.taa = make_engine_taa("bevy", 1, {});
+  s.comparison.scenes = random_scene_specs(2, 4, 21);
+  s.comparison.motion = "random-pan";
+  s.comparison.width = s.comparison.height = 12;
+  s.comparison.frames = 3;
+  s.comparison.warmup = 2;
+  s.start = make_sequence("halton:frames=4");
+  s.baseline = make_sequence("halton:frames=4");
+  s.step = 1.0 / 8;
+  s.min_step = 1.0 / 16;
+  s.max_tries = 12;
+  return s;
+}
+
+// Started at the baseline the objective is 0; the result never exceeds it,
+// and its value is the objective's definition over the comparison's renders.
+TEST(RenderedSearch, NeverEndsAboveItsStartAndItsValueIsTheDefinition) {
+  const RenderedSearch s = tiny();
+  const RenderedSearchResult r = search_rendered(s, testing::centre_reference);
+  EXPECT_EQ(r.start_value, 0.0);
+  EXPECT_LE(r.value, 0.0);
+  EXPECT_LE(r.tries, 12);
+  const EngineComparisonResult c =
+      compare_under_engine({s.baseline, r.best}, s.comparison, testing::centre_reference);
+  double sum = 0;
+  for (const ComparedScene& scene : c.scenes) {
+    const double a = std::log(scene.measures[1][0] / scene.measures[0][0]),
+                 b = std::log(scene.measures[1][1] / scene.measures[0][1]);
+    sum += a + b + s.loss * (std::max(0.0, a) + std::max(0.0, b));
+  }
+  EXPECT_NEAR(r.value, sum / 2, 1e-12);
+  for (const Pattern& f : r.best.frames) {
+    EXPECT_LE(std::abs(f.sets[0][0].x), 0.5);
+    EXPECT_LE(std::abs(f.sets[0][0].y), 0.5);
+  }
+}
+
+// Settings out of range, and a baseline with nothing to take a ratio of,
+// are refused by name.
+TEST(RenderedSearch, RefusesWhatItCannotSearch) {
+  RenderedSearch s = tiny();
+  s.loss = -1;
+  EXPECT_EQ(testing::error_parameter([&] { validate(s); }), "loss");
+  s = tiny();
+  s.step = 0.75;
+  EXPECT_EQ(testing::error_parameter([&] { validate(s); }), "step");
+  s = tiny();
+  s.start = make_sequence("msaa-alternating:samples=2,frames=2");
+  EXPECT_THROW(validate(s), Error);
+  s = tiny();
+  s.comparison.scenes = {"halfplane"};
+  s.comparison.motion = "static";
+  s.baseline = make_sequence("halton:frames=1");  // one phase: no flicker
+  EXPECT_THROW(search_rendered(s, testing::centre_reference), Error);
+}
+
+}  // namespace
+}  // namespace aapat

@@ -1,0 +1,71 @@
+#include "cli/animation_options.h"
+#include "cli/app.h"
+#include "testing/cli_run.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace aapat {
+namespace {
+
+namespace fs = std::filesystem;
+
+using testing::CliRun;
+using testing::run;
+using testing::slurp;
+using testing::temp_path;
+
+TEST(CliEval, EvalJsonHasTheDocumentedKeys) {
+  const CliRun r = run({"eval", "flipquad", "centroid", "--objective", "laine-aila", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["command"], "eval");  // docs/json.md: command, schema, settings, rows
+  EXPECT_EQ(doc["schema"], 1);
+  EXPECT_EQ(doc["objective"], "laine-aila");
+  EXPECT_EQ(doc["acuity"], "laine-aila");
+  EXPECT_EQ(doc["norm"], "inf");
+  const auto& rows = doc["rows"];
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0]["pattern"], "flipquad");
+  EXPECT_EQ(rows[0]["family"], "P(4,1+,2)");
+  EXPECT_EQ(rows[0]["n"], 2.0);
+  EXPECT_NEAR(rows[0]["e2"].get<double>(), 0.364, 0.001);  // Laine-Aila Table 2
+  EXPECT_EQ(rows[1]["worst_angle_deg"], 0.0);
+  EXPECT_NEAR(rows[1]["e2"].get<double>(), 1.256, 0.001);  // Hasselgren Table 2
+}
+
+TEST(CliEval, EvalTableAndOtherFiltersAndNorms) {
+  const CliRun r = run({"eval", "rgss", "--filter", "gaussian:sigma=0.5", "--acuity",
+                        "uniform:step=5", "--norm", "4"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("objective (filter gaussian:sigma=0.5,radius=1.5, acuity "
+                       "uniform:step=5,weight=1, norm 4), 36 angles"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("rgss"), std::string::npos);
+}
+
+TEST(CliEval, ProfileWritesSvgAndCsv) {
+  const std::string svg = temp_path("profile.svg"), csv = temp_path("profile.csv");
+  ASSERT_EQ(run({"eval", "flipquad", "rgss", "--profile", svg}).code, 0);
+  ASSERT_EQ(run({"eval", "flipquad", "rgss", "--profile", csv}).code, 0);
+  std::ifstream s(svg), c(csv);
+  std::stringstream svg_text, csv_text;
+  svg_text << s.rdbuf();
+  csv_text << c.rdbuf();
+  EXPECT_NE(svg_text.str().find("<svg"), std::string::npos);
+  EXPECT_NE(svg_text.str().find("flipquad"), std::string::npos);
+  std::string header;
+  std::getline(csv_text, header);
+  EXPECT_EQ(header, "edge_angle_deg,acuity,flipquad,rgss");
+}
+
+}  // namespace
+}  // namespace aapat
