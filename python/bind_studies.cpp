@@ -1,5 +1,6 @@
 // The papers' experiments re-run: Laine-Aila Table 3 and Figure 10,
 // Hasselgren Table 2, the hardware lattice table.
+#include "aapat/study/objective_study.h"
 #include "aapat/study/optimize_run.h"
 #include "aapat/study/study_json.h"
 #include "bindings.h"
@@ -7,6 +8,40 @@
 namespace aapat::python {
 
 void bind_studies(py::module_& m) {
+  m.def(
+      "study_compare",
+      [](const std::vector<py::object>& patterns,
+         const std::optional<std::vector<std::string>>& scenes, int size, int frames,
+         int reference_samples, int resamples, uint64_t seed) {
+        StudySettings s;
+        if (scenes) s.scenes = *scenes;
+        s.size = size;
+        s.frames = frames;
+        s.reference.samples = reference_samples;
+        s.resamples = resamples;
+        s.seed = seed;
+        validate(s);
+        std::vector<StudyPattern> list;
+        for (const py::object& q : patterns) {
+          const Pattern p = to_pattern(q);
+          list.push_back(
+              {py::isinstance<py::str>(q) ? q.cast<std::string>() : p.name, "", p, {}, {}, {}});
+        }
+        const auto measured = interruptible([&] {
+          return measure_patterns(std::move(list), s, ReferenceSource(render_reference));
+        });
+        return to_python(study_compare_json(s, study_objectives(s), measured));
+      },
+      py::arg("patterns"), py::kw_only(), py::arg("scenes") = py::none(),
+      py::arg("size") = StudySettings{}.size, py::arg("frames") = StudySettings{}.frames,
+      py::arg("reference_samples") = StudySettings{}.reference.samples,
+      py::arg("resamples") = StudySettings{}.resamples, py::arg("seed") = StudySettings{}.seed,
+      R"doc(aapat study --compare: every objective and rendered measure of the patterns
+(catalog names, files or aapat.Pattern; any family) on the study's scenes
+(default its six), per scene, and each pattern after the first against the
+first, paired over the scenes (scenes lower, mean difference with a bootstrap
+interval, sign test). The document of `aapat study --compare --json`.)doc");
+
   m.def(
       "table3",
       [](int patterns, int iterations, uint64_t seed, const std::string& method,

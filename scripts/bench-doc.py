@@ -72,6 +72,8 @@ def rows_of(benchmarks):
             counters["items/s"] = counters.pop("items_per_second")
         if "bytes_per_second" in counters:
             counters["bytes/s"] = counters.pop("bytes_per_second")
+        if b.get("error_occurred"):
+            counters = {"skipped": b.get("error_message", "")}
         rows.append((name, b["real_time"] * unit, b["cpu_time"] * unit, counters))
     return rows
 
@@ -98,11 +100,14 @@ def main():
            f"| date | {ctx.get('date', '')} |",
            f"| processor | {model or 'unknown'}, {ctx.get('num_cpus')} cores at "
            f"{ctx.get('mhz_per_cpu')} MHz |",
-           f"| caches | {caches} |",
            f"| compiler | {cxx}, the `release` preset (-O3, no -march) |",
-           f"| library build | Google Benchmark {ctx.get('library_build_type', '')}; "
-           f"aapat_bench built {'with' if 'debug' in ctx.get('library_build_type', '') else 'without'} debug |",
+           f"| Google Benchmark | Debian's library (built as {ctx.get('library_build_type', '?')}); "
+           "the timed code is aapat's release build |",
+           f"| load when it started | {', '.join(f'{v:.2f}' for v in ctx.get('load_avg', []))} |",
            ""]
+    if caches:
+        out.insert(out.index(f"| compiler | {cxx}, the `release` preset (-O3, no -march) |"),
+                   f"| caches | {caches} |")
     rows = rows_of(data["benchmarks"])
     used = set()
     for title, pattern in areas + [("Other", r".")]:
@@ -114,6 +119,9 @@ def main():
                 "| --- | ---: | ---: | --- | --- |"]
         for name, real, cpu, counters in picked:
             text = ", ".join(f"{k} {number(v)}" for k, v in counters.items())
+            if "skipped" in counters:
+                out.append(f"| `{name}` | - | - | skipped: {counters['skipped']} | |")
+                continue
             family = re.escape(name).replace("/", "/")
             out.append(f"| `{name}` | {short_time(real)} | {short_time(cpu)} | {text} | "
                        f"`aapat_bench --benchmark_filter='^{family}$'` |")

@@ -26,6 +26,7 @@
 #include "aapat/io/api_export.h"
 #include "aapat/io/json_report.h"
 #include "aapat/io/pattern_json.h"
+#include "aapat/registry/page_limits.h"
 #include "aapat/registry/spec_registries.h"
 #include "aapat/render/scene.h"
 #include "aapat/study/eval_study.h"
@@ -43,12 +44,6 @@ namespace aapat::web {
 namespace {
 
 using Json = nlohmann::json;
-
-// The page's limits (docs/explorer.md): what keeps a drag interactive.
-constexpr int kMaxViewSize = 256;
-constexpr int kMaxPoints = 16384;
-constexpr int kMaxSpectrumSize = 256;
-constexpr int kMaxStarts = 1024;
 
 std::string answer(const std::function<JsonObject()>& work) {
   try {
@@ -128,10 +123,10 @@ std::string info() {
                       {"lattice_steps", kLatticeSteps},
                       {"border_snap", kBorderSnap},
                       {"limits",
-                       {{"view_size", kMaxViewSize},
-                        {"points", kMaxPoints},
-                        {"spectrum_size", kMaxSpectrumSize},
-                        {"starts", kMaxStarts}}},
+                       {{"view_size", kMaxPageViewSize},
+                        {"points", kMaxPagePoints},
+                        {"spectrum_size", kMaxPageSpectrumSize},
+                        {"starts", kMaxPageStarts}}},
                       {"registry", registry_json()}};
   });
 }
@@ -236,12 +231,13 @@ std::string optimize(const std::string& request, emscripten::val progress) {
     }
     check_family_or_pattern(!s.family.empty(), s.start.has_value());
     s.placement = field<std::string>(r, "placement", "");
-    if (r.contains("starts")) s.starts = int_field(r, "starts", 1, 1, kMaxStarts);
-    s.seed = static_cast<uint64_t>(int_field(r, "seed", 1, 0, 2147483647));
+    if (r.contains("starts")) s.starts = int_field(r, "starts", 1, 1, kMaxPageStarts);
+    s.seed = static_cast<uint64_t>(int_field(r, "seed", 1, 0, kMaxPageSeed));
     s.seeds = field<std::string>(r, "seeds", s.seeds);
     s.optimizer.method =
         parse_method(field<std::string>(r, "method", method_key(s.optimizer.method)));
-    s.optimizer.max_iterations = int_field(r, "iterations", s.optimizer.max_iterations, 1, 1000000);
+    s.optimizer.max_iterations =
+        int_field(r, "iterations", s.optimizer.max_iterations, 1, kMaxPageIterations);
     s.optimizer.weights_only = field<bool>(r, "weights_only", false);
     s.lattice = field<bool>(r, "lattice", false) ? kLatticeSteps : 0;
     s.api = field<std::string>(r, "api", "");
@@ -261,13 +257,14 @@ std::string optimize(const std::string& request, emscripten::val progress) {
 std::string render(const std::string& request) {
   return answer([&] {
     const Json r = parse_request(request);
-    const int size = int_field(r, "size", 64, 8, kMaxViewSize);
+    const int size = int_field(r, "size", 64, 8, kMaxPageViewSize);
     const std::string spec = field<std::string>(r, "scene", "zoneplate");
     RenderSettings s;
     s.width = s.height = size;
     s.sampling.pattern = pattern_of(r);
     s.measure = true;
-    s.reference.samples = int_field(r, "reference_samples", s.reference.samples, 1, 4096);
+    s.reference.samples =
+        int_field(r, "reference_samples", s.reference.samples, 1, kMaxPageReferenceSamples);
     s.reference.seed = reference_seed(s.sampling.seed);
     const Scene scene = make_scene(spec, size, size);
     static std::map<std::string, Image> kept;
@@ -300,11 +297,11 @@ std::string points(const std::string& request) {
   return answer([&] {
     const Json r = parse_request(request);
     const std::string spec = field<std::string>(r, "generator", "jittered");
-    const int n = int_field(r, "n", 256, 1, kMaxPoints);
-    const uint64_t seed = static_cast<uint64_t>(int_field(r, "seed", 1, 0, 2147483647));
+    const int n = int_field(r, "n", 256, 1, kMaxPagePoints);
+    const uint64_t seed = static_cast<uint64_t>(int_field(r, "seed", 1, 0, kMaxPageSeed));
     const std::vector<Vec2> pts = generate_points(spec, n, seed);
     SpectrumSettings ss;
-    ss.size = int_field(r, "spectrum_size", 64, 8, kMaxSpectrumSize);
+    ss.size = int_field(r, "spectrum_size", 64, 8, kMaxPageSpectrumSize);
     const SpectrumStudy st = spectrum_study([&](int) { return pts; }, ss);
     const DiscrepancyReport d =
         discrepancy_report(pts, parse_measures(field<std::string>(
@@ -323,10 +320,10 @@ std::string sequence(const std::string& request) {
   return answer([&] {
     const Json r = parse_request(request);
     const Sequence s = resolve_sequence(field<std::string>(r, "sequence", "aapat-taa-8"));
-    const Accumulation a =
-        make_accumulation(field<std::string>(r, "model", std::string(kDefaultAccumulation)),
-                          field<double>(r, "alpha", kDefaultAlpha),
-                          int_field(r, "window", 0, 0, 4096), field<std::string>(r, "resolve", ""));
+    const Accumulation a = make_accumulation(
+        field<std::string>(r, "model", std::string(kDefaultAccumulation)),
+        field<double>(r, "alpha", kDefaultAlpha), int_field(r, "window", 0, 0, kMaxSequenceFrames),
+        field<std::string>(r, "resolve", ""));
     const Metric metric = objective_of_request(r).metric();
     const TemporalReport report = evaluate_temporal(s, a, metric);
     JsonObject frames = JsonObject::array();

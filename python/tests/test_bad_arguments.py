@@ -104,6 +104,9 @@ def calls(files):
         "sequence_search": (aapat.sequence_search, ["halton:frames=2"],
                             {"taa": "bevy", "random_scenes": 1, "shapes": 2, "size": (8, 8),
                              "frames": 2, "warmup": 1, "reference_samples": 4, "max_tries": 2}),
+        "study_compare": (aapat.study_compare, [["msaa-4", "rgss"]],
+                          {"scenes": ["halfplane"], "size": 8, "frames": 1,
+                           "reference_samples": 4, "resamples": 20}),
         "spectrum": (aapat.spectrum, ["halton"], {"n": 16, "size": 8}),
         "spectrum_1d": (aapat.spectrum_1d, [["jittered"]], {"n": 16, "frequencies": 16}),
         "table2": (aapat.table2, [], {"size": 8, "frames": 1}),
@@ -146,7 +149,7 @@ def test_every_callable_has_a_bad_argument_case(files):
      "engine_taa", "enumerate", "eval", "eval_report", "figure10", "generate", "hardware_table",
      "load_pattern", "optimize", "optimize_sequence", "optimize_sequence_pan", "pattern", "Pattern", "Pattern.from_json",
      "Pattern.save", "profile", "read_points", "registry", "limits", "render", "save_pattern", "sequence",
-     "Sequence.save", "sequence_compare", "sequence_eval", "sequence_pan", "sequence_search", "spectrum", "spectrum_1d", "table2", "table3",
+     "Sequence.save", "sequence_compare", "sequence_eval", "sequence_pan", "sequence_search", "spectrum", "study_compare", "spectrum_1d", "table2", "table3",
      "write_points"]))
 def test_random_bad_arguments_raise_only_aapat_error(name, files, monkeypatch):
     # A bad value may be a valid relative path ("nan"): whatever a case

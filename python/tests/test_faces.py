@@ -464,3 +464,19 @@ def test_sequence_search_is_the_cli_search(aapat_cli, tmp_path):
     assert py["result"].to_json() == aapat.sequence(out).to_json()
     assert cli["value"] <= cli["start_value"]
     assert cli["against"] == "halton:b1=2,b2=3,frames=8,start=1"  # the preset's own jitter
+
+
+def test_study_compare_is_the_cli_comparison(aapat_cli):
+    """Patterns compared on both faces: the same measures per scene and the
+    same paired comparison against the first."""
+    args = ["msaa-4", "rgss", "aapat-4", "--scenes", "spiral", "halfplane", "circles",
+            "--size", "24", "--frames", "2", "--reference-samples", "16", "--resamples", "200"]
+    cli = cli_json(aapat_cli, "study", "--compare", *args)
+    py = aapat.study_compare(["msaa-4", "rgss", "aapat-4"], scenes=["spiral", "halfplane", "circles"],
+                             size=24, frames=2, reference_samples=16, resamples=200)
+    for key in ("patterns", "against_first", "measures", "scenes", "objectives"):
+        assert py[key] == cli[key], key
+    flip = cli["against_first"][0]["flip"]
+    lower = sum(r < f for r, f in zip((m[4] for m in cli["patterns"][1]["measures"]),
+                                      (m[4] for m in cli["patterns"][0]["measures"])))
+    assert flip["lower"] == lower and flip["scenes"] == 3 and cli["against_first"][0]["against"] == "msaa-4"

@@ -352,7 +352,7 @@ Action add_animate_command(CLI::App& app) {
   cmd->add_option("--mp4", o->mp4, "the frames as an MP4 video (needs ffmpeg)");
   cmd->add_option("--fps", o->fps, "frames per second of --gif and --mp4")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100));
+      ->check(CLI::Range(1, kMaxFramesPerSecond));
   cmd->add_option("--histogram", o->histogram, "squared-error histogram of all frames (.csv)");
   cmd->add_flag("--json", o->json, "print JSON");
   return [o, ratio](std::ostream& out) { run_animate(*o, out, ratio->count() > 0); };

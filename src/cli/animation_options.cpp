@@ -26,7 +26,7 @@ void add_animation_options(CLI::App* cmd, AnimationOptions& o) {
       ->capture_default_str();
   cmd->add_option("--frames", a.frames, "frames")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
+      ->check(CLI::Range(1, kMaxAnimationFrames));
   o.reference.settings = a.reference;
   add_reference_options(cmd, o.reference, a.reference.samples);
   add_seed_option(cmd, o.reference.settings.seed, "random seed of the reference");

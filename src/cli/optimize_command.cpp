@@ -304,7 +304,7 @@ Action add_optimize_command(CLI::App& app) {
   cmd->add_option("--lock", o->lock, "samples of the base pixel (set 0) to keep fixed, e.g. 0,2")
       ->delimiter(',');
   cmd->add_option("--time-limit", o->time_limit, "seconds for the whole run (0: none)")
-      ->check(CLI::Range(0.0, 1e7));
+      ->check(CLI::Range(0.0, kMaxTimeLimit));
   cmd->add_option("--iterations", o->iterations, "iterations per start at most")
       ->capture_default_str()
       ->check(CLI::Range(1, kMaxIterations));
@@ -334,11 +334,11 @@ Action add_optimize_command(CLI::App& app) {
   cmd->add_option("--sequence", o->sequence,
                   "search a sequence of K frames instead (TAA jitter, alternating MSAA; "
                   "docs/temporal.md): worst steady E2 + mean flicker under --model")
-      ->check(CLI::Range(1, 1024));
+      ->check(CLI::Range(1, kMaxSequenceFrames));
   cmd->add_option("--samples-per-frame", o->samples_per_frame,
                   "with --sequence: samples in each frame (1: a jitter)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 16));
+      ->check(CLI::Range(1, kMaxSearchSamplesPerFrame));
   cmd->add_option("--flicker-weight", o->flicker_weight,
                   "with --sequence: lambda of J = worst E2 + lambda mean flicker")
       ->capture_default_str();

@@ -393,7 +393,7 @@ Action add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--zoom", o->zoom, "--grid: draw each pixel as ZOOM x ZOOM")
       ->capture_default_str()
-      ->check(CLI::Range(1, 16));
+      ->check(CLI::Range(1, kMaxSheetZoom));
   cmd->add_option("--table", o->table, "--grid: also write the error table (markdown)");
   cmd->add_flag("--json", o->json, "print the figures as JSON");
   cmd->add_flag("--measure", o->measure,
@@ -403,7 +403,7 @@ Action add_render_command(CLI::App& app) {
                   "--model over the static scene (docs/temporal.md)");
   o->model.add_to(cmd);
   cmd->add_option("--frames", o->frames, "temporal mode: frames rendered (0: the period)")
-      ->check(CLI::Range(0, 4096));
+      ->check(CLI::Range(0, kMaxTaaFrames));
   cmd->add_flag("--cut", o->cut, "temporal mode: start from a camera cut (default: steady state)");
   // Options of one mode are refused in the other, before any work.
   const std::vector<const CLI::Option*> single_only = {

@@ -123,7 +123,7 @@ Action add_spectrum_command(CLI::App& app) {
   cmd->add_option("--realizations", o->realizations,
                   "point sets averaged (seeds seed, seed+1, ...)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
+      ->check(CLI::Range(1, kMaxRealizations));
   cmd->add_option("-o,--output", o->png,
                   "the 2D spectrum as a PNG (grey = power / 2, DC at the centre)");
   cmd->add_option("--csv", o->csv, "radial average (2D) or the spectrum (1D) as CSV");

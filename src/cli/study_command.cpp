@@ -153,20 +153,7 @@ void run_compare(StudyOptions& o, std::ostream& out) {
   patterns = measure_patterns(std::move(patterns), o.settings, o.reference.source());
   const std::vector<StudyObjective> objectives = study_objectives(o.settings);
   if (o.json) {
-    JsonObject rows = JsonObject::array();
-    for (const StudyPattern& p : patterns) {
-      JsonObject measures = JsonObject::array();
-      for (const auto& m : p.measures) measures.push_back(m);
-      rows.push_back({{"pattern", p.name}, {"objectives", p.objective}, {"measures", measures}});
-    }
-    JsonObject names = JsonObject::array();
-    for (const StudyObjective& ob : objectives) names.push_back(ob.name());
-    JsonObject doc = json_report("study");
-    doc.update(JsonObject{{"objectives", names},
-                          {"scenes", o.settings.scenes},
-                          {"measures", kStudyMeasures},
-                          {"patterns", rows}});
-    out << json_text(doc);
+    out << json_text(study_compare_json(o.settings, objectives, patterns));
     return;
   }
   std::string t = "| pattern |", rule = "| --- |";
@@ -183,6 +170,18 @@ void run_compare(StudyOptions& o, std::ostream& out) {
     }
     t += "\n";
   }
+  // Each pattern after the first against it, per measure, paired over the scenes.
+  const std::vector<MeasureComparisons> c = compare_with_first(patterns, o.settings);
+  for (size_t k = 0; k < c.size(); ++k)
+    for (size_t q = 0; q < kStudyMeasures.size(); ++q) {
+      const PairedComparison& p = c[k][q];
+      t += fmt::format(
+          "\n{} against {}, {}: lower in {} of {} scenes ({} ties), mean difference {:+.5f} "
+          "[{:+.5f}, {:+.5f}], ratio {:.4f}, sign test p = {:.3g}",
+          patterns[k + 1].name, patterns[0].name, kStudyMeasures[q], p.lower, p.items, p.ties,
+          p.mean_difference, p.low, p.high, p.mean_ratio, p.sign_p);
+    }
+  if (!c.empty()) t += "\n";
   out << t;
 }
 
@@ -240,7 +239,8 @@ Action add_study_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--starts", o->settings.starts, "optimizer starts per objective and budget")
       ->capture_default_str();
-  cmd->add_option("--resamples", o->settings.resamples, "bootstrap resamples of the patterns")
+  cmd->add_option("--resamples", o->settings.resamples,
+                  "bootstrap resamples: of the patterns (the study), of the scenes (--compare)")
       ->capture_default_str();
   add_seed_option(cmd, o->settings.seed, "random seed");
   add_reference_options(cmd, o->reference, 256);

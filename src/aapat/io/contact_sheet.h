@@ -10,6 +10,8 @@
 
 namespace aapat {
 
+inline constexpr int kMaxSheetZoom = 16;
+
 struct SheetCell {
   int width = 0, height = 0;
   std::vector<uint8_t> pixels;  // rows top-down, `channels` bytes a pixel
@@ -21,7 +23,7 @@ struct ContactSheet {
   std::string title;
   std::vector<std::string> row_labels, column_labels;
   std::vector<SheetCell> cells;  // row by row
-  int zoom = 1;                  // each image pixel drawn as zoom x zoom
+  int zoom = 1;                  // each image pixel drawn as zoom x zoom, 1 to kMaxSheetZoom
 };
 
 struct SheetRaster {

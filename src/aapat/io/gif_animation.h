@@ -8,6 +8,9 @@
 
 namespace aapat {
 
+// The frame rate of a written animation (GIF, MP4), frames per second.
+inline constexpr int kMaxFramesPerSecond = 100;
+
 struct GreyFrames {
   int width = 0, height = 0;
   int delay_cs = 8;                          // per frame, in hundredths of a second

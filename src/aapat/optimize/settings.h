@@ -10,6 +10,8 @@ namespace aapat {
 // and the steps per pixel of a position lattice.
 inline constexpr int kMaxStarts = 1'000'000;
 inline constexpr int kMaxIterations = 100'000'000;
+// A run's time limit in seconds (about 116 days: long enough, and finite).
+inline constexpr double kMaxTimeLimit = 1e7;
 inline constexpr int kMinLatticeSteps = 2, kMaxLatticeSteps = 256;
 
 // The descent heuristic, the minimax descent, annealing, and the epigraph

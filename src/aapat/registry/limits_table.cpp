@@ -22,6 +22,7 @@
 #include "aapat/io/scene_json.h"
 #include "aapat/io/texture_file.h"
 #include "aapat/optimize/settings.h"
+#include "aapat/registry/page_limits.h"
 #include "aapat/render/animation.h"
 #include "aapat/render/mesh.h"
 #include "aapat/render/motion.h"
@@ -248,6 +249,13 @@ std::vector<Limit> make_table() {
                    "TAA for the size, frames and warm-up; `--resamples` 1 to 1,000,000",
                    kMaxComparisonScenes),
        "`kMaxComparisonScenes`, `temporal/engine/engine_comparison.h`"},
+      {"the explorer page",
+       fmt::format("view {} pixels a side, {} points, spectrum {} a side, {} starts, {} iterations "
+                   "a start, {} reference samples, seeds 0 to {}",
+                   kMaxPageViewSize, grouped(kMaxPagePoints), kMaxPageSpectrumSize,
+                   grouped(kMaxPageStarts), grouped(kMaxPageIterations),
+                   grouped(kMaxPageReferenceSamples), grouped(kMaxPageSeed)),
+       "`registry/page_limits.h`"},
       {"upscaler phases (`sequence phases --ratio`)", "ratio 1 to 16",
        "`upscaler_phase_count`, `temporal/sequence/render_scale.h`"},
   };

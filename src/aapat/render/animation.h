@@ -44,6 +44,8 @@ struct AnimationResult {
 inline constexpr double kMaxAnimationPixelFrames = 1073741824.0;
 // An animation's image side, in pixels.
 inline constexpr int kMinAnimationSize = 8, kMaxAnimationSize = 4096;
+// An animation's frames (`animate --frames`), besides the pixel-frames above.
+inline constexpr int kMaxAnimationFrames = 100000;
 // Throws ParameterError("size") for a side outside [kMinAnimationSize,
 // kMaxAnimationSize], ParameterError("frames") naming the product and the
 // limit for too much work.

@@ -255,6 +255,24 @@ std::vector<StudyPattern> measure_patterns(std::vector<StudyPattern> patterns,
   return patterns;
 }
 
+std::vector<MeasureComparisons> compare_with_first(const std::vector<StudyPattern>& patterns,
+                                                   const StudySettings& settings) {
+  std::vector<MeasureComparisons> out;
+  for (size_t k = 1; k < patterns.size(); ++k) {
+    MeasureComparisons per;
+    for (size_t q = 0; q < kStudyMeasures.size(); ++q) {
+      std::vector<double> ours, theirs;
+      for (size_t s = 0; s < patterns[k].measures.size(); ++s) {
+        ours.push_back(patterns[k].measures[s][q]);
+        theirs.push_back(patterns[0].measures[s][q]);
+      }
+      per[q] = compare_paired(ours, theirs, settings.resamples, 0.95, settings.seed);
+    }
+    out.push_back(per);
+  }
+  return out;
+}
+
 StudyResult objective_study(const StudySettings& s, const ReferenceSource& references,
                             const StudyProgress& progress) {
   validate(s);

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "aapat/analyze/paired_comparison.h"
 #include "aapat/core/pattern.h"
 #include "aapat/render/reference.h"
 #include "aapat/study/progress.h"
@@ -106,6 +107,13 @@ std::vector<StudyObjective> study_objectives(const StudySettings& s);
 std::vector<StudyPattern> measure_patterns(std::vector<StudyPattern> patterns,
                                            const StudySettings& settings,
                                            const ReferenceSource& references);
+// Each pattern after the first against the first, per rendered measure,
+// paired over the scenes (analyze/paired_comparison.h: scenes lower, the mean
+// difference with a bootstrap interval from settings.resamples draws seeded
+// by settings.seed, an exact sign test): `study --compare`'s against_first.
+using MeasureComparisons = std::array<PairedComparison, kStudyMeasures.size()>;
+std::vector<MeasureComparisons> compare_with_first(const std::vector<StudyPattern>& patterns,
+                                                   const StudySettings& settings);
 StudyResult objective_study(const StudySettings& settings, const ReferenceSource& references,
                             const StudyProgress& progress = {});
 

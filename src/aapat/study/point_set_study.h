@@ -18,6 +18,9 @@
 
 namespace aapat {
 
+// Point sets one spectrum averages.
+inline constexpr int kMaxRealizations = 100000;
+
 // Which discrepancies to compute: "l2-star,star,edge" by default; any of
 // those, the other L2 kinds (l2-centred, ...), or "all", in any order.
 struct DiscrepancyMeasures {
@@ -54,7 +57,7 @@ inline constexpr int kDefaultSpectrumPoints = 1024;
 
 struct SpectrumSettings {
   int size = 256;              // frequencies -size/2 .. size/2-1 per axis
-  int realizations = 1;        // point sets averaged
+  int realizations = 1;        // point sets averaged, 1 to kMaxRealizations
   size_t expected_points = 0;  // when known, the work is checked before any point is drawn
   // The non-uniform FFT (analyze/fast_spectrum.h) instead of the exact sum:
   // O(N + M^2 log M), within a stated error bound, any N (even sizes).

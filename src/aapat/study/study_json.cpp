@@ -178,6 +178,45 @@ JsonObject render_grid_json(const std::string& scene_name, const std::string& te
   return doc;
 }
 
+JsonObject paired_comparison_json(const PairedComparison& c) {
+  return JsonObject{{"lower", c.lower},
+                    {"ties", c.ties},
+                    {"scenes", c.items},
+                    {"mean_difference", c.mean_difference},
+                    {"low", c.low},
+                    {"high", c.high},
+                    {"mean_ratio", c.mean_ratio},
+                    {"sign_p", c.sign_p}};
+}
+
+JsonObject study_compare_json(const StudySettings& settings,
+                              const std::vector<StudyObjective>& objectives,
+                              const std::vector<StudyPattern>& patterns) {
+  JsonObject rows = JsonObject::array();
+  for (const StudyPattern& p : patterns) {
+    JsonObject measures = JsonObject::array();
+    for (const auto& m : p.measures) measures.push_back(m);
+    rows.push_back({{"pattern", p.name}, {"objectives", p.objective}, {"measures", measures}});
+  }
+  JsonObject names = JsonObject::array();
+  for (const StudyObjective& ob : objectives) names.push_back(ob.name());
+  JsonObject against = JsonObject::array();
+  const std::vector<MeasureComparisons> c = compare_with_first(patterns, settings);
+  for (size_t k = 0; k < c.size(); ++k) {
+    JsonObject entry{{"pattern", patterns[k + 1].name}, {"against", patterns[0].name}};
+    for (size_t q = 0; q < kStudyMeasures.size(); ++q)
+      entry[kStudyMeasures[q]] = paired_comparison_json(c[k][q]);
+    against.push_back(entry);
+  }
+  JsonObject doc = json_report("study");
+  doc.update(JsonObject{{"objectives", names},
+                        {"scenes", settings.scenes},
+                        {"measures", kStudyMeasures},
+                        {"patterns", rows},
+                        {"against_first", against}});
+  return doc;
+}
+
 JsonObject line_spectra_json(const std::vector<std::string>& kinds, uint64_t seed, int frequencies,
                              double max_frequency, const std::vector<LineSpectrum>& spectra) {
   JsonObject doc = json_report("spectrum");

@@ -12,6 +12,7 @@
 #include "aapat/io/json_report.h"
 #include "aapat/study/enumeration.h"
 #include "aapat/study/image_diff.h"
+#include "aapat/study/objective_study.h"
 #include "aapat/study/paper_tables.h"
 #include "aapat/study/pattern_studies.h"
 #include "aapat/study/point_set_study.h"
@@ -71,6 +72,18 @@ JsonObject grid_cell_json(const RenderGridCell& cell);
 JsonObject render_grid_json(const std::string& scene_name, const std::string& texture, int width,
                             int height, const ReferenceSettings& reference,
                             const std::vector<RenderGridCell>& cells);
+
+// A paired comparison's figures: {lower, ties, scenes, mean_difference,
+// low, high, mean_ratio, sign_p}, the one shape every comparison reports.
+JsonObject paired_comparison_json(const PairedComparison& c);
+
+// `aapat study --compare --json`: the objectives' names, scenes, measures,
+// patterns [{pattern, objectives, measures (per scene)}], and each pattern
+// after the first against the first: against_first [{pattern, against,
+// MEASURE: paired_comparison_json}].
+JsonObject study_compare_json(const StudySettings& settings,
+                              const std::vector<StudyObjective>& objectives,
+                              const std::vector<StudyPattern>& patterns);
 
 // `aapat spectrum --1d --json`: the kinds, points, seed, frequencies and
 // max_frequency, and a row per frequency {frequency, KIND: power, ...}.

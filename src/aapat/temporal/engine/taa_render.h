@@ -25,6 +25,9 @@
 
 namespace aapat {
 
+// Frames one TAA-mode render accumulates (`render --sequence --frames`; 0: the period).
+inline constexpr int kMaxTaaFrames = 4096;
+
 struct TaaFrame {
   double rmse = 0;
   int max_deviation = 0;

@@ -215,13 +215,14 @@ void validate(const SequenceSearch& s) {
   if (s.frames < 1 || s.frames > kMaxSequenceFrames)
     throw ParameterError("sequence",
                          fmt::format(" {}: expected 1 to {} frames", s.frames, kMaxSequenceFrames));
-  if (s.samples_per_frame < 1 || s.samples_per_frame > 16)
-    throw ParameterError("samples-per-frame",
-                         fmt::format(" {}: expected 1 to 16", s.samples_per_frame));
-  if (s.frames * s.samples_per_frame > 1024)
-    throw ParameterError("sequence", fmt::format(" {} frames of {} samples: at most 1024 samples "
+  if (s.samples_per_frame < 1 || s.samples_per_frame > kMaxSearchSamplesPerFrame)
+    throw ParameterError(
+        "samples-per-frame",
+        fmt::format(" {}: expected 1 to {}", s.samples_per_frame, kMaxSearchSamplesPerFrame));
+  if (s.frames * s.samples_per_frame > kMaxSearchSamples)
+    throw ParameterError("sequence", fmt::format(" {} frames of {} samples: at most {} samples "
                                                  "in all",
-                                                 s.frames, s.samples_per_frame));
+                                                 s.frames, s.samples_per_frame, kMaxSearchSamples));
   validate(s.model);
   if (s.model.resolve)
     throw ParameterError("resolve",

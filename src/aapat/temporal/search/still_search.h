@@ -46,6 +46,8 @@ enum class FrameMeasure { worst, mean };
 FrameMeasure parse_frame_measure(std::string_view text);
 std::string_view frame_measure_name(FrameMeasure m);
 
+// A searched sequence's samples per frame, and in all.
+inline constexpr int kMaxSearchSamplesPerFrame = 16, kMaxSearchSamples = 1024;
 inline constexpr double kMinJitterBound = 0.01;   // --jitter-bound's and --jitter-radius's smallest
 inline constexpr double kMaxJitterRadius = 0.71;  // past the pixel's corner: no constraint
 

@@ -39,7 +39,9 @@ uint32_t owen_scramble(uint32_t v, uint64_t seed, int dim) {
   for (int b = 31; b >= 0; --b) {
     const uint64_t prefix = b == 31 ? 0 : (uint64_t(v) >> (b + 1)) | (1ull << (31 - b));
     const uint32_t flip =
-        static_cast<uint32_t>(splitmix_finalizer(seed * 0x100000001b3ull + uint64_t(dim) * 977 + splitmix_finalizer(prefix)) & 1);
+        static_cast<uint32_t>(splitmix_finalizer(seed * 0x100000001b3ull + uint64_t(dim) * 977 +
+                                                 splitmix_finalizer(prefix)) &
+                              1);
     out |= (((v >> b) & 1u) ^ flip) << b;
   }
   return out;

@@ -1,4 +1,4 @@
-"""Generators, discrepancy and spectra as arrays; the renderer's images."""
+"""The point sets on the Python face (python/bind_points.cpp): generators, discrepancies, spectra."""
 import math
 from fractions import Fraction
 
@@ -59,48 +59,6 @@ def test_the_1d_jittered_spectrum_follows_one_minus_sinc_squared():
         assert p[band].mean() == pytest.approx(expected.mean(), abs=0.1), (lo, hi)
 
 
-def test_render_gives_an_image_array_and_the_error_figures():
-    r = aapat.render("disc", pattern="rgss", size=(48, 32), reference=True, reference_samples=64)
-    assert r["image"].shape == (32, 48)
-    assert 0 <= r["image"].min() and r["image"].max() <= 1
-    assert r["rmse"] > 0 and r["max_deviation"] >= 1
-    assert r["reference_image"].shape == (32, 48)
-    assert r["reference"] == "64 jittered samples per pixel, mitchell:b=1/3,c=1/3"
-    with pytest.raises(aapat.Error, match="give either a pattern or a per-pixel generator"):
-        aapat.render("disc")
-
-
-def test_every_function_has_a_docstring():
-    import inspect
-    for name in dir(aapat):
-        obj = getattr(aapat, name)
-        if name.startswith("_") or not callable(obj):
-            continue
-        assert obj.__doc__ and len(obj.__doc__.strip()) > 20, name
-    assert "family: the family to search" in aapat.optimize.__doc__
-    assert "progress" in aapat.optimize.__doc__
-
-
-def test_the_registry_lists_what_the_cli_lists():
-    reg = aapat.registry()
-    assert "mitchell" in [f["name"] for f in reg["filters"]]
-    assert {"key": "b", "default": "1/3", "meaning": "B parameter"} in next(
-        f for f in reg["filters"] if f["name"] == "mitchell")["parameters"]
-    assert "spiral" in [s["name"] for s in reg["scenes"]]
-
-
-def test_the_worked_example_of_the_docs_runs(tmp_path):
-    import os
-    import subprocess
-    import sys
-    script = os.path.join(os.path.dirname(__file__), "..", "examples", "worked_example.py")
-    r = subprocess.run([sys.executable, script, str(tmp_path)], capture_output=True, text=True,
-                       env={**os.environ, "MPLBACKEND": "Agg"})
-    assert r.returncode == 0, r.stderr
-    assert "rgss           P(1,1,4)    E2 0.4390" in r.stdout
-    assert "optimized: P(1,1,4) from 16 jittered starts, E2 0.3587" in r.stdout
-
-
 def test_discrepancy_computes_only_the_measures_asked():
     d = aapat.discrepancy(aapat.generate("halton", 100000), measures="l2-star")
     assert set(d) == {"points", "l2_star"}
@@ -126,23 +84,6 @@ def test_fast_spectrum_within_its_bound_of_the_exact_one():
     assert np.max(np.abs(fast["power"] - exact["power"])) <= fast["error_bound"]
     with pytest.raises(aapat.Error, match="method 'nufft'"):
         aapat.spectrum(points, size=64, method="nufft")
-
-
-def test_render_textured_multisampled_and_adaptive():
-    flat = aapat.render("checkerboard", pattern="rgss", size=(32, 32))
-    textured = aapat.render("checkerboard", pattern="rgss", size=(32, 32), texture="checker")
-    # The 8 x 8 checker repeating every 8 squares is the checkerboard itself.
-    assert np.array_equal(flat["image"], textured["image"])
-    multi = aapat.render("checkerboard", pattern="rgss", size=(32, 32), texture="checker",
-                         options={"mode": "multisample", "texture-filter": "trilinear"})
-    assert 0.5 < multi["lookups_per_pixel"] <= 1
-    assert not np.array_equal(multi["image"], flat["image"])
-    refined = aapat.render("spiral", generator="jittered", samples=4, filter="box", size=(32, 32),
-                           options={"adaptive": "contrast", "threshold": 0.1})
-    assert refined["refinement_map"].shape == (32, 32)
-    assert refined["adaptive"]["evaluations"] == refined["refinement_map"].sum()
-    with pytest.raises(aapat.Error, match="unknown texture filter .cubic."):
-        aapat.render("checkerboard", pattern="rgss", options={"texture-filter": "cubic"})
 
 
 def mixture_squared_exactly(x):
