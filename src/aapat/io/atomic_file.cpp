@@ -1,5 +1,6 @@
 #include "aapat/io/atomic_file.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -74,6 +75,8 @@ extern "C" void remove_temporaries_and_reraise(int sig) {
 
 struct Staged {
   std::string path, tmp;
+  std::string content;  // an in-place target's (a device or FIFO): written at commit
+  bool in_place = false;
 };
 
 // The file a path names, however it is spelled (relative, with . or ..), so
@@ -81,8 +84,66 @@ struct Staged {
 // cannot be resolved.
 std::string file_identity(const std::string& path) {
   std::error_code e;
-  const std::filesystem::path p = std::filesystem::weakly_canonical(path, e);
+  // Absolute first: weakly_canonical leaves a relative path to a file that
+  // does not exist yet relative, so x.png and $PWD/x.png would differ.
+  const std::filesystem::path p =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(path, e), e);
   return e ? path : p.string();
+}
+
+// Where an output named `path` goes (docs/cli.md, "Output files"): a symbolic
+// link is followed to the file it names, however many links deep, and that
+// file is written (the link stays); a character device or a FIFO is written
+// in place, never replaced; a block device, a socket or another kind of node
+// is refused. What it finds, for the writers.
+struct OutputTarget {
+  std::string path;  // the file written: `path` itself, or where its links lead
+  bool in_place = false;
+};
+OutputTarget output_target(const std::string& path) {
+  std::filesystem::path p = path;
+  for (int hops = 0;; ++hops) {
+    struct stat st;
+    if (::lstat(p.c_str(), &st) != 0) return {p.string(), false};  // nothing there yet
+    if (S_ISLNK(st.st_mode)) {
+      if (hops == 40)
+        throw Error(fmt::format("cannot write '{}': too many levels of symbolic links", path));
+      std::error_code e;
+      const std::filesystem::path to = std::filesystem::read_symlink(p, e);
+      if (e) throw Error(fmt::format("cannot write '{}': {}", path, e.message()));
+      p = to.is_absolute() ? to : p.parent_path() / to;
+      continue;
+    }
+    if (S_ISREG(st.st_mode) || S_ISDIR(st.st_mode)) return {p.string(), false};
+    if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) return {p.string(), true};
+    const char* kind = S_ISBLK(st.st_mode)    ? "a block device"
+                       : S_ISSOCK(st.st_mode) ? "a socket"
+                                              : "not a regular file";
+    throw Error(fmt::format(
+        "cannot write '{}': it is {}; aapat writes regular files (and devices and FIFOs in "
+        "place), never replaces another node",
+        path, kind));
+  }
+}
+
+// Writes `content` into a device or FIFO as it is, without a temporary.
+void write_in_place(const std::string& path, std::string_view content) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) throw Error(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
+  size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = errno;
+      ::close(fd);
+      throw Error(fmt::format("cannot write '{}': {}", path,
+                              n < 0 ? std::strerror(err) : "nothing was written"));
+    }
+    done += static_cast<size_t>(n);
+  }
+  if (::close(fd) != 0)
+    throw Error(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
 }
 
 // The open transaction's state; guarded by g_mutex.
@@ -153,7 +214,8 @@ void write_file_atomically(const std::string& path, std::string_view content) {
   std::error_code e;
   if (std::filesystem::is_directory(path, e))
     throw Error(fmt::format("cannot write '{}': it is a folder", path));
-  const std::string file = file_identity(path);
+  const OutputTarget target = output_target(path);
+  const std::string file = file_identity(target.path);
   auto refuse_twice = [&] {
     throw Error(fmt::format("two outputs of this command name the same file '{}'", path));
   };
@@ -161,7 +223,19 @@ void write_file_atomically(const std::string& path, std::string_view content) {
     const std::lock_guard lock(g_mutex);
     if (g_open && g_staged_files.count(file)) refuse_twice();
   }
-  const std::string tmp = write_temporary(path, content);
+  if (target.in_place) {
+    {
+      const std::lock_guard lock(g_mutex);
+      if (g_open) {
+        if (!g_staged_files.insert(file).second) refuse_twice();
+        g_staged.push_back({target.path, "", std::string(content), true});
+        return;
+      }
+    }
+    write_in_place(target.path, content);
+    return;
+  }
+  const std::string tmp = write_temporary(target.path, content);
   {
     const std::lock_guard lock(g_mutex);
     if (g_open) {
@@ -169,20 +243,22 @@ void write_file_atomically(const std::string& path, std::string_view content) {
         remove_temporary(tmp);
         refuse_twice();
       }
-      g_staged.push_back({path, tmp});
+      g_staged.push_back({target.path, tmp, {}, false});
       return;
     }
   }
-  rename_into_place(tmp, path);
+  rename_into_place(tmp, target.path);
 }
 
 void write_file_now(const std::string& path, std::string_view content, bool keep_on_rollback) {
   if (g_muted) return;
-  const bool existed = exists(path);
-  const std::string tmp = write_temporary(path, content);
-  rename_into_place(tmp, path);
+  const OutputTarget target = output_target(path);
+  if (target.in_place) return write_in_place(target.path, content);
+  const bool existed = exists(target.path);
+  const std::string tmp = write_temporary(target.path, content);
+  rename_into_place(tmp, target.path);
   const std::lock_guard lock(g_mutex);
-  if (g_open && !existed && !keep_on_rollback) g_created_now.push_back(path);
+  if (g_open && !existed && !keep_on_rollback) g_created_now.push_back(target.path);
 }
 
 void ensure_directory(const std::string& path, std::string_view what) {
@@ -223,6 +299,18 @@ void check_file_target(const std::string& path, std::string_view what) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw Error(fmt::format("{} '{}': it is a folder, not a file", what, path));
+  OutputTarget target;
+  try {
+    target = output_target(path);
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: {}", what, e.what()));
+  }
+  if (target.in_place) {  // a device or FIFO: written as it is, its folder untouched
+    if (::access(target.path.c_str(), W_OK) != 0)
+      throw Error(fmt::format("{} '{}': cannot write: {}", what, path, std::strerror(errno)));
+    return;
+  }
+  if (target.path != path) return check_file_target(target.path, what);  // where links lead
   std::string folder = std::filesystem::path(path).parent_path().string();
   if (folder.empty()) folder = ".";
   const auto status = std::filesystem::status(folder, ec);
@@ -249,7 +337,8 @@ OutputTransaction::OutputTransaction() {
 OutputTransaction::~OutputTransaction() {
   const std::lock_guard lock(g_mutex);
   if (!g_open) return;
-  for (const Staged& s : g_staged) remove_temporary(s.tmp);
+  for (const Staged& s : g_staged)
+    if (!s.in_place) remove_temporary(s.tmp);
   for (const std::string& path : g_created_now) std::remove(path.c_str());
   // Deepest first (longest path), so a parent is empty when its turn comes.
   std::sort(g_created_dirs.begin(), g_created_dirs.end(),
@@ -322,9 +411,13 @@ void OutputTransaction::commit() {
   std::exception_ptr failure;
   for (size_t i = 0; i < staged.size() && !failure; ++i) {
     try {
-      rename_into_place(staged[i].tmp, staged[i].path);
+      if (staged[i].in_place)
+        write_in_place(staged[i].path, staged[i].content);
+      else
+        rename_into_place(staged[i].tmp, staged[i].path);
     } catch (const Error&) {
-      for (size_t j = i + 1; j < staged.size(); ++j) remove_temporary(staged[j].tmp);
+      for (size_t j = i + 1; j < staged.size(); ++j)
+        if (!staged[j].in_place) remove_temporary(staged[j].tmp);
       failure = std::current_exception();
     }
   }

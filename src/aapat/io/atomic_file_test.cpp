@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -169,6 +172,114 @@ TEST(AtomicFile, ReadingNamesMissingFoldersAndOversizedFiles) {
             "cannot read point file '" + big + "': 10 bytes exceed the limit of 4 bytes");
   EXPECT_EQ(testing::error_message([&] { ensure_directory(big, "--best-dir"); }),
             "--best-dir '" + big + "': exists and is not a folder");
+}
+
+bool is_kind(const std::string& path, mode_t kind) {
+  struct stat st;
+  return ::lstat(path.c_str(), &st) == 0 && (st.st_mode & S_IFMT) == kind;
+}
+
+// A FIFO is written in place: its reader gets the content, and it stays a
+// FIFO (the rename would have replaced it with a file, and the reader would
+// have got nothing).
+TEST(OutputTarget, AFifoIsWrittenInPlaceAndStaysAFifo) {
+  const std::string fifo = testing::temp_path("out.fifo");
+  fs::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string got;
+  std::thread reader([&] {
+    std::ifstream in(fifo, std::ios::binary);
+    got.assign(std::istreambuf_iterator<char>(in), {});
+  });
+  {
+    OutputTransaction t;
+    write_file_atomically(fifo, "through the pipe");
+    t.commit();
+  }
+  reader.join();
+  EXPECT_EQ(got, "through the pipe");
+  EXPECT_TRUE(is_kind(fifo, S_IFIFO));
+  fs::remove(fifo);
+}
+
+// A character device is written in place, never replaced: /dev/null stays
+// the device (a test run as root once replaced it with a file).
+TEST(OutputTarget, ACharacterDeviceStaysADevice) {
+  ASSERT_TRUE(is_kind("/dev/null", S_IFCHR));
+  write_file_atomically("/dev/null", "nothing");
+  write_file_now("/dev/null", "nothing");
+  check_file_target("/dev/null", "--output");
+  EXPECT_TRUE(is_kind("/dev/null", S_IFCHR));
+  if (is_kind("/dev/full", S_IFCHR)) {  // a device that refuses: the error names it
+    EXPECT_NE(testing::error_message([] {
+                write_file_atomically("/dev/full", "x");
+              }).find("cannot write '/dev/full'"),
+              std::string::npos);
+    EXPECT_TRUE(is_kind("/dev/full", S_IFCHR));
+  }
+}
+
+// A symbolic link is followed, through a chain of links: the file it names
+// gets the content, and the links stay links.
+TEST(OutputTarget, ASymlinkIsFollowedAndStays) {
+  const fs::path dir = fs::path(testing::temp_path("x")).parent_path();
+  const fs::path target = dir / "target.txt", link = dir / "link.txt", link2 = dir / "link2.txt";
+  for (const fs::path& f : {target, link, link2}) fs::remove(f);
+  std::ofstream(target) << "old";
+  fs::create_symlink("target.txt", link);
+  fs::create_symlink(link, link2);
+  write_file_atomically(link2.string(), "new");
+  EXPECT_TRUE(is_kind(link.string(), S_IFLNK));
+  EXPECT_TRUE(is_kind(link2.string(), S_IFLNK));
+  std::ifstream in(target);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "new");
+  // A dangling link: the file it names is created.
+  fs::remove(target);
+  write_file_atomically(link.string(), "made");
+  EXPECT_TRUE(fs::is_regular_file(target));
+  EXPECT_TRUE(is_kind(link.string(), S_IFLNK));
+}
+
+// A socket (and a block device, and anything else but a file, a device or
+// a FIFO) is refused before anything is written, and left as it was.
+TEST(OutputTarget, ASocketIsRefusedAndLeftAsItWas) {
+  const std::string path = testing::temp_path("out.sock");
+  fs::remove(path);
+  const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  ASSERT_GE(fd, 0);
+  sockaddr_un addr{};
+  addr.sun_family = AF_UNIX;
+  ASSERT_LT(path.size(), sizeof(addr.sun_path));
+  std::snprintf(addr.sun_path, sizeof(addr.sun_path), "%s", path.c_str());
+  ASSERT_EQ(::bind(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof(addr)), 0);
+  EXPECT_NE(testing::error_message([&] { write_file_atomically(path, "x"); }).find("a socket"),
+            std::string::npos);
+  EXPECT_THROW(check_file_target(path, "--output"), Error);
+  EXPECT_TRUE(is_kind(path, S_IFSOCK));
+  ::close(fd);
+  fs::remove(path);
+}
+
+// Two spellings of one file that does not exist yet are one output.
+TEST(OutputTarget, TwoSpellingsOfANewFileAreOneOutput) {
+  const fs::path dir = fs::path(testing::temp_path("x")).parent_path();
+  const fs::path old = fs::current_path();
+  fs::current_path(dir);
+  fs::remove("same.txt");
+  {
+    OutputTransaction t;
+    write_file_atomically("same.txt", "a");
+    EXPECT_NE(testing::error_message([] {
+                write_file_atomically("./same.txt", "b");
+              }).find("two outputs"),
+              std::string::npos);
+    EXPECT_NE(testing::error_message([&] {
+                write_file_atomically((dir / "same.txt").string(), "c");
+              }).find("two outputs"),
+              std::string::npos);
+  }
+  fs::current_path(old);
+  EXPECT_FALSE(fs::exists(dir / "same.txt"));  // rolled back
 }
 
 }  // namespace
