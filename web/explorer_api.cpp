@@ -16,6 +16,7 @@
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/hardware_layout.h"
+#include "aapat/core/json_depth.h"
 #include "aapat/core/lattice.h"
 #include "aapat/core/metric_simd.h"
 #include "aapat/core/objective.h"
@@ -54,6 +55,7 @@ std::string answer(const std::function<JsonObject()>& work) {
 }
 
 Json parse_request(const std::string& text) {
+  check_json_depth(text, "request");  // a link nested thousands deep, before the parser recurses
   Json j = Json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object()) throw Error("request: not a JSON object");
   return j;

@@ -211,6 +211,9 @@ try {
   await open('#design=' + encodeURIComponent(JSON.stringify({ tile: [1, 1], footprint: '1', sets: [many], kernels: [many.map(() => 1 / 1025)] })));
   const m5 = await message();
   check(/1025 samples exceed the limit of 1024/.test(m5), `a pattern over the limits: "${m5}"`);
+  await open('#design=' + encodeURIComponent(`{"name":${'['.repeat(3000)}${']'.repeat(3000)}}`));
+  const m6 = await message();
+  check(/nested 3001 deep, past the limit of 256/.test(m6), `a design nested 3000 deep: "${m6}"`);
   check(await e2Shown() > 0, 'after every bad input the page still shows a pattern and its E2');
 
   if (screenshot) {

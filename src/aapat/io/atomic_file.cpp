@@ -126,10 +126,18 @@ OutputTarget output_target(const std::string& path) {
   }
 }
 
-// Writes `content` into a device or FIFO as it is, without a temporary.
+// Writes `content` into a device or FIFO as it is, without a temporary. A
+// FIFO that no process reads is refused at once (opened without blocking),
+// rather than waited on for ever.
 void write_in_place(const std::string& path, std::string_view content) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
-  if (fd < 0) throw Error(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
+  const int fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) {
+    const int err = errno;
+    throw Error(fmt::format(
+        "cannot write '{}': {}", path,
+        err == ENXIO ? "no process reads it (a FIFO without a reader)" : std::strerror(err)));
+  }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);  // then as a stream writes
   size_t done = 0;
   while (done < content.size()) {
     const ssize_t n = ::write(fd, content.data() + done, content.size() - done);

@@ -10,10 +10,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <mutex>
+#include <string_view>
+#include <utility>
 
 #include "aapat/analyze/color_image.h"
 #include "aapat/core/read_file.h"
@@ -46,12 +49,39 @@ std::array<std::shared_ptr<const TexturedSurface>, 3> channel_surfaces(const Col
   return out;
 }
 
+// Whether `file` lies inside `folder` once both are resolved (symbolic links
+// followed, . and .. removed): a model's buffers, images and materials must,
+// unless AAPAT_TRUST_MODELS=1 says its content is trusted (docs/limits.md).
+bool trusted_models() {
+  const char* v = std::getenv("AAPAT_TRUST_MODELS");
+  return v && std::string_view(v) == "1";
+}
+bool inside(const std::filesystem::path& folder, const std::filesystem::path& file) {
+  std::error_code e;
+  const auto f = std::filesystem::weakly_canonical(std::filesystem::absolute(folder, e), e);
+  const auto p = std::filesystem::weakly_canonical(std::filesystem::absolute(file, e), e);
+  if (e) return false;
+  const auto [end, rest] = std::mismatch(f.begin(), f.end(), p.begin(), p.end());
+  return end == f.end() && rest != p.end();
+}
+// Throws Error naming a file a model refers to outside its folder.
+void check_contained(const std::string& model, const std::string& file) {
+  if (trusted_models()) return;
+  if (!inside(std::filesystem::path(model).parent_path(), file))
+    throw Error(fmt::format(
+        "'{}' is outside the model's folder (an absolute path, or one that climbs out of it): "
+        "refused; AAPAT_TRUST_MODELS=1 reads it for content you trust (docs/limits.md)",
+        file));
+}
+
 // Every file assimp opens (the model, its .bin buffers, .mtl libraries)
 // passes through read_file: a regular file within the size limit, so that a
-// FIFO or a device named by a model blocks nothing. The first refusal is
-// kept for the error message.
+// FIFO or a device named by a model blocks nothing, and, but for the model
+// itself, inside the model's folder. The first refusal is kept for the
+// error message.
 class CheckedFiles : public Assimp::IOSystem {
  public:
+  explicit CheckedFiles(std::string model) : model_(std::move(model)) {}
   // Anything that exists (a FIFO too) is opened, so that Open refuses it by name.
   bool Exists(const char* file) const override {
     std::error_code e;
@@ -61,6 +91,8 @@ class CheckedFiles : public Assimp::IOSystem {
   Assimp::IOStream* Open(const char* file, const char* mode) override {
     if (std::string_view(mode).find_first_of("wa+") != std::string_view::npos) return nullptr;
     try {
+      if (std::filesystem::path(file) != std::filesystem::path(model_))
+        check_contained(model_, file);
       const std::string bytes = read_file(file, "model file", kMaxModelFileBytes);
       auto* copy = new uint8_t[bytes.size() + 1];
       std::copy(bytes.begin(), bytes.end(), copy);
@@ -72,6 +104,9 @@ class CheckedFiles : public Assimp::IOSystem {
   }
   void Close(Assimp::IOStream* stream) override { delete stream; }
   std::string refusal;
+
+ private:
+  std::string model_;
 };
 
 // A texture file's bytes: JPEG or PNG, told apart by their first bytes.
@@ -163,6 +198,11 @@ class Reader {
     } else {
       const std::filesystem::path file =
           std::filesystem::path(path_).parent_path() / std::filesystem::path(ref);
+      try {
+        check_contained(path_, file.string());
+      } catch (const Error& e) {
+        throw Error(fmt::format("{} '{}': {}", what, ref, e.what()));
+      }
       image = decode_image(read_file(file.string(), what, kMaxModelFileBytes), file.string(), what);
     }
     return cache_.emplace(ref, std::move(image)).first->second;
@@ -301,7 +341,7 @@ namespace {
 
 std::shared_ptr<const Mesh> load_mesh(const std::string& path) {
   Assimp::Importer importer;
-  auto* files = new CheckedFiles;  // the importer owns it
+  auto* files = new CheckedFiles(path);  // the importer owns it
   importer.SetIOHandler(files);
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                               aiPrimitiveType_POINT | aiPrimitiveType_LINE);

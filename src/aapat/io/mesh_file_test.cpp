@@ -169,5 +169,56 @@ TEST(MeshFile, SceneFileNamesItsModelAndCamera) {
   fs::remove_all(dir);
 }
 
+// A model reads only what lies in its folder: a glTF buffer by absolute
+// path or climbing out with .., or an OBJ texture outside, is refused by
+// name; AAPAT_TRUST_MODELS=1 reads them (content the user trusts).
+TEST(MeshFile, ReadsOnlyFilesInsideItsFolder) {
+  const fs::path top = fs::temp_directory_path() / fmt::format("aapat-contain-{}", ::getpid());
+  fs::remove_all(top);
+  fs::create_directories(top / "model");
+  const std::string box = model("glTF2/BoxTextured-glTF/BoxTextured.gltf");
+  fs::copy_file(fs::path(box).parent_path() / "BoxTextured0.bin", top / "outside.bin");
+  std::ifstream in(box);
+  std::string gltf(std::istreambuf_iterator<char>(in), {});
+  const auto with_buffer = [&](const std::string& uri) {
+    std::string text = gltf;
+    const size_t at = text.find("BoxTextured0.bin");
+    text.replace(at, std::string("BoxTextured0.bin").size(), uri);
+    const fs::path f = top / "model" / "box.gltf";
+    std::ofstream(f) << text;
+    return f.string();
+  };
+  {
+    const std::string path = with_buffer("../outside.bin");
+    const std::string message = testing::error_message([&] { read_mesh(path); });
+    EXPECT_NE(message.find("is outside the model's folder"), std::string::npos) << message;
+    EXPECT_NE(message.find("outside.bin"), std::string::npos) << message;
+  }
+  {  // assimp joins an absolute uri to the folder: refused or missing, never read
+    const std::string path = with_buffer((top / "outside.bin").string());
+    const std::string message = testing::error_message([&] { read_mesh(path); });
+    EXPECT_TRUE(message.find("is outside the model's folder") != std::string::npos ||
+                message.find("no such file") != std::string::npos)
+        << message;
+  }
+  // An OBJ whose material's texture climbs out of the folder.
+  std::ofstream(top / "model" / "m.mtl") << "newmtl m\nKd 1 1 1\nmap_Kd ../secret.png\n";
+  std::ofstream(top / "model" / "t.obj")
+      << "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl m\n"
+         "f 1/1 2/2 3/3\n";
+  fs::copy_file(fs::path(box).parent_path() / "CesiumLogoFlat.png", top / "secret.png");
+  // The texture is refused by name, and its base colour stands in (a warning).
+  const std::shared_ptr<const Mesh> mesh = read_mesh((top / "model" / "t.obj").string());
+  ASSERT_EQ(mesh->warnings.size(), 1u);
+  EXPECT_NE(mesh->warnings[0].find("is outside the model's folder"), std::string::npos)
+      << mesh->warnings[0];
+  for (const MeshMaterial& m : mesh->materials) EXPECT_EQ(m.texture[0], nullptr) << m.name;
+  // Trusted: the same files are read.
+  ::setenv("AAPAT_TRUST_MODELS", "1", 1);
+  EXPECT_NO_THROW(read_mesh(with_buffer("../outside.bin")));
+  ::unsetenv("AAPAT_TRUST_MODELS");
+  fs::remove_all(top);
+}
+
 }  // namespace
 }  // namespace aapat

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "aapat/core/geometry.h"
+#include "aapat/core/json_depth.h"
 
 namespace aapat::scene_fields {
 
@@ -13,6 +14,10 @@ void fail(std::string_view source, const std::string& message) {
 }
 
 json parse(std::string_view text, std::string_view source) {
+  const int depth = json_depth(text);  // before the parser's recursion
+  if (depth > kMaxJsonDepth)
+    fail(source, fmt::format("nested {} deep, past the limit of {} (docs/limits.md)", depth,
+                             kMaxJsonDepth));
   try {
     return json::parse(text);
   } catch (const json::exception& e) {  // parse errors, invalid UTF-8 and number overflow
