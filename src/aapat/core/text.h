@@ -24,4 +24,28 @@ inline std::vector<std::string_view> split(std::string_view text, char sep = ','
   return items;
 }
 
+// The first control character (below U+0020, or U+007F) in `text`, as its
+// byte offset, or npos: names, descriptions and provenance are one line of
+// text, so that no exporter can be made to write a line of code from them.
+inline size_t control_character_at(std::string_view text) {
+  for (size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c < 0x20 || c == 0x7f) return i;
+  }
+  return std::string_view::npos;
+}
+
+// `text` as one line for a comment or a header of an export: every control
+// character (a newline, a carriage return, ...) becomes a space. The one
+// escaping every exporter applies to names and provenance, in every language
+// (their comments all end at the line's end).
+inline std::string one_line(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f) c = ' ';
+  }
+  return out;
+}
+
 }  // namespace aapat

@@ -9,6 +9,7 @@
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/lattice.h"
 #include "aapat/core/metric.h"
+#include "aapat/core/text.h"
 
 namespace aapat {
 namespace {
@@ -254,11 +255,11 @@ ShaderLanguage parse_shader_language(std::string_view name) {
 std::string export_layout(const HardwareLayout& L, ShaderLanguage shader,
                           const std::vector<std::string>& notes) {
   const ApiProfile& profile = api_profile(L.profile);
-  std::string out =
-      fmt::format("{} profile={} grid={}x{} samples={} footprint={} name={}\n", kExportMagic,
-                  L.profile, L.grid_w, L.grid_h, L.sample_count, L.footprint.text(), L.name);
+  std::string out = fmt::format("{} profile={} grid={}x{} samples={} footprint={} name={}\n",
+                                kExportMagic, L.profile, L.grid_w, L.grid_h, L.sample_count,
+                                L.footprint.text(), one_line(L.name));
   out += fmt::format("// {}: {}\n", profile.name, profile.summary);
-  for (const auto& n : notes) out += fmt::format("// {}\n", n);
+  for (const auto& n : notes) out += fmt::format("// {}\n", one_line(n));
   out += fmt::format("\n{}\n{}", host_code(L, profile), shader_code(L, profile, shader));
   return out;
 }

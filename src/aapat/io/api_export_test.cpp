@@ -6,8 +6,10 @@
 #include <fstream>
 
 #include "aapat/core/lattice.h"
+#include "aapat/core/objective.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/io/atomic_file.h"
+#include "aapat/io/pattern_json.h"
 #include "testing/error_message.h"
 
 namespace aapat {
@@ -139,6 +141,35 @@ TEST(ApiExport, ImportRejectsDamagedText) {
   bad = good;
   bad.replace(bad.find("grid=2x2"), 8, "grid=3x3");
   EXPECT_NE(error_of(bad).find("grid 3x3"), std::string::npos);
+}
+
+// A name with a newline and a line of code, from any face, never becomes a
+// line of the export: every language's comment stays one line, and a
+// pattern file holding such a name is refused on read.
+TEST(ApiExport, AHostileNameStaysInItsCommentInEveryLanguage) {
+  Pattern p = catalog_pattern("rgss");
+  p.name = "evil\n#define aapat_weights evil_weights\r\n#include <x>";
+  for (const auto& [api, shader] : {std::pair{"d3d12-tier2", ShaderLanguage::kHlsl},
+                                    {"vulkan", ShaderLanguage::kGlsl},
+                                    {"metal", ShaderLanguage::kMsl}}) {
+    const std::string code =
+        export_pattern(p, api_profile(api), named_objective("laine-aila"), shader, true);
+    EXPECT_EQ(code.find("\n#define aapat_weights"), std::string::npos) << api;
+    EXPECT_EQ(code.find("\n#include <x>"), std::string::npos) << api;
+    EXPECT_NE(code.find("evil #define aapat_weights"), std::string::npos) << api;
+  }
+  std::string text = pattern_to_json(catalog_pattern("rgss"));
+  const size_t at = text.find("\"name\": \"rgss\"");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 14, "\"name\": \"rg\\nss\"");
+  try {
+    pattern_from_json(text, "p.json");
+    FAIL() << "a name with a newline was read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("name: control character U+000A at byte 2"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include <algorithm>
 
 #include "aapat/core/geometry.h"
+#include "aapat/core/json_depth.h"
+#include "aapat/core/text.h"
 
 namespace aapat {
 
@@ -16,6 +18,10 @@ nlohmann::ordered_json parse_file(const FileHeader& header, std::string_view tex
                                   std::string_view source) {
   const auto fail = [&](const std::string& message) { file_error(header.kind, source, message); };
   nlohmann::ordered_json doc;
+  const int depth = json_depth(text);  // before the parser's recursion
+  if (depth > kMaxJsonDepth)
+    fail(
+        fmt::format("nested {} deep, past the limit of {} (docs/limits.md)", depth, kMaxJsonDepth));
   try {
     doc = nlohmann::ordered_json::parse(text);
   } catch (const nlohmann::ordered_json::exception& e) {  // parse errors and number overflow
@@ -35,6 +41,22 @@ nlohmann::ordered_json parse_file(const FileHeader& header, std::string_view tex
   return doc;
 }
 
+namespace {
+
+// A name, description or provenance entry is one line of text (exporters
+// write them into comments): a control character is refused with its place.
+void check_one_line(const FileHeader& header, std::string_view field, std::string_view text,
+                    std::string_view source) {
+  const size_t at = control_character_at(text);
+  if (at != std::string_view::npos)
+    file_error(header.kind, source,
+               fmt::format("{}: control character U+{:04X} at byte {} (it must be one line of "
+                           "text)",
+                           field, static_cast<unsigned char>(text[at]), at));
+}
+
+}  // namespace
+
 std::pair<std::string, std::string> read_name_and_description(const FileHeader& header,
                                                               const nlohmann::ordered_json& doc,
                                                               std::string_view source) {
@@ -46,7 +68,10 @@ std::pair<std::string, std::string> read_name_and_description(const FileHeader& 
       file_error(header.kind, source, "description: expected a string");
     description = doc.at("description").get<std::string>();
   }
-  return {doc.at("name").get<std::string>(), description};
+  const std::string name = doc.at("name").get<std::string>();
+  check_one_line(header, "name", name, source);
+  check_one_line(header, "description", description, source);
+  return {name, description};
 }
 
 Provenance read_provenance(const FileHeader& header, const nlohmann::ordered_json& doc,
@@ -59,6 +84,9 @@ Provenance read_provenance(const FileHeader& header, const nlohmann::ordered_jso
   for (const auto& [key, value] : prov.items()) {
     if (!value.is_string())
       file_error(header.kind, source, fmt::format("provenance.{}: expected a string", key));
+    check_one_line(header, fmt::format("provenance key '{}'", one_line(key)), key, source);
+    check_one_line(header, fmt::format("provenance.{}", one_line(key)), value.get<std::string>(),
+                   source);
     out.emplace_back(key, value.get<std::string>());
   }
   return out;

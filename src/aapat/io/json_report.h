@@ -25,6 +25,12 @@ JsonObject json_report(std::string_view command);
 // "filter", "acuity", "norm" ("inf" or p).
 JsonObject objective_json(const Objective& objective);
 
+// A paired comparison's figures (analyze/paired_comparison.h): {lower, ties,
+// scenes, mean_difference, low, high, mean_ratio, sign_p}, the one shape
+// every comparison reports (study --compare, sequence compare).
+struct PairedComparison;
+JsonObject paired_comparison_json(const PairedComparison& c);
+
 // Indented text with a final newline; bytes that are not UTF-8 (a file name)
 // are replaced rather than failing.
 std::string json_text(const JsonObject& doc);

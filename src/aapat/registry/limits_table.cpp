@@ -11,6 +11,7 @@
 #include "aapat/analyze/spectrum.h"
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter.h"
+#include "aapat/core/json_depth.h"
 #include "aapat/core/metric.h"
 #include "aapat/core/pattern.h"
 #include "aapat/core/read_file.h"
@@ -175,7 +176,9 @@ std::vector<Limit> make_table() {
        "`kMaxTextureSide`, `render/texture.h`; `io/texture_file.h`"},
       {"model file (a mesh scene's `mesh`)",
        fmt::format("{} per file assimp opens (the model, its `.bin` and `.mtl` files: each a "
-                   "regular file, checked before it is read); {} triangles; {} vertices; {} "
+                   "regular file, checked before it is read); its buffers, materials and "
+                   "textures inside the model's folder (`AAPAT_TRUST_MODELS=1` lifts it for "
+                   "trusted content); {} triangles; {} vertices; {} "
                    "materials; {} texels in all its textures (each checked from its PNG or JPEG "
                    "header); nodes nested at most 256 deep; every position, texture coordinate "
                    "and colour finite",
@@ -249,6 +252,11 @@ std::vector<Limit> make_table() {
                    "TAA for the size, frames and warm-up; `--resamples` 1 to 1,000,000",
                    kMaxComparisonScenes),
        "`kMaxComparisonScenes`, `temporal/engine/engine_comparison.h`"},
+      {"JSON input (pattern, sequence and scene files, the page's links and requests)",
+       fmt::format("arrays and objects nested at most {} deep, checked before the parser "
+                   "(which recurses) reads it",
+                   kMaxJsonDepth),
+       "`kMaxJsonDepth`, `core/json_depth.h`"},
       {"the explorer page",
        fmt::format("view {} pixels a side, {} points, spectrum {} a side, {} starts, {} iterations "
                    "a start, {} reference samples, seeds 0 to {}",

@@ -178,17 +178,6 @@ JsonObject render_grid_json(const std::string& scene_name, const std::string& te
   return doc;
 }
 
-JsonObject paired_comparison_json(const PairedComparison& c) {
-  return JsonObject{{"lower", c.lower},
-                    {"ties", c.ties},
-                    {"scenes", c.items},
-                    {"mean_difference", c.mean_difference},
-                    {"low", c.low},
-                    {"high", c.high},
-                    {"mean_ratio", c.mean_ratio},
-                    {"sign_p", c.sign_p}};
-}
-
 JsonObject study_compare_json(const StudySettings& settings,
                               const std::vector<StudyObjective>& objectives,
                               const std::vector<StudyPattern>& patterns) {

@@ -73,10 +73,6 @@ JsonObject render_grid_json(const std::string& scene_name, const std::string& te
                             int height, const ReferenceSettings& reference,
                             const std::vector<RenderGridCell>& cells);
 
-// A paired comparison's figures: {lower, ties, scenes, mean_difference,
-// low, high, mean_ratio, sign_p}, the one shape every comparison reports.
-JsonObject paired_comparison_json(const PairedComparison& c);
-
 // `aapat study --compare --json`: the objectives' names, scenes, measures,
 // patterns [{pattern, objectives, measures (per scene)}], and each pattern
 // after the first against the first: against_first [{pattern, against,

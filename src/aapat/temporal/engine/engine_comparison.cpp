@@ -112,6 +112,19 @@ EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequenc
   return r;
 }
 
+JsonObject comparison_settings_json(const EngineComparison& c) {
+  return JsonObject{{"taa", c.taa.preset},
+                    {"taa_settings", engine_taa_text(c.taa)},
+                    {"ratio", c.taa.upscale.ratio},
+                    {"motion", c.motion},
+                    {"width", c.width},
+                    {"height", c.height},
+                    {"frames", c.frames},
+                    {"warmup", c.motion == "cut" ? 0 : c.warmup},
+                    {"reference", describe_reference(c.reference)},
+                    {"seed", c.seed}};
+}
+
 JsonObject engine_comparison_json(const EngineComparison& c, const EngineComparisonResult& r) {
   JsonObject doc = json_report("sequence compare");
   JsonObject::array_t scenes;
@@ -130,31 +143,15 @@ JsonObject engine_comparison_json(const EngineComparison& c, const EngineCompari
     JsonObject entry{{"sequence", r.sequences[k]}, {"against", r.sequences[0]}};
     for (size_t q = 0; q < kComparisonMeasures.size(); ++q) {
       const PairedComparison& p = r.against_first[k - 1][q];
-      entry[kComparisonMeasures[q]] = JsonObject{{"lower", p.lower},
-                                                 {"ties", p.ties},
-                                                 {"scenes", p.items},
-                                                 {"mean_difference", p.mean_difference},
-                                                 {"low", p.low},
-                                                 {"high", p.high},
-                                                 {"mean_ratio", p.mean_ratio},
-                                                 {"sign_p", p.sign_p}};
+      entry[kComparisonMeasures[q]] = paired_comparison_json(p);
     }
     against.push_back(entry);
   }
   JsonObject::array_t measures;
   for (const char* m : kComparisonMeasures) measures.push_back(m);
-  doc.update(JsonObject{{"taa", c.taa.preset},
-                        {"taa_settings", engine_taa_text(c.taa)},
-                        {"ratio", c.taa.upscale.ratio},
-                        {"motion", c.motion},
-                        {"width", c.width},
-                        {"height", c.height},
-                        {"frames", c.frames},
-                        {"warmup", c.motion == "cut" ? 0 : c.warmup},
-                        {"reference", describe_reference(c.reference)},
-                        {"resamples", c.resamples},
+  doc.update(comparison_settings_json(c));
+  doc.update(JsonObject{                        {"resamples", c.resamples},
                         {"confidence", c.confidence},
-                        {"seed", c.seed},
                         {"measures", measures},
                         {"sequences", r.sequences},
                         {"scenes", scenes},

@@ -105,4 +105,8 @@ EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequenc
 // mean_ratio, sign_p}}].
 JsonObject engine_comparison_json(const EngineComparison& c, const EngineComparisonResult& r);
 
+// The settings every rendered comparison reports: taa, taa_settings, ratio,
+// motion, width, height, frames, warmup, reference, seed.
+JsonObject comparison_settings_json(const EngineComparison& c);
+
 }  // namespace aapat

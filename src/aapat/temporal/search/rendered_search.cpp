@@ -121,17 +121,8 @@ RenderedSearchResult search_rendered(const RenderedSearch& s, const ReferenceSou
 JsonObject rendered_search_json(const RenderedSearch& s, const RenderedSearchResult& r) {
   JsonObject doc = json_report("sequence search");
   const EngineComparison& c = s.comparison;
-  doc.update(JsonObject{{"taa", c.taa.preset},
-                        {"taa_settings", engine_taa_text(c.taa)},
-                        {"ratio", c.taa.upscale.ratio},
-                        {"scenes", c.scenes},
-                        {"motion", c.motion},
-                        {"width", c.width},
-                        {"height", c.height},
-                        {"frames", c.frames},
-                        {"warmup", c.motion == "cut" ? 0 : c.warmup},
-                        {"reference", describe_reference(c.reference)},
-                        {"seed", c.seed},
+  doc.update(comparison_settings_json(c));
+  doc.update(JsonObject{{"scenes", c.scenes},
                         {"against", s.baseline.name},
                         {"from", s.start.name},
                         {"step", s.step},

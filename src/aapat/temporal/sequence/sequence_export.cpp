@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "aapat/core/lattice.h"
+#include "aapat/core/text.h"
 #include "aapat/io/api_export.h"
 
 namespace aapat {
@@ -34,8 +35,9 @@ std::string export_jitter(const Sequence& s, ExportLanguage language, bool y_dow
   std::string out = fmt::format(
       "// aapat sequence {}: {} jitter offsets in pixels from the pixel centre, +x right, +y {}.\n"
       "// Frame f uses offset f mod {}.\n",
-      s.name, k, y_down ? "down (screen rows)" : "up", k);
-  for (const auto& [key, value] : s.provenance) out += fmt::format("// {}: {}\n", key, value);
+      one_line(s.name), k, y_down ? "down (screen rows)" : "up", k);
+  for (const auto& [key, value] : s.provenance)
+    out += fmt::format("// {}: {}\n", one_line(key), one_line(value));
   auto pair = [&](const Pattern& p, const char* open, const char* close) {
     const Vec2 v = p.sets[0][0];
     return fmt::format("{}{:.17g}, {:.17g}{}", open, v.x, y_down ? -v.y : v.y, close);
@@ -78,8 +80,8 @@ std::string export_jitter(const Sequence& s, ExportLanguage language, bool y_dow
 std::string export_msaa_sequence(const Sequence& s, const ApiProfile& profile) {
   validate(s);
   std::string out =
-      fmt::format("// aapat sequence {}: {} frames for {}, frame f uses block f mod {}.\n", s.name,
-                  s.period(), profile.name, s.period());
+      fmt::format("// aapat sequence {}: {} frames for {}, frame f uses block f mod {}.\n",
+                  one_line(s.name), s.period(), profile.name, s.period());
   for (int f = 0; f < s.period(); ++f) {
     const Pattern snapped =
         snap_to_lattice(s.frames[static_cast<size_t>(f)], kLatticeSteps, profile.y_down);

@@ -52,5 +52,18 @@ TEST(SequenceExport, EachLanguageHasItsTypeAndAJitterIsOneSample) {
                Error);
 }
 
+// A hostile name or provenance value stays inside its comment line in every
+// language: no line of the export starts with the injected directive.
+TEST(SequenceExport, AHostileNameStaysInItsComment) {
+  Sequence s = make_sequence("halton:frames=4");
+  s.name = "evil\n#define aapat_jitter evil";
+  s.provenance.emplace_back("note\n#pragma", "x\r\n#define y 1");
+  for (const ExportLanguage language :
+       {ExportLanguage::hlsl, ExportLanguage::glsl, ExportLanguage::cpp}) {
+    const std::string code = export_jitter(s, language, true);
+    EXPECT_EQ(code.find("\n#"), std::string::npos) << code;
+  }
+}
+
 }  // namespace
 }  // namespace aapat
