@@ -150,7 +150,7 @@ JsonObject engine_comparison_json(const EngineComparison& c, const EngineCompari
   JsonObject::array_t measures;
   for (const char* m : kComparisonMeasures) measures.push_back(m);
   doc.update(comparison_settings_json(c));
-  doc.update(JsonObject{                        {"resamples", c.resamples},
+  doc.update(JsonObject{{"resamples", c.resamples},
                         {"confidence", c.confidence},
                         {"measures", measures},
                         {"sequences", r.sequences},
