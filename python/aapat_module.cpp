@@ -3,6 +3,7 @@
 // message, a wrong argument's type too.
 #include <algorithm>
 
+#include "aapat/core/text.h"
 #include "aapat/version.h"
 #include "bindings.h"
 
@@ -29,7 +30,9 @@ arrays. Specs name filters, acuity tables, generators and scenes
     } catch (const ParameterError& e) {
       std::string keyword = e.parameter();
       std::replace(keyword.begin(), keyword.end(), '-', '_');
-      PyErr_SetString(error.ptr(), (keyword + e.detail()).c_str());
+      PyErr_SetString(error.ptr(), shortened_message(keyword + e.detail()).c_str());
+    } catch (const Error& e) {
+      PyErr_SetString(error.ptr(), shortened_message(e.what()).c_str());
     } catch (const py::cast_error& e) {
       // A value converted inside a function (a list where a sequence or a
       // pattern was expected): aapat.Error like every bad input, not

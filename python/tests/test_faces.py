@@ -480,3 +480,10 @@ def test_study_compare_is_the_cli_comparison(aapat_cli):
     lower = sum(r < f for r, f in zip((m[4] for m in cli["patterns"][1]["measures"]),
                                       (m[4] for m in cli["patterns"][0]["measures"])))
     assert flip["lower"] == lower and flip["scenes"] == 3 and cli["against_first"][0]["against"] == "msaa-4"
+
+
+def test_a_huge_argument_is_not_echoed_whole():
+    """A 100 KB name in an error message is cut, as the command line cuts it."""
+    with pytest.raises(aapat.Error) as e:
+        aapat.pattern("x" * 100000)
+    assert len(str(e.value)) < 1100 and "more bytes)" in str(e.value)

@@ -20,6 +20,7 @@
 #include "aapat/core/hash.h"
 #include "aapat/core/nearest_name.h"
 #include "aapat/core/read_file.h"
+#include "aapat/core/text.h"
 #include "aapat/io/atomic_file.h"
 #include "aapat/version.h"
 #include "aapat/work/checkpoint.h"
@@ -34,7 +35,7 @@ std::ostream* g_warnings = nullptr;
 
 // The message of the exception in flight, whatever its type: library errors
 // as they are, the rest named for what they mean to a user.
-std::string describe_current_exception() {
+std::string describe_current_exception_whole() {
   try {
     throw;
   } catch (const ParameterError& e) {
@@ -54,6 +55,11 @@ std::string describe_current_exception() {
   } catch (...) {
     return "internal error (unknown exception); please report it";
   }
+}
+
+// The message as the terminal shows it: a huge argument echoed is cut.
+std::string describe_current_exception() {
+  return shortened_message(describe_current_exception_whole());
 }
 
 }  // namespace

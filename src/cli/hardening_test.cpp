@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string>
 
+#include "aapat/core/text.h"
 #include "aapat/render/animation.h"
 #include "cli/app.h"
 #include "testing/cli_run.h"
@@ -611,6 +612,17 @@ TEST(Hardening, StudyCompareRefusesTheStudysFiles) {
     EXPECT_EQ(r.code, kExitUsage) << file;
     EXPECT_NE(r.err.find("excludes"), std::string::npos) << r.err;
   }
+}
+
+// A 100 KB argument echoed in an error is cut to kMaxMessageBytes, at a
+// character's boundary, with the count of what was left out.
+TEST(Hardening, AHugeArgumentIsNotEchoedWhole) {
+  const CliRun r = run({"eval", std::string(100000, 'x') + "\xc3\xa9"});
+  EXPECT_NE(r.code, 0);
+  EXPECT_LT(r.err.size(), kMaxMessageBytes + 100) << r.err.size();
+  EXPECT_NE(r.err.find("more bytes)"), std::string::npos) << r.err.substr(0, 200);
+  const std::string cut = shortened_message(std::string(999, 'a') + "\xc3\xa9" + "b");
+  EXPECT_EQ(cut, std::string(999, 'a') + "... (3 more bytes)");  // not inside the é
 }
 
 }  // namespace

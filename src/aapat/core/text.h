@@ -1,6 +1,7 @@
 // The two string helpers every spec parser needs: comma lists and trimming.
 #pragma once
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -46,6 +47,19 @@ inline std::string one_line(std::string_view text) {
     if (u < 0x20 || u == 0x7f) c = ' ';
   }
   return out;
+}
+
+// An error message as a face shows it: at most kMaxMessageBytes, cut at a
+// UTF-8 character's boundary with the count of what was left out, so that a
+// 100 KB argument echoed in a message does not flood a terminal or a log.
+inline constexpr size_t kMaxMessageBytes = 1000;
+inline std::string shortened_message(std::string_view message,
+                                     size_t max_bytes = kMaxMessageBytes) {
+  if (message.size() <= max_bytes) return std::string(message);
+  size_t cut = max_bytes;
+  while (cut > 0 && (static_cast<unsigned char>(message[cut]) & 0xC0) == 0x80) --cut;
+  return std::string(message.substr(0, cut)) + "... (" + std::to_string(message.size() - cut) +
+         " more bytes)";
 }
 
 }  // namespace aapat
