@@ -59,9 +59,8 @@ EngineComparison comparison_of(const std::string& taa, double ratio, const py::d
                                const std::string& reference_filter) {
   EngineComparison c;
   c.taa = make_engine_taa(taa, ratio, taa_overrides_of(settings));
-  if (!scenes && random_scenes == 0) throw Error("give scenes= or random_scenes=");
-  if (scenes && random_scenes != 0) throw Error("give scenes= or random_scenes=, not both");
-  c.scenes = scenes ? *scenes : random_scene_specs(random_scenes, shapes, seed);
+  c.scenes =
+      comparison_scenes(scenes.value_or(std::vector<std::string>{}), random_scenes, shapes, seed);
   c.motion = motion;
   std::tie(c.width, c.height) = size;
   c.frames = frames;
@@ -167,7 +166,8 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
       py::arg("samples_per_frame") = SequenceSearch{}.samples_per_frame,
       py::arg("flicker_weight") = SequenceSearch{}.flicker_weight,
       py::arg("jitter_bound") = SequenceSearch{}.jitter_bound,
-      py::arg("jitter_radius") = py::none(), py::arg("measure") = std::string(frame_measure_name(SequenceSearch{}.frame_measure)),
+      py::arg("jitter_radius") = py::none(),
+      py::arg("measure") = std::string(frame_measure_name(SequenceSearch{}.frame_measure)),
       py::arg("starts") = SequenceSearch{}.starts, py::arg("seed") = SequenceSearch{}.seed,
       py::arg("iterations") = SequenceSearch{}.iterations, py::arg("equal_weights") = false,
       py::arg("api") = "", py::arg("model") = std::string(kDefaultAccumulation),

@@ -70,9 +70,7 @@ struct ComparisonOptions {
   EngineComparison make() const {
     EngineComparison c;
     c.taa = make_engine_taa(taa, ratio, parse_taa_overrides(taa_set));
-    if (scenes.empty() && random_scenes == 0)
-      throw Error("give the scenes (--scene, repeatable) or --random-scenes N");
-    c.scenes = scenes.empty() ? random_scene_specs(random_scenes, shapes, seed) : scenes;
+    c.scenes = comparison_scenes(scenes, random_scenes, shapes, seed);
     c.motion = motion;
     std::tie(c.width, c.height) = parse_size(size, "--size", kMaxAnimationSize);
     c.frames = frames;

@@ -29,15 +29,19 @@ double sign_test_p(int lower, int higher) {
   return std::min(1.0, 2 * tail);
 }
 
+void check_paired_settings(int resamples, double confidence) {
+  if (resamples < 1 || resamples > 1000000)
+    throw ParameterError("resamples", fmt::format(" {}: expected 1 to 1000000", resamples));
+  if (!(confidence > 0 && confidence < 1))
+    throw ParameterError("confidence", fmt::format(" {}: expected (0, 1)", confidence));
+}
+
 PairedComparison compare_paired(std::span<const double> ours, std::span<const double> theirs,
                                 int resamples, double confidence, uint64_t seed) {
   if (ours.size() != theirs.size())
     throw Error(fmt::format("paired comparison: {} values against {}", ours.size(), theirs.size()));
   if (ours.empty()) throw Error("paired comparison: no items to compare");
-  if (resamples < 1 || resamples > 1000000)
-    throw ParameterError("resamples", fmt::format(" {}: expected 1 to 1000000", resamples));
-  if (!(confidence > 0 && confidence < 1))
-    throw ParameterError("confidence", fmt::format(" {}: expected (0, 1)", confidence));
+  check_paired_settings(resamples, confidence);
   const size_t n = ours.size();
   std::vector<double> d(n);
   PairedComparison c;

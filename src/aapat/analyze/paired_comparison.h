@@ -28,6 +28,10 @@ struct PairedComparison {
 PairedComparison compare_paired(std::span<const double> ours, std::span<const double> theirs,
                                 int resamples = 2000, double confidence = 0.95, uint64_t seed = 1);
 
+// Throws ParameterError naming "resamples" (1 to 1,000,000) or "confidence"
+// (in (0, 1)): the settings compare_paired takes, checkable before any work.
+void check_paired_settings(int resamples, double confidence);
+
 // The exact two-sided sign test's p-value for `lower` of `lower + higher`
 // paired items below their baseline: min(1, 2 P(X <= min(lower, higher))),
 // X ~ Binomial(lower + higher, 1/2).

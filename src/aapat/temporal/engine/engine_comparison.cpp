@@ -21,6 +21,13 @@ std::vector<std::string> random_scene_specs(int count, int shapes, uint64_t seed
   return specs;
 }
 
+std::vector<std::string> comparison_scenes(const std::vector<std::string>& given, int random_scenes,
+                                           int shapes, uint64_t seed) {
+  if (given.empty() == (random_scenes == 0))
+    throw ParameterError("scene", ": give the scenes, or a count of random scenes, not both");
+  return given.empty() ? random_scene_specs(random_scenes, shapes, seed) : given;
+}
+
 void validate(const EngineComparison& c, size_t sequences) {
   if (c.scenes.empty() || c.scenes.size() > static_cast<size_t>(kMaxComparisonScenes))
     throw ParameterError("scene", fmt::format(": {} scenes; expected 1 to {}", c.scenes.size(),
@@ -42,7 +49,7 @@ void validate(const EngineComparison& c, size_t sequences) {
   } else if (c.motion != "static" && c.motion != "cut") {
     make_motion(c.motion, c.width, c.height);  // names a bad spec before any work
   }
-  compare_paired(std::vector<double>{0.0}, std::vector<double>{0.0}, c.resamples, c.confidence);
+  check_paired_settings(c.resamples, c.confidence);
 }
 
 PreparedScenes::PreparedScenes(const EngineComparison& c, const ReferenceSource& references)

@@ -66,6 +66,11 @@ struct EngineComparisonResult {
 // ParameterError naming "random-scenes" or "shapes" out of range.
 std::vector<std::string> random_scene_specs(int count, int shapes, uint64_t seed);
 
+// The scenes a face names: those given, or `random_scenes` generated ones
+// (random_scene_specs); ParameterError naming "scene" for both or neither.
+std::vector<std::string> comparison_scenes(const std::vector<std::string>& given, int random_scenes,
+                                           int shapes, uint64_t seed);
+
 // Throws Error (ParameterError naming the setting) before any work: no
 // scene or too many, fewer than two sequences, a motion it cannot make, a
 // size, frame count or warm-up out of range.
