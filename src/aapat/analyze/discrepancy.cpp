@@ -14,6 +14,7 @@
 #include "aapat/analyze/l2_discrepancy.h"
 #include "aapat/analyze/radix_sort.h"
 #include "aapat/core/interrupt.h"
+#include "aapat/core/portable_math.h"
 
 namespace aapat {
 
@@ -51,7 +52,7 @@ EdgeDiscrepancy edge_discrepancy(const std::vector<Vec2>& p, int directions,
     std::vector<uint64_t> scratch;
     for (int k = range.begin(); k != range.end(); ++k) {
       // Normals over [0, pi): a half-plane and its complement deviate equally.
-      const double phi = kPi * k / directions, c = std::cos(phi), sn = std::sin(phi);
+      const double phi = kPi * k / directions, c = portable_cos(phi), sn = portable_sin(phi);
       for (size_t i = 0; i < p.size(); ++i) s[i] = p[i].x * c + p[i].y * sn;
       const HalfPlaneArea area_below(phi);
       radix_sort(s, scratch);

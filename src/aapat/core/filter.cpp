@@ -7,13 +7,14 @@
 
 #include "aapat/core/geometry.h"
 #include "aapat/core/overloaded.h"
+#include "aapat/core/portable_math.h"
 
 namespace aapat {
 namespace {
 
 double sinc(double x) {
   if (std::abs(x) < 1e-8) return 1.0 - (kPi * x) * (kPi * x) / 6.0;
-  return std::sin(kPi * x) / (kPi * x);
+  return portable_sin(kPi * x) / (kPi * x);
 }
 
 // Pieces on [0, radius]: the breakpoints of a piecewise polynomial, or 1/16
@@ -52,12 +53,12 @@ double shape_value(const FilterShape& shape, double x) {
           [&](const BoxShape& s) { return ax <= s.width / 2 ? 1.0 : 0.0; },
           [&](const TentShape& s) { return std::max(0.0, 1.0 - ax / s.radius); },
           [&](const GaussianShape& s) {
-            return ax <= s.radius ? std::exp(-x * x / (2 * s.sigma * s.sigma)) : 0.0;
+            return ax <= s.radius ? portable_exp(-x * x / (2 * s.sigma * s.sigma)) : 0.0;
           },
           [&](const MitchellShape& s) { return MitchellCubic(s.b, s.c)(x); },
           [&](const LanczosShape& s) { return ax < s.lobes ? sinc(x) * sinc(x / s.lobes) : 0.0; },
           [&](const LanczosGaussianShape& s) {
-            return ax < s.lobes ? std::exp(-x * x / (2 * s.sigma * s.sigma)) * sinc(x / s.lobes)
+            return ax < s.lobes ? portable_exp(-x * x / (2 * s.sigma * s.sigma)) * sinc(x / s.lobes)
                                 : 0.0;
           },
           [&](const BlinnNiceShape&) { return ax < 4 ? sinc(x / 2) * sinc(x / 4) : 0.0; }},

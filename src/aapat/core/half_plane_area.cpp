@@ -1,4 +1,5 @@
 #include "aapat/core/half_plane_area.h"
+#include "aapat/core/portable_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,7 @@ HalfPlaneArea::HalfPlaneArea(double phi) {
   // corners project to 0 <= lo <= hi <= lo + hi (lo, hi the smaller and the
   // larger of |c|, s): a growing triangle, a band of constant width, and the
   // square less a shrinking triangle.
-  const double c = std::cos(phi), s = std::sin(phi);
+  const double c = portable_cos(phi), s = portable_sin(phi);
   a_ = std::abs(c);
   b_ = std::abs(s);
   negative_c_ = c < 0;

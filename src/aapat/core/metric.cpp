@@ -3,6 +3,7 @@
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/interrupt.h"
 #include "aapat/core/metric_simd.h"
+#include "aapat/core/portable_math.h"
 
 #include <fmt/format.h>
 
@@ -117,7 +118,9 @@ double combine_over_angles(std::span<const double> values, double norm) {
   // ((1/M) sum v^(p/2))^(1/p) = sqrt(largest) ((1/M) sum (v / largest)^(p/2))^(1/p)
   double sum = 0;
   for (double v : values) sum += norm_power(v / largest, norm / 2);
-  return std::sqrt(largest) * std::pow(sum / static_cast<double>(values.size()), 1.0 / norm);
+  const double mean = sum / static_cast<double>(values.size());
+  // p = 2 by a square root, exactly rounded everywhere; other p by aapat's own pow.
+  return std::sqrt(largest) * (norm == 2 ? std::sqrt(mean) : portable_pow(mean, 1.0 / norm));
 }
 
 std::string format_norm(double norm) {
@@ -139,8 +142,9 @@ Metric::Metric(Filter filter, AcuityTable acuity, double norm)
   check_norm(norm_);
   validate(acuity_);
   for (double a : acuity_.angles_deg) {
-    cos_.push_back(std::cos(radians(a)));
-    sin_.push_back(std::sin(radians(a)));
+    // aapat's own cos and sin: an angle's last bit is the same on every platform.
+    cos_.push_back(portable_cos(radians(a)));
+    sin_.push_back(portable_sin(radians(a)));
   }
   for (double w : acuity_.weights) weight_sq_.push_back(w * w);
 }

@@ -1,4 +1,5 @@
 #include "aapat/generate/maximal_poisson.h"
+#include "aapat/generate/portable_random.h"
 
 #include <fmt/format.h>
 
@@ -59,7 +60,7 @@ std::vector<Vec2> maximal_poisson_disk(double r, std::mt19937_64& rng,
   DartGrid grid(r);
   const int g = grid.side();
   const double r2 = r * r;
-  std::uniform_real_distribution<double> u(0, 1);
+  const auto u = [](std::mt19937_64& r) { return unit_double(r); };
   std::vector<Vec2> points;
   std::vector<Cell> active, next;
   for (int y = 0; y < g; ++y)
@@ -68,10 +69,9 @@ std::vector<Vec2> maximal_poisson_disk(double r, std::mt19937_64& rng,
     const double per_axis = std::ldexp(static_cast<double>(g), level);  // exact: g < 2^14
     // A round of darts, as many as there are active cells, each in a cell
     // drawn uniformly (all of one area): uniform on the active region.
-    std::uniform_int_distribution<size_t> pick(0, active.size() - 1);
     for (size_t t = 0; t < active.size(); ++t) {
       if (t % 65536 == 0) throw_if_interrupted();
-      const Cell& c = active[pick(rng)];
+      const Cell& c = active[uniform_below(rng, active.size())];
       const double ux = u(rng), uy = u(rng);
       const Vec2 d{(static_cast<double>(c.x) + ux) / per_axis,
                    (static_cast<double>(c.y) + uy) / per_axis};

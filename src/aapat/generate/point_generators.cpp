@@ -1,4 +1,5 @@
 #include "aapat/generate/point_generators.h"
+#include "aapat/generate/portable_random.h"
 
 #include <fmt/format.h>
 
@@ -88,7 +89,7 @@ void check_dart_count(int n, std::string_view name) {
 
 std::vector<Vec2> poisson(int n, double radius, std::mt19937_64& rng,
                           const ItemsProgress& progress) {
-  std::uniform_real_distribution<double> u(0, 1);
+  const auto u = [](std::mt19937_64& r) { return unit_double(r); };
   std::vector<Vec2> pts;
   Hundredths done(progress);
   DartGrid grid(radius);
@@ -116,7 +117,7 @@ std::vector<Vec2> poisson(int n, double radius, std::mt19937_64& rng,
 std::vector<Vec2> best_candidate(int n, double q, std::mt19937_64& rng,
                                  const ItemsProgress& progress) {
   Hundredths done(progress);  // point i costs q i queries: the work is (i / n)^2
-  std::uniform_real_distribution<double> u(0, 1);
+  const auto u = [](std::mt19937_64& r) { return unit_double(r); };
   std::vector<Vec2> p;
   auto grid_for = [](size_t points) {
     return std::max(1, static_cast<int>(std::sqrt(points * 2.0)));
@@ -203,9 +204,8 @@ const std::vector<Entry>& entries() {
       {{"random", "n independent uniform points", "Pelikan, 'random sampling'"},
        {},
        [](int n, const Params&, std::mt19937_64& rng, const ItemsProgress&) {
-         std::uniform_real_distribution<double> u(0, 1);
          std::vector<Vec2> p(n);
-         for (auto& v : p) v = {u(rng), u(rng)};
+         for (auto& v : p) v = {unit_double(rng), unit_double(rng)};
          return p;
        }},
       {{"jittered", "one uniform point in each of k x k strata (n = k^2)", "Pelikan; Cook 1986"},
@@ -235,7 +235,7 @@ const std::vector<Entry>& entries() {
          const double a = prm.at("amount");
          if (!(a >= 0 && a <= 1))
            throw Error(fmt::format("semi-jittered: amount = {} is out of range [0, 1]", a));
-         std::uniform_real_distribution<double> u(-a / 2, a / 2);
+         const auto u = [a](std::mt19937_64& r) { return uniform_real(r, -a / 2, a / 2); };
          std::vector<Vec2> p;
          for (int j = 0; j < k; ++j)
            for (int i = 0; i < k; ++i)
@@ -248,8 +248,8 @@ const std::vector<Entry>& entries() {
        [](int n, const Params&, std::mt19937_64& rng, const ItemsProgress&) {
          std::vector<int> perm(n);
          std::iota(perm.begin(), perm.end(), 0);
-         std::shuffle(perm.begin(), perm.end(), rng);
-         std::uniform_real_distribution<double> u(0, 1);
+         shuffle(perm.begin(), perm.end(), rng);
+         const auto u = [](std::mt19937_64& r) { return unit_double(r); };
          std::vector<Vec2> p;
          for (int i = 0; i < n; ++i) p.push_back({(i + u(rng)) / n, (perm[i] + u(rng)) / n});
          return p;

@@ -1,4 +1,5 @@
 #include "aapat/generate/point_processes.h"
+#include "aapat/generate/portable_random.h"
 
 #include <fmt/format.h>
 
@@ -18,7 +19,7 @@ SeedKind parse_seed_kind(std::string_view text) {
 
 std::vector<std::vector<Vec2>> tile_points(int side, int m, SeedKind kind, std::mt19937_64& rng,
                                            double limit) {
-  std::uniform_real_distribution<double> u(0, 1);
+  const auto u = [](std::mt19937_64& r) { return unit_double(r); };
   auto clampv = [&](Vec2 v) {
     return Vec2{std::clamp(v.x, -limit, limit), std::clamp(v.y, -limit, limit)};
   };
@@ -39,7 +40,8 @@ std::vector<std::vector<Vec2>> tile_points(int side, int m, SeedKind kind, std::
           const Vec2 c = clampv({u(rng) - 0.5, u(rng) - 0.5});
           const Vec2 w{tx + c.x, ty + c.y};
           placed = std::all_of(world.begin(), world.end(), [&](Vec2 q) {
-            return std::hypot(torus(q.x - w.x), torus(q.y - w.y)) >= d;
+            const double dx = torus(q.x - w.x), dy = torus(q.y - w.y);
+            return std::sqrt(dx * dx + dy * dy) >= d;
           });
           if (placed) {
             sets[k].push_back(c);
@@ -57,7 +59,7 @@ std::vector<std::vector<Vec2>> tile_points(int side, int m, SeedKind kind, std::
       const int g = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(m))));
       std::vector<int> cells(g * g);
       for (int i = 0; i < g * g; ++i) cells[i] = i;
-      std::shuffle(cells.begin(), cells.end(), rng);
+      shuffle(cells.begin(), cells.end(), rng);
       for (int i = 0; i < m; ++i)
         pts.push_back(
             clampv({(cells[i] % g + u(rng)) / g - 0.5, (cells[i] / g + u(rng)) / g - 0.5}));
@@ -70,7 +72,7 @@ std::vector<std::vector<Vec2>> tile_points(int side, int m, SeedKind kind, std::
 
 std::vector<double> line_points(std::string_view kind, int n, uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
+  const auto u = [](std::mt19937_64& r) { return unit_double(r); };
   std::vector<double> xs;
   if (kind == "jittered") {
     for (int i = 0; i < n; ++i) xs.push_back(i + u(rng));

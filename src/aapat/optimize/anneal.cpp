@@ -1,4 +1,5 @@
 #include "aapat/optimize/anneal.h"
+#include "aapat/generate/portable_random.h"
 
 #include <cmath>
 
@@ -11,16 +12,16 @@ RunResult anneal(const ProblemE2& objective, Problem& problem, const OptimizerSe
   double e2 = r.initial_e2;
   Problem trial = problem, best = problem;
   double best_e2 = e2;
-  std::uniform_real_distribution<double> u(0, 1);
-  std::normal_distribution<double> gauss(0, 1);
+  const auto u = [](std::mt19937_64& r) { return unit_double(r); };
+  Gaussian gauss;
   // The descent spends about three evaluations an iteration: give annealing
   // the same number of evaluations.
   const int steps = 3 * s.max_iterations;
   const double t0 = 0.02 * e2;
   for (r.iterations = 0; r.iterations < steps && !past(s); ++r.iterations) {
     const double progress = static_cast<double>(r.iterations) / steps;
-    const double temperature = t0 * std::pow(1e-4, progress);
-    const double scale = 0.05 * std::pow(1e-3, progress);
+    const double temperature = t0 * portable_pow(1e-4, progress);
+    const double scale = 0.05 * portable_pow(1e-3, progress);
     trial.generators = problem.generators;
     trial.weights = problem.weights;
     const bool move_weight = s.weights_only || u(rng) < 0.5;
@@ -41,7 +42,7 @@ RunResult anneal(const ProblemE2& objective, Problem& problem, const OptimizerSe
     project_to_constraints(trial, s.nonnegative_weights);
     const double next = objective.e2(trial, ws);
     ++r.evaluations;
-    if (next < e2 || u(rng) < std::exp(-(next - e2) / temperature)) {
+    if (next < e2 || u(rng) < portable_exp(-(next - e2) / temperature)) {
       std::swap(problem, trial);
       e2 = next;
       if (e2 < best_e2) {

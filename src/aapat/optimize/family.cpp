@@ -1,4 +1,5 @@
 #include "aapat/optimize/family.h"
+#include "aapat/generate/portable_random.h"
 
 #include <fmt/format.h>
 
@@ -185,7 +186,9 @@ void set_filter_weights(Pattern& p, const Filter& filter) {
 
 Pattern seed_pattern(const FamilySpec& spec, SeedKind kind, std::mt19937_64& rng,
                      const Filter& filter) {
-  std::uniform_real_distribution<double> along(-0.5 + kEdgeMargin, 0.5 - kEdgeMargin);
+  const auto along = [](std::mt19937_64& r) {
+    return uniform_real(r, -0.5 + kEdgeMargin, 0.5 - kEdgeMargin);
+  };
   const double limit = 0.5 - kEdgeMargin;
   const int side = static_cast<int>(std::lround(std::sqrt(spec.s)));
   const int inside =

@@ -1,4 +1,5 @@
 #include "aapat/optimize/problem.h"
+#include "aapat/generate/portable_random.h"
 
 #include <algorithm>
 #include <cmath>
@@ -124,7 +125,7 @@ void lock_samples(Problem& pr, const std::vector<int>& set0_samples) {
 }
 
 Problem perturbed(const Problem& problem, double amount, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(-amount, amount);
+  const auto u = [amount](std::mt19937_64& r) { return uniform_real(r, -amount, amount); };
   Problem p = problem;
   for (Generator& g : p.generators) {
     if (g.freedom == Freedom::kFree || g.freedom == Freedom::kSlideX) g.pos.x += u(rng);

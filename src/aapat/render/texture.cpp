@@ -1,4 +1,5 @@
 #include "aapat/render/texture.h"
+#include "aapat/generate/portable_random.h"
 
 #include <fmt/format.h>
 
@@ -23,17 +24,16 @@ Texture raster(std::string name, int size, F f) {
 Texture text_noise(const std::string& name, int size, uint64_t seed) {
   Texture t = raster(name, size, [](int, int) { return 1.0; });
   std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> word_length(1, 7);
-  std::bernoulli_distribution ink(0.45);
   constexpr int kGlyphW = 4, kGlyphH = 8;  // a 3 x 5 glyph and its spacing
   for (int line = 0; line + kGlyphH <= size; line += kGlyphH) {
     int x = 1;
     while (x + kGlyphW <= size) {
-      const int letters = word_length(rng);
+      const int letters = static_cast<int>(uniform_int(rng, 1, 7));
       for (int l = 0; l < letters && x + kGlyphW <= size; ++l, x += kGlyphW)
         for (int gy = 0; gy < 5; ++gy)
           for (int gx = 0; gx < 3; ++gx)
-            if (ink(rng)) t.texels[static_cast<size_t>(line + 1 + gy) * size + x + gx] = 0.0;
+            if (bernoulli(rng, 0.45))
+              t.texels[static_cast<size_t>(line + 1 + gy) * size + x + gx] = 0.0;
       x += kGlyphW;  // the space between words
     }
   }

@@ -1,4 +1,5 @@
 #include "aapat/study/rank_correlation.h"
+#include "aapat/generate/portable_random.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,11 +67,10 @@ RankCorrelation rank_correlation(std::span<const double> a, std::span<const doub
   r.spearman.value = spearman(a, b);
   r.kendall.value = kendall_tau_b(a, b);
   std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<size_t> pick(0, a.size() - 1);
   std::vector<double> rho, tau, sa(a.size()), sb(b.size());
   for (int k = 0; k < resamples && !a.empty(); ++k) {
     for (size_t i = 0; i < a.size(); ++i) {
-      const size_t j = pick(rng);
+      const size_t j = uniform_below(rng, a.size());
       sa[i] = a[j];
       sb[i] = b[j];
     }

@@ -1,4 +1,5 @@
 #include "aapat/temporal/search/still_search.h"
+#include "aapat/generate/portable_random.h"
 
 #include <fmt/format.h>
 #include <nlopt.h>
@@ -546,8 +547,7 @@ SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& me
         std::vector<double> x = halton;
         if (start > 0) {
           std::mt19937_64 rng = start_rng(s.seed, static_cast<uint64_t>(start));
-          std::uniform_real_distribution<double> u(-bound, bound);
-          for (size_t i = 0; i < positions; ++i) x[i] = u(rng);
+          for (size_t i = 0; i < positions; ++i) x[i] = uniform_real(rng, -bound, bound);
           into_disc(s, x.data(), positions / 2);
         }
         x = s.upscale ? run_upscale_start(s, metric, name, x) : run_start(s, metric, x);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <random>
 
+#include "aapat/core/portable_math.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/generate/unit_random.h"
 
@@ -190,15 +191,15 @@ const SequenceRegistry& sequence_registry() {
           const int frames = s.whole("frames", 1, kMaxSequenceFrames),
                     start = s.whole("start", 0, 1 << 30);
           const double sigma = s.in_range("sigma", 1e-3, 16, true);
-          const double window = std::exp(-0.5 * (0.5 / sigma) * (0.5 / sigma));
+          const double window = portable_exp(-0.5 * (0.5 / sigma) * (0.5 / sigma));
           std::vector<Vec2> at;
           for (int i = start; i < start + frames; ++i) {
             const double u1 = radical_inverse_of(uint64_t(i), 2),
                          u2 = radical_inverse_of(uint64_t(i), 3);
-            const double r = sigma * std::sqrt(-2 * std::log((1 - u1) * window + u1)),
+            const double r = sigma * std::sqrt(-2 * portable_log((1 - u1) * window + u1)),
                          a = 2 * kPi * u2;
-            at.push_back(
-                {std::clamp(r * std::cos(a), -0.5, 0.5), std::clamp(r * std::sin(a), -0.5, 0.5)});
+            at.push_back({std::clamp(r * portable_cos(a), -0.5, 0.5),
+                          std::clamp(r * portable_sin(a), -0.5, 0.5)});
           }
           return jitter_sequence(s.canonical(), "Unreal Engine 4's Gaussian-warped Halton", at);
         }},
