@@ -44,7 +44,8 @@ bool is_jpeg(std::string_view b) {
          static_cast<unsigned char>(b[1]) == 0xD8 && static_cast<unsigned char>(b[2]) == 0xFF;
 }
 
-ColorImage decode_jpeg(std::string_view bytes, const std::string& path, const std::string& what) {
+ColorImage decode_jpeg(std::string_view bytes, const std::string& path, const std::string& what,
+                       const ImageLimits& limits) {
   if (!is_jpeg(bytes)) throw Error(fmt::format("{} '{}': not a JPEG image", what, path));
   jpeg_decompress_struct info{};
   ErrorJump err{};
@@ -63,10 +64,13 @@ ColorImage decode_jpeg(std::string_view bytes, const std::string& path, const st
   jpeg_read_header(&info, TRUE);
   d.width = info.image_width;
   d.height = info.image_height;
-  if (d.width < 1 || d.height < 1 || size_t{d.width} * d.height > kMaxColorImagePixels) {
+  if (d.width < 1 || d.height < 1 || d.width > limits.max_side || d.height > limits.max_side ||
+      size_t{d.width} * d.height > limits.max_pixels) {
     jpeg_destroy_decompress(&info);
-    throw Error(fmt::format("{} '{}': {}x{} pixels; at most {} pixels (docs/limits.md)", what, path,
-                            d.width, d.height, kMaxColorImagePixels));
+    throw Error(
+        fmt::format("{} '{}': {}x{} pixels; at most {} per side and {} in all "
+                    "(docs/limits.md)",
+                    what, path, d.width, d.height, limits.max_side, limits.max_pixels));
   }
   info.out_color_space = JCS_RGB;  // grey and YCbCr files alike
   pixels.resize(size_t{3} * d.width * d.height);

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "aapat/analyze/color_image.h"
+#include "aapat/io/png_image.h"
 
 namespace aapat {
 
@@ -13,8 +14,9 @@ namespace aapat {
 bool is_jpeg(std::string_view bytes);
 
 // Decodes a baseline or progressive JPEG, grey or colour, into sRGB values;
-// the size is checked against kMaxColorImagePixels (io/png_image.h) before
-// decoding. Throws Error naming `path` and what it is (`what`).
-ColorImage decode_jpeg(std::string_view bytes, const std::string& path, const std::string& what);
+// the size is checked against `limits` (io/png_image.h) before decoding. Throws Error naming `path`
+// and what it is (`what`).
+ColorImage decode_jpeg(std::string_view bytes, const std::string& path, const std::string& what,
+                       const ImageLimits& limits = kColorImageLimits);
 
 }  // namespace aapat

@@ -22,6 +22,7 @@
 #include "aapat/core/read_file.h"
 #include "aapat/io/jpeg_image.h"
 #include "aapat/io/png_image.h"
+#include "aapat/render/texture.h"
 
 namespace aapat {
 namespace {
@@ -110,9 +111,13 @@ class CheckedFiles : public Assimp::IOSystem {
 };
 
 // A texture file's bytes: JPEG or PNG, told apart by their first bytes.
-ColorImage decode_image(std::string_view bytes, const std::string& path, const std::string& what) {
-  return is_jpeg(bytes) ? decode_jpeg(bytes, path, what)
-                        : decode_png_color(bytes, path, what).image;
+// Each within a texture's size (kMaxTextureSide a side) and what is left of
+// the model's texel budget, checked from its header.
+ColorImage decode_image(std::string_view bytes, const std::string& path, const std::string& what,
+                        size_t texels_left) {
+  const ImageLimits limits{static_cast<uint32_t>(kMaxTextureSide), texels_left};
+  return is_jpeg(bytes) ? decode_jpeg(bytes, path, what, limits)
+                        : decode_png_color(bytes, path, what, limits).image;
 }
 
 class Reader {
@@ -180,12 +185,16 @@ class Reader {
       if (embedded->mHeight == 0) {  // compressed bytes: a PNG or a JPEG
         image = decode_image(
             std::string_view(reinterpret_cast<const char*>(embedded->pcData), embedded->mWidth),
-            ref, what);
+            ref, what, texels_left());
       } else {
         const size_t pixels = size_t{embedded->mWidth} * embedded->mHeight;
-        if (pixels > kMaxColorImagePixels)
-          throw Error(fmt::format("{} '{}': {}x{} texels, over the limit", what, ref,
-                                  embedded->mWidth, embedded->mHeight));
+        if (embedded->mWidth > static_cast<unsigned>(kMaxTextureSide) ||
+            embedded->mHeight > static_cast<unsigned>(kMaxTextureSide) || pixels > texels_left())
+          throw Error(
+              fmt::format("{} '{}': {}x{} texels; at most {} per side and {} in all the "
+                          "model's textures (docs/limits.md)",
+                          what, ref, embedded->mWidth, embedded->mHeight, kMaxTextureSide,
+                          kMaxMeshTextureTexels));
         image = {static_cast<int>(embedded->mWidth), static_cast<int>(embedded->mHeight),
                  std::vector<float>(3 * pixels)};
         for (size_t p = 0; p < pixels; ++p) {
@@ -203,8 +212,10 @@ class Reader {
       } catch (const Error& e) {
         throw Error(fmt::format("{} '{}': {}", what, ref, e.what()));
       }
-      image = decode_image(read_file(file.string(), what, kMaxModelFileBytes), file.string(), what);
+      image = decode_image(read_file(file.string(), what, kMaxModelFileBytes), file.string(), what,
+                           texels_left());
     }
+    texels_ += image.rgb.size() / 3;
     return cache_.emplace(ref, std::move(image)).first->second;
   }
 
@@ -299,7 +310,11 @@ class Reader {
   bool linear_, gltf_;
   Mesh* mesh_ = nullptr;
   bool any_uv_ = false, any_colour_ = false;
+  size_t texels_left() const {
+    return kMaxMeshTextureTexels - std::min(texels_, kMaxMeshTextureTexels);
+  }
   std::map<std::string, ColorImage> cache_;
+  size_t texels_ = 0;  // in the textures decoded so far
   std::map<std::string, aiMatrix4x4> transforms_;
 };
 

@@ -87,33 +87,97 @@ void write_png_image(const std::string& path, const Image& image) {
 PngColor read_png_color(const std::string& path, const std::string& what) {
   // A PNG of kMaxColorImagePixels compresses to far less than this; the
   // header's size is checked before anything is decoded.
-  return decode_png_color(read_file(path, what, size_t{1} << 30), path, what);
+  return decode_png_color(read_file(path, what, size_t{1} << 30), path, what, kColorImageLimits);
 }
 
-PngColor decode_png_color(std::string_view bytes, const std::string& path,
-                          const std::string& what) {
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()))
-    throw Error(fmt::format("{} '{}': not a PNG image ({})", what, path, image.message));
-  struct Release {
-    png_image* image;
-    ~Release() { png_image_free(image); }
-  } release{&image};
-  const size_t pixels = static_cast<size_t>(image.width) * image.height;
-  if (image.width < 1 || image.height < 1 || pixels > kMaxColorImagePixels)
-    throw Error(fmt::format("{} '{}': {}x{} pixels; at most {} pixels (docs/limits.md)", what, path,
-                            image.width, image.height, kMaxColorImagePixels));
+namespace {
+
+// What the decoder fills in; it lives outside decode() so that nothing
+// decode() changes after its setjmp is a local that a longjmp could leave
+// indeterminate.
+struct PngDecoding {
+  std::string_view bytes;
+  size_t at = 0;
+  std::string message;
+  png_uint_32 width = 0, height = 0;
+  bool too_large = false, had_alpha = false;
+  int channels = 0;
+  std::vector<uint8_t> pixels;
+  std::vector<png_bytep> rows;
+};
+
+void read_bytes(png_structp png, png_bytep out, png_size_t n) {
+  auto* d = static_cast<PngDecoding*>(png_get_io_ptr(png));
+  if (n > d->bytes.size() - d->at) png_error(png, "the file ends early");
+  std::copy_n(d->bytes.data() + d->at, n, reinterpret_cast<char*>(out));
+  d->at += n;
+}
+[[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
+  static_cast<PngDecoding*>(png_get_error_ptr(png))->message = message;
+  png_longjmp(png, 1);
+}
+void on_png_warning(png_structp, png_const_charp) {}
+
+// False on a libpng error (its message in d->message).
+bool decode(png_structp png, png_infop info, PngDecoding* d, const ImageLimits& limits) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_set_read_fn(png, d, read_bytes);
+  png_read_info(png, info);
+  d->width = png_get_image_width(png, info);
+  d->height = png_get_image_height(png, info);
+  if (d->width < 1 || d->height < 1 || d->width > limits.max_side || d->height > limits.max_side ||
+      size_t{d->width} * d->height > limits.max_pixels) {
+    d->too_large = true;
+    return true;
+  }
+  const int type = png_get_color_type(png, info);
+  d->had_alpha = (type & PNG_COLOR_MASK_ALPHA) != 0 || png_get_valid(png, info, PNG_INFO_tRNS);
+  // Values as stored: palettes and low bit depths expanded, 16 bits reduced to
+  // their high byte (as FLIP's reference tool reads them), grey copied to
+  // R, G and B, and no gamma conversion whatever gAMA, sRGB, cHRM or iCCP say.
+  png_set_expand(png);
+  png_set_strip_16(png);
+  png_set_gray_to_rgb(png);
+  png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  d->channels = png_get_channels(png, info);
+  const size_t row = png_get_rowbytes(png, info);
+  d->pixels.resize(row * d->height);
+  d->rows.resize(d->height);
+  for (png_uint_32 y = 0; y < d->height; ++y) d->rows[y] = &d->pixels[row * y];
+  png_read_image(png, d->rows.data());
+  png_read_end(png, nullptr);
+  return true;
+}
+
+}  // namespace
+
+PngColor decode_png_color(std::string_view bytes, const std::string& path, const std::string& what,
+                          const ImageLimits& limits) {
+  if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) != 0)
+    throw Error(fmt::format("{} '{}': not a PNG image", what, path));
+  PngDecoding d;
+  d.bytes = bytes;
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &d, on_png_error, on_png_warning);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  const bool decoded = png && info && decode(png, info, &d, limits);
+  png_destroy_read_struct(&png, &info, nullptr);
+  if (!decoded)
+    throw Error(fmt::format("{} '{}': cannot decode it ({})", what, path,
+                            d.message.empty() ? "out of memory" : d.message));
+  if (d.too_large)
+    throw Error(
+        fmt::format("{} '{}': {}x{} pixels; at most {} per side and {} in all "
+                    "(docs/limits.md)",
+                    what, path, d.width, d.height, limits.max_side, limits.max_pixels));
+  const size_t pixels = size_t{d.width} * d.height;
   PngColor out;
-  out.had_alpha = (image.format & PNG_FORMAT_FLAG_ALPHA) != 0;
-  image.format = PNG_FORMAT_RGBA;  // 8-bit sRGB, alpha kept apart (not premultiplied)
-  std::vector<uint8_t> rgba(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, rgba.data(), 0, nullptr))
-    throw Error(fmt::format("{} '{}': cannot decode it ({})", what, path, image.message));
-  out.image = {static_cast<int>(image.width), static_cast<int>(image.height),
+  out.had_alpha = d.had_alpha;
+  out.image = {static_cast<int>(d.width), static_cast<int>(d.height),
                std::vector<float>(3 * pixels)};
   for (size_t p = 0; p < pixels; ++p)
-    for (int c = 0; c < 3; ++c) out.image.rgb[3 * p + c] = rgba[4 * p + c] / 255.0f;
+    for (int c = 0; c < 3; ++c)
+      out.image.rgb[3 * p + c] = d.pixels[static_cast<size_t>(d.channels) * p + c] / 255.0f;
   return out;
 }
 

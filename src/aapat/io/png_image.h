@@ -27,18 +27,31 @@ void write_png_image(const std::string& path, const Image& image);
 // UHD), checked from the header before any pixel is decoded.
 inline constexpr size_t kMaxColorImagePixels = size_t{1} << 25;
 
+// The size an image read may have, checked from its header before any pixel
+// is decoded.
+struct ImageLimits {
+  uint32_t max_side;
+  size_t max_pixels;
+};
+inline constexpr ImageLimits kColorImageLimits{uint32_t{1} << 20, kMaxColorImagePixels};
+
 struct PngColor {
   ColorImage image;  // sRGB values in [0, 1]; grey files give R = G = B
   bool had_alpha = false;
 };
 // Any PNG: grey or colour, with or without alpha, 1 to 16 bits, palette or
-// not; 16-bit values are reduced to 8 bits, as FLIP's reference tool reads
-// them. Alpha is dropped: the colour compared is the colour stored. Throws
+// not, interlaced or not. The values are taken as stored: 16-bit values are
+// reduced to their high byte, as FLIP's reference tool reads them, and no
+// gamma conversion is made whatever the colour chunks (gAMA, sRGB, cHRM,
+// iCCP) say, so the same content at 8 and 16 bits reads the same. Alpha is
+// dropped: the colour compared is the colour stored. Throws
 // Error naming the file (`what` says what it is): missing, not a PNG,
 // truncated, or too large.
 PngColor read_png_color(const std::string& path, const std::string& what);
 // The same from the file's bytes (a texture embedded in a model); `path`
 // names them in errors.
-PngColor decode_png_color(std::string_view bytes, const std::string& path, const std::string& what);
+// `limits` the size it may have (a model's texture: kMaxTextureSide).
+PngColor decode_png_color(std::string_view bytes, const std::string& path, const std::string& what,
+                          const ImageLimits& limits = kColorImageLimits);
 
 }  // namespace aapat

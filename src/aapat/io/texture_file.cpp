@@ -1,41 +1,44 @@
 #include "aapat/io/texture_file.h"
 
 #include <fmt/format.h>
-#include <png.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <mutex>
 
 #include "aapat/core/hash.h"
 #include "aapat/io/atomic_file.h"
+#include "aapat/io/png_image.h"
 
 namespace aapat {
 
 namespace {
 
 Texture decode_texture_png(const std::string& bytes, const std::string& path) {
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()))
-    throw Error(fmt::format("texture file '{}': not a PNG image ({})", path, image.message));
-  struct Release {
-    png_image* image;
-    ~Release() { png_image_free(image); }
-  } release{&image};
-  if (image.width < 1 || image.height < 1 || image.width > kMaxTextureSide ||
-      image.height > kMaxTextureSide)
-    throw Error(fmt::format("texture file '{}': {}x{} pixels; each side must be 1 to {}", path,
-                            image.width, image.height, kMaxTextureSide));
-  image.format = PNG_FORMAT_GRAY;  // colour to luminance, alpha dropped, 16 bits to 8
-  std::vector<uint8_t> pixels(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, pixels.data(), 0, nullptr))
-    throw Error(fmt::format("texture file '{}': cannot decode it ({})", path, image.message));
-  const int w = static_cast<int>(image.width), h = static_cast<int>(image.height);
+  // The one PNG decoder (values as stored, io/png_image.h), with the
+  // texture's size limits; colour becomes its luminance: Rec. 709 weights in
+  // linear light, encoded back to sRGB and to 8-bit levels (grey files keep
+  // their values).
+  const ColorImage image =
+      decode_png_color(bytes, path, "texture file",
+                       {static_cast<uint32_t>(kMaxTextureSide),
+                        static_cast<size_t>(kMaxTextureSide) * kMaxTextureSide})
+          .image;
+  const int w = image.width, h = image.height;
   Texture t{path, w, h, std::vector<double>(static_cast<size_t>(w) * h)};
   for (int j = 0; j < h; ++j)  // PNG rows run from the top; texture rows from the bottom
-    for (int i = 0; i < w; ++i)
+    for (int i = 0; i < w; ++i) {
+      const float* rgb = &image.rgb[3 * (static_cast<size_t>(h - 1 - j) * w + i)];
+      const float y =
+          rgb[0] == rgb[1] && rgb[1] == rgb[2]
+              ? rgb[0]
+              : linear_to_srgb(0.2126f * srgb_to_linear(rgb[0]) + 0.7152f * srgb_to_linear(rgb[1]) +
+                               0.0722f * srgb_to_linear(rgb[2]));
+      // 8-bit levels, as the file holds them (k / 255 exactly for grey).
       t.texels[static_cast<size_t>(j) * w + i] =
-          pixels[static_cast<size_t>(h - 1 - j) * w + i] / 255.0;
+          static_cast<double>(std::clamp(std::lround(y * 255.0f), 0L, 255L)) / 255.0;
+    }
   return t;
 }
 

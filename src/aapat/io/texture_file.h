@@ -1,6 +1,7 @@
-// Textures by name: a PNG file (grey, or colour turned to its luminance by
-// libpng) or a procedural texture spec (render/texture.h), each loaded once
-// per process with both mipmap pyramids; and a scene given its texture.
+// Textures by name: a PNG file (grey, or colour turned to its luminance;
+// io/png_image.h's decoder) or a procedural texture spec (render/texture.h),
+// each loaded once per process with both mipmap pyramids; and a scene given
+// its texture.
 #pragma once
 
 #include <memory>
