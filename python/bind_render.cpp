@@ -38,14 +38,22 @@ Array image_array(const Image& img) {
   return a;
 }
 
-// An (h, w) grey or (h, w, 3) sRGB array in [0, 1] as a colour image.
-ColorImage color_image(const Array& a, const char* what) {
-  if (!((a.ndim() == 2) || (a.ndim() == 3 && a.shape(2) == 3)) || a.size() == 0) {
-    std::vector<py::ssize_t> shape(a.shape(), a.shape() + a.ndim());
+// An (h, w) grey or (h, w, 3) sRGB array in [0, 1] as a colour image. The
+// shape and the pixel limit are checked on the array as given, before any
+// conversion to doubles allocates a copy (`aapat diff`'s limit on a PNG).
+ColorImage color_image(const py::array& given, const char* what) {
+  if (!((given.ndim() == 2) || (given.ndim() == 3 && given.shape(2) == 3)) || given.size() == 0) {
+    std::vector<py::ssize_t> shape(given.shape(), given.shape() + given.ndim());
     throw Error(
         fmt::format("diff: {} must be an (h, w) grey or (h, w, 3) RGB array, not of shape ({})",
                     what, fmt::join(shape, ", ")));
   }
+  const auto pixels = static_cast<size_t>(given.shape(0)) * static_cast<size_t>(given.shape(1));
+  if (pixels > kMaxColorImagePixels)
+    throw Error(fmt::format("diff: {} has {}x{} pixels; at most {} (docs/limits.md)", what,
+                            given.shape(1), given.shape(0), kMaxColorImagePixels));
+  const Array a = Array::ensure(given);
+  if (!a) throw Error(fmt::format("diff: {} is not an array of numbers", what));
   const int h = static_cast<int>(a.shape(0)), w = static_cast<int>(a.shape(1));
   ColorImage img{w, h, std::vector<float>(static_cast<size_t>(w) * h * 3)};
   const double* v = a.data();
@@ -79,7 +87,7 @@ reads it) as an (h, w, 3) array of sRGB values in [0, 1], top row first.)doc");
 
   m.def(
       "diff",
-      [](const Array& reference, const Array& test, double ppd) {
+      [](const py::array& reference, const py::array& test, double ppd) {
         const ColorImage ref = color_image(reference, "reference"), tst = color_image(test, "test");
         const auto d = interruptible([&] { return image_diff(ref, tst, ppd); });
         py::dict out = values_of(diff_json("", "", d));

@@ -341,6 +341,15 @@ def test_diff_is_the_cli_document(aapat_cli):
     assert values == {k: v for k, v in cli.items() if k not in ("reference", "test")}
 
 
+def test_diff_refuses_arrays_over_the_pixel_limit_before_copying_them():
+    """An array of more pixels than `aapat diff` reads from a PNG is refused
+    by its shape, before it is converted (a broadcast view costs nothing;
+    its copy as doubles would be 800 MB)."""
+    huge = np.broadcast_to(np.float32(0.5), (6000, 6000, 3))
+    with pytest.raises(ValueError, match=r"diff: reference has 6000x6000 pixels; at most 33554432"):
+        aapat.diff(huge, huge)
+
+
 def test_render_flip_is_aapat_diff_of_its_files(aapat_cli, tmp_path):
     """FLIP means one thing wherever its name appears: the mean FLIP `render`
     reports is `aapat diff` of the image and the reference it writes."""

@@ -15,11 +15,14 @@
 #include <functional>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string_view>
 #include <utility>
 
 #include "aapat/analyze/color_image.h"
+#include "aapat/core/hash.h"
 #include "aapat/core/read_file.h"
+#include "aapat/io/gltf_prescan.h"
 #include "aapat/io/jpeg_image.h"
 #include "aapat/io/png_image.h"
 #include "aapat/render/texture.h"
@@ -28,7 +31,7 @@ namespace aapat {
 namespace {
 
 // Nodes deeper than this are refused: a hierarchy that deep is a loop or an attack.
-constexpr int kMaxNodeDepth = 256;
+constexpr int kMaxNodeDepth = kMaxModelNodeDepth + 1;  // assimp adds a root above the model's own
 
 std::array<std::shared_ptr<const TexturedSurface>, 3> channel_surfaces(const ColorImage& image,
                                                                        const std::string& name) {
@@ -75,6 +78,36 @@ void check_contained(const std::string& model, const std::string& file) {
         file));
 }
 
+// Every file a model read, by path: a checksum of its bytes, or none where it
+// was missing or refused. The in-process cache keys a mesh by them, so that
+// a rewritten .bin or texture is read again (Python renders in one process).
+using FilesRead = std::map<std::string, std::optional<uint64_t>>;
+
+// The bytes of a file a model reads, recorded in `read`.
+std::string read_model_file(const std::string& file, const std::string& what, FilesRead& read) {
+  try {
+    std::string bytes = read_file(file, what, kMaxModelFileBytes);
+    read[file] = checksum64(bytes);
+    return bytes;
+  } catch (...) {
+    read[file] = std::nullopt;
+    throw;
+  }
+}
+
+// Whether every file still reads as it did (a missing one still missing).
+bool unchanged(const FilesRead& read) {
+  for (const auto& [file, sum] : read) {
+    std::optional<uint64_t> now;
+    try {
+      now = checksum64(read_file(file, "model file", kMaxModelFileBytes));
+    } catch (const Error&) {
+    }
+    if (now != sum) return false;
+  }
+  return true;
+}
+
 // Every file assimp opens (the model, its .bin buffers, .mtl libraries)
 // passes through read_file: a regular file within the size limit, so that a
 // FIFO or a device named by a model blocks nothing, and, but for the model
@@ -82,7 +115,7 @@ void check_contained(const std::string& model, const std::string& file) {
 // error message.
 class CheckedFiles : public Assimp::IOSystem {
  public:
-  explicit CheckedFiles(std::string model) : model_(std::move(model)) {}
+  CheckedFiles(std::string model, FilesRead& read) : model_(std::move(model)), read_(read) {}
   // Anything that exists (a FIFO too) is opened, so that Open refuses it by name.
   bool Exists(const char* file) const override {
     std::error_code e;
@@ -94,7 +127,11 @@ class CheckedFiles : public Assimp::IOSystem {
     try {
       if (std::filesystem::path(file) != std::filesystem::path(model_))
         check_contained(model_, file);
-      const std::string bytes = read_file(file, "model file", kMaxModelFileBytes);
+      const std::string bytes = read_model_file(file, "model file", read_);
+      // A glTF's node graph and sizes, before assimp recurses or allocates.
+      if (std::filesystem::path(file) == std::filesystem::path(model_) &&
+          looks_like_gltf(bytes, file))
+        prescan_gltf(bytes, model_);
       auto* copy = new uint8_t[bytes.size() + 1];
       std::copy(bytes.begin(), bytes.end(), copy);
       return new Assimp::MemoryIOStream(copy, bytes.size(), true);
@@ -108,6 +145,7 @@ class CheckedFiles : public Assimp::IOSystem {
 
  private:
   std::string model_;
+  FilesRead& read_;
 };
 
 // A texture file's bytes: JPEG or PNG, told apart by their first bytes.
@@ -123,8 +161,8 @@ ColorImage decode_image(std::string_view bytes, const std::string& path, const s
 class Reader {
  public:
   // gltf: a glTF file (linear colours, and its importer's camera conventions).
-  Reader(const aiScene& scene, const std::string& path, bool gltf)
-      : scene_(scene), path_(path), linear_(gltf), gltf_(gltf) {}
+  Reader(const aiScene& scene, const std::string& path, bool gltf, FilesRead& read)
+      : scene_(scene), path_(path), linear_(gltf), gltf_(gltf), read_(read) {}
 
   std::shared_ptr<Mesh> read() {
     auto mesh = std::make_shared<Mesh>();
@@ -212,7 +250,7 @@ class Reader {
       } catch (const Error& e) {
         throw Error(fmt::format("{} '{}': {}", what, ref, e.what()));
       }
-      image = decode_image(read_file(file.string(), what, kMaxModelFileBytes), file.string(), what,
+      image = decode_image(read_model_file(file.string(), what, read_), file.string(), what,
                            texels_left());
     }
     texels_ += image.rgb.size() / 3;
@@ -313,6 +351,7 @@ class Reader {
   size_t texels_left() const {
     return kMaxMeshTextureTexels - std::min(texels_, kMaxMeshTextureTexels);
   }
+  FilesRead& read_;
   std::map<std::string, ColorImage> cache_;
   size_t texels_ = 0;  // in the textures decoded so far
   std::map<std::string, aiMatrix4x4> transforms_;
@@ -322,7 +361,7 @@ class Reader {
 
 namespace {
 
-std::shared_ptr<const Mesh> load_mesh(const std::string& path);
+std::shared_ptr<const Mesh> load_mesh(const std::string& path, FilesRead& read);
 
 }  // namespace
 
@@ -330,33 +369,38 @@ std::shared_ptr<const Mesh> read_mesh(const std::string& path) {
   std::error_code missing;
   if (!std::filesystem::exists(path, missing))
     throw Error(fmt::format("model '{}': no such file", path));
-  // The meshes read last, by path, size and modification time (a few are
-  // kept, so that a study's check of its scenes and its run share them).
+  // The meshes read last, by path and the contents of every file each read
+  // (the model, its buffers, materials and textures; a few are kept, so that
+  // a study's check of its scenes and its run share them). Each file is read
+  // again to be compared, which also binds a checkpoint to it
+  // (core/read_file.h); only the parsing is saved.
+  struct Kept {
+    std::string path;
+    FilesRead read;
+    std::shared_ptr<const Mesh> mesh;
+  };
   constexpr size_t kKept = 4;
   static std::mutex lock;
-  static std::vector<std::pair<std::string, std::shared_ptr<const Mesh>>> kept;
-  std::error_code e;
-  const auto size =
-      std::filesystem::is_regular_file(path, e) ? std::filesystem::file_size(path, e) : 0;
-  const auto time = std::filesystem::last_write_time(path, e).time_since_epoch().count();
-  const std::string key = fmt::format("{}\n{}\n{}", path, size, time);
+  static std::vector<Kept> kept;
   {
     std::lock_guard<std::mutex> hold(lock);
-    for (const auto& [k, mesh] : kept)
-      if (k == key) return mesh;
+    for (const Kept& k : kept)
+      if (k.path == path && unchanged(k.read)) return k.mesh;
   }
-  std::shared_ptr<const Mesh> mesh = load_mesh(path);
+  FilesRead read;
+  std::shared_ptr<const Mesh> mesh = load_mesh(path, read);
   std::lock_guard<std::mutex> hold(lock);
-  kept.emplace_back(key, mesh);
+  std::erase_if(kept, [&](const Kept& k) { return k.path == path; });
+  kept.push_back({path, std::move(read), mesh});
   if (kept.size() > kKept) kept.erase(kept.begin());
   return mesh;
 }
 
 namespace {
 
-std::shared_ptr<const Mesh> load_mesh(const std::string& path) {
+std::shared_ptr<const Mesh> load_mesh(const std::string& path, FilesRead& read) {
   Assimp::Importer importer;
-  auto* files = new CheckedFiles(path);  // the importer owns it
+  auto* files = new CheckedFiles(path, read);  // the importer owns it
   importer.SetIOHandler(files);
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                               aiPrimitiveType_POINT | aiPrimitiveType_LINE);
@@ -364,7 +408,10 @@ std::shared_ptr<const Mesh> load_mesh(const std::string& path) {
       path, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
   if (!scene) {
     const std::string why = importer.GetErrorString();
-    if (!files->refusal.empty()) throw Error(fmt::format("model '{}': {}", path, files->refusal));
+    if (!files->refusal.empty()) {
+      const std::string named = fmt::format("model '{}': ", path);  // the prescan names it already
+      throw Error(files->refusal.starts_with(named) ? files->refusal : named + files->refusal);
+    }
     if (why.find("No meshes remaining") != std::string::npos)  // points and lines were dropped
       throw Error(
           fmt::format("model '{}': it has no triangles (only points, lines or nothing)", path));
@@ -376,7 +423,7 @@ std::shared_ptr<const Mesh> load_mesh(const std::string& path) {
   const bool gltf = ext == ".gltf" || ext == ".glb" || ext == ".GLTF" || ext == ".GLB";
   std::shared_ptr<Mesh> mesh;
   try {
-    mesh = Reader(*scene, path, gltf).read();
+    mesh = Reader(*scene, path, gltf, read).read();
   } catch (const std::bad_alloc&) {
     throw Error(fmt::format("model '{}': too large to hold in memory", path));
   }

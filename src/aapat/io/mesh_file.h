@@ -24,9 +24,11 @@ inline constexpr size_t kMaxModelFileBytes = size_t{1} << 30;
 
 // Throws Error naming the file and the problem: not a file, too large, a
 // format or content assimp refuses, no triangles, an index out of range, a
-// value that is not finite, or a limit of render/mesh.h exceeded. A file
-// read again in the same process with the same size and modification time
-// is the mesh already read (a study resolves each view more than once).
+// value that is not finite, or a limit of render/mesh.h exceeded. A model
+// read again in the same process whose files (the model, its buffers,
+// materials and textures) all hold the same bytes is the mesh already read
+// (a study resolves each view more than once); a file rewritten, whatever
+// its size and time, is read anew.
 std::shared_ptr<const Mesh> read_mesh(const std::string& path);
 
 }  // namespace aapat

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -218,6 +219,43 @@ TEST(MeshFile, ReadsOnlyFilesInsideItsFolder) {
   EXPECT_NO_THROW(read_mesh(with_buffer("../outside.bin")));
   ::unsetenv("AAPAT_TRUST_MODELS");
   fs::remove_all(top);
+}
+
+// The cache keys a model by the contents of every file it read: a .bin
+// rewritten with the same size and modification time is read anew, and an
+// unchanged model is the mesh already read.
+TEST(MeshFile, ARewrittenBufferIsReadAgain) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("aapat-stale-{}", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path from = fs::path(model("glTF2/BoxTextured-glTF/BoxTextured.gltf")).parent_path();
+  for (const char* f : {"BoxTextured.gltf", "BoxTextured0.bin", "CesiumLogoFlat.png"})
+    fs::copy_file(from / f, dir / f);
+  const std::string path = (dir / "BoxTextured.gltf").string();
+  const std::shared_ptr<const Mesh> first = read_mesh(path);
+  EXPECT_EQ(read_mesh(path), first);  // unchanged: the same mesh
+  // Scale every float of the buffer's positions: the same size, the same time.
+  const fs::path bin = dir / "BoxTextured0.bin";
+  const auto time = fs::last_write_time(bin);
+  std::string bytes;
+  {
+    std::ifstream in(bin, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  std::fstream out(bin, std::ios::binary | std::ios::in | std::ios::out);
+  out.seekp(288);
+  for (size_t k = 288; k < 576; k += 4) {  // the positions: bytes 288 to 576
+    float v = 0;
+    std::memcpy(&v, &bytes[k], 4);
+    v *= 2;
+    out.write(reinterpret_cast<const char*>(&v), 4);
+  }
+  out.close();
+  fs::last_write_time(bin, time);
+  const std::shared_ptr<const Mesh> second = read_mesh(path);
+  EXPECT_NE(second, first);
+  EXPECT_NE(content_hash(*second), content_hash(*first));
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "aapat/core/read_file.h"
 #include "aapat/generate/maximal_poisson.h"
 #include "aapat/generate/point_generators.h"
+#include "aapat/io/gltf_prescan.h"
 #include "aapat/io/mesh_file.h"
 #include "aapat/io/png_image.h"
 #include "aapat/io/point_set_file.h"
@@ -179,12 +180,19 @@ std::vector<Limit> make_table() {
                    "regular file, checked before it is read); its buffers, materials and "
                    "textures inside the model's folder (`AAPAT_TRUST_MODELS=1` lifts it for "
                    "trusted content); {} triangles; {} vertices; {} "
-                   "materials; {} texels in all its textures (each checked from its PNG or JPEG "
-                   "header); nodes nested at most 256 deep; every position, texture coordinate "
-                   "and colour finite",
+                   "materials; {} texels in all its textures, each at most {} a side (each "
+                   "checked from its PNG or JPEG header); nodes nested at most {} deep; every "
+                   "position, texture coordinate and colour finite. A glTF or GLB is read "
+                   "first without recursion and refused before assimp runs when its JSON nests "
+                   "past {}, its node graph has a cycle, nests past {} or expands to more than "
+                   "{} nodes (a node listed twice as a child is copied), or an accessor holds "
+                   "more than {} elements (its sparse part included)",
                    mib(kMaxModelFileBytes), grouped(kMaxMeshTriangles), grouped(kMaxMeshVertices),
-                   grouped(kMaxMeshMaterials), grouped(kMaxMeshTextureTexels)),
-       "`kMaxModelFileBytes`, `io/mesh_file.h`; `kMaxMeshTriangles` etc., `render/mesh.h`"},
+                   grouped(kMaxMeshMaterials), grouped(kMaxMeshTextureTexels), kMaxTextureSide,
+                   kMaxModelNodeDepth, kMaxJsonDepth, kMaxModelNodeDepth, grouped(kMaxModelNodes),
+                   grouped(kMaxAccessorCount)),
+       "`kMaxModelFileBytes`, `io/mesh_file.h`; `kMaxMeshTriangles` etc., `render/mesh.h`; "
+       "`kMaxModelNodes` etc., `io/gltf_prescan.h`"},
       {"adaptive refinement",
        "1 to 5 initial samples per pixel; `--threshold` in [0, 1] ([0, 1/4] for variance); "
        "`--max-depth` 1 to 8; `--per-square` 1 to 16; `--max-samples` from the initial count "
