@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <stdexcept>
 #include <string_view>
 
@@ -128,8 +129,10 @@ std::string file_digest(std::string_view arg) {
 
 // The command a checkpoint belongs to: the arguments less those that do not
 // change a result (--threads, --checkpoint, --fresh-checkpoint,
-// --progress-lines), each file argument's content digest, and the version.
-std::string fingerprint(int argc, const char* const* argv) {
+// --progress-lines), each input file argument's content digest, and the
+// version. The files the command writes (`outputs`) are named but not read:
+// an old output deleted or rewritten is the same command.
+std::string fingerprint(int argc, const char* const* argv, const std::set<std::string>& outputs) {
   std::string text = "aapat " AAPAT_VERSION;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
@@ -142,7 +145,10 @@ std::string fingerprint(int argc, const char* const* argv) {
       continue;
     text += " ";
     text += shell_quoted(arg);
-    text += file_digest(arg);
+    const size_t eq = arg.find('=');
+    const std::string_view value =
+        arg.starts_with("--") && eq != std::string_view::npos ? arg.substr(eq + 1) : arg;
+    if (!outputs.contains(std::string(value))) text += file_digest(arg);
   }
   return text;
 }
@@ -178,17 +184,27 @@ constexpr std::string_view kOutputOptions[] = {
     "output", "csv",   "svg",       "html",      "gif",           "map",     "table",
     "curve",  "error", "reference", "histogram", "histogram-svg", "profile", "refinement-map"};
 
+bool is_output_option(const CLI::Option& o) {
+  for (const std::string_view name : kOutputOptions)
+    if (o.check_lname(std::string(name))) return true;
+  return false;
+}
+
 // Every output file the command line names can be written: checked before
 // any work, so that a missing folder is not found after an hour of it.
 void check_output_targets(const CLI::App& command) {
   for (const CLI::Option* o : given_options(command)) {
-    bool output = false;
-    for (const std::string_view name : kOutputOptions)
-      output = output || o->check_lname(std::string(name));
-    if (!output) continue;
+    if (!is_output_option(*o)) continue;
     for (const std::string& value : o->results())
       if (!value.empty() && value != "-") check_file_target(value, o->get_name());
   }
+}
+
+// The output files the command line names, as given.
+void add_output_files(const CLI::App& command, std::set<std::string>& files) {
+  for (const CLI::Option* o : given_options(command))
+    if (is_output_option(*o))
+      for (const std::string& value : o->results()) files.insert(value);
 }
 
 // The command word of a command line that CLI11 could not parse: the first
@@ -350,7 +366,11 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
     if (!checkpoint_path.empty() && items.root()) {
       if (fresh_checkpoint && std::filesystem::is_regular_file(checkpoint_path))
         std::filesystem::remove(checkpoint_path);
-      checkpoint = std::make_unique<Checkpoint>(checkpoint_path, fingerprint(argc, argv));
+      std::set<std::string> output_files;
+      for (const auto& [sub, action] : commands)
+        if (sub->parsed()) add_output_files(*sub, output_files);
+      checkpoint =
+          std::make_unique<Checkpoint>(checkpoint_path, fingerprint(argc, argv, output_files));
     }
     if (checkpoint && checkpoint->restored() > 0)
       err << fmt::format("aapat: resuming from {}: {} work items done\n", checkpoint_path,

@@ -366,6 +366,29 @@ TEST(Hardening, ACheckpointKnowsWhereEachArgumentEnds) {
   fs::remove(checkpoint);
 }
 
+// A checkpoint belongs to what its command reads, not to what it writes: the
+// same command line after its old output was deleted (or rewritten) resumes.
+TEST(Hardening, ACheckpointIgnoresItsOwnOutputs) {
+  const std::string checkpoint = temp_path("outputs.ckpt"), csv = temp_path("out-pattern.json");
+  fs::remove(checkpoint);
+  fs::remove(csv);
+  const std::vector<std::string> command = {
+      "--checkpoint", checkpoint, "optimize", "--family", "P(1,1,2)",
+      "--starts",     "2",        "-o",       csv,        "--json"};
+  const CliRun first = run(command);
+  ASSERT_EQ(first.code, kExitOk) << first.err;
+  const CliRun again = run(command);  // the output exists now: still the same command
+  ASSERT_EQ(again.code, kExitOk) << again.err;
+  EXPECT_EQ(again.out, first.out);
+  fs::remove(csv);
+  const CliRun after_delete = run(command);
+  ASSERT_EQ(after_delete.code, kExitOk) << after_delete.err;
+  EXPECT_EQ(after_delete.out, first.out);
+  EXPECT_TRUE(fs::exists(csv));
+  fs::remove(checkpoint);
+  fs::remove(csv);
+}
+
 // A checkpoint belongs to what its command reads too: after an input file
 // named on the command line changes, the same command line does not resume
 // the old run's results (the acuity table edited between two optimizations).
