@@ -21,6 +21,7 @@
 #include "aapat/core/metric_simd.h"
 #include "aapat/core/objective.h"
 #include "aapat/core/pattern_edit.h"
+#include "aapat/core/text.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/generate/point_generators.h"
 #include "aapat/io/aapat_catalog.h"
@@ -128,8 +129,31 @@ std::string info() {
                        {{"view_size", kMaxPageViewSize},
                         {"points", kMaxPagePoints},
                         {"spectrum_size", kMaxPageSpectrumSize},
-                        {"starts", kMaxPageStarts}}},
+                        {"starts", kMaxPageStarts},
+                        {"link_bytes", kMaxPageLinkBytes}}},
                       {"registry", registry_json()}};
+  });
+}
+
+// A link's objective and scene read by the library's parsers, so that the
+// page sets its controls from the same reading as every other face:
+// {objective?, scene?} -> {objective: objective_json, scene_name, and a
+// half-plane's angle and offset}.
+std::string read_link(const std::string& request) {
+  return answer([&] {
+    const Json r = parse_request(request);
+    JsonObject out = JsonObject::object();
+    if (r.contains("objective")) out["objective"] = objective_json(objective_of_request(r));
+    if (r.contains("scene")) {
+      const std::string spec = field<std::string>(r, "scene", "");
+      const Scene scene = make_scene(spec, 8, 8);  // the library's parser: any fault named
+      out["scene_name"] = std::string(split(spec, ':')[0]);
+      if (const auto* h = std::get_if<HalfPlaneScene>(&scene.shape)) {
+        out["angle"] = h->angle_deg;
+        out["offset"] = h->offset;
+      }
+    }
+    return out;
   });
 }
 
@@ -345,6 +369,7 @@ std::string sequence(const std::string& request) {
 EMSCRIPTEN_BINDINGS(aapat_explorer) {
   using namespace aapat::web;
   emscripten::function("info", &info);
+  emscripten::function("readLink", &read_link);
   emscripten::function("loadPattern", &load_pattern);
   emscripten::function("evaluate", &evaluate);
   emscripten::function("moveSample", &move);

@@ -361,30 +361,44 @@
     const tab = document.querySelector('.tab.active').dataset.tab;
     if (tab !== 'pattern') q.set('tab', tab);
     if (sceneSpec() !== 'halfplane:angle=30,offset=0') q.set('scene', sceneSpec());
-    history.replaceState(null, '', '#' + q.toString());
+    const link = q.toString();
+    if (link.length > state.info.limits.link_bytes) {
+      // Past what a browser opens: the link keeps the rest, the design goes to a file.
+      q.delete('design');
+      history.replaceState(null, '', '#' + q.toString());
+      showMessage(`this design's link would be ${link.length} characters, past the limit of ` +
+        `${state.info.limits.link_bytes} (docs/limits.md): save it as a file to share it`);
+      return;
+    }
+    history.replaceState(null, '', '#' + link);
   }
-  function setObjective(text) {
+  // Sets the objective controls from the library's reading of an objective
+  // (readLink's objective_json): a registered name, or its three components.
+  function setObjective(parsed) {
     const names = state.info.objectives.map((o) => o.name);
-    if (names.includes(text)) {
-      $('objective').value = text;
+    if (names.includes(parsed.objective)) {
+      $('objective').value = parsed.objective;
       $('custom-objective').hidden = true;
       return;
     }
     $('objective').value = 'custom';
     $('custom-objective').hidden = false;
-    for (const part of text.trim().split(/\s+/)) {
-      const [k, v] = part.split('=');
-      if (k === 'filter') {
-        if (![...$('filter').options].some((o) => o.value === v)) $('filter').add(new Option(v, v));
-        $('filter').value = v;
-      } else if (k === 'acuity') $('acuity').value = v;
-      else if (k === 'norm') $('norm').value = v;
+    if (![...$('filter').options].some((o) => o.value === parsed.filter)) {
+      $('filter').add(new Option(parsed.filter, parsed.filter));
     }
+    $('filter').value = parsed.filter;
+    $('acuity').value = parsed.acuity;
+    $('norm').value = parsed.norm;
   }
   // Returns false (with the message shown) when the link does not parse.
   function readHash() {
     const text = location.hash.replace(/^#/, '');
     if (!text) return false;
+    const limit = state.info.limits.link_bytes;
+    if (text.length > limit) {
+      showMessage(`link: ${text.length} characters, past the limit of ${limit} (docs/limits.md); open the design as a file`);
+      return false;
+    }
     let q;
     try {
       q = new URLSearchParams(text);
@@ -392,27 +406,40 @@
       showMessage(`link: '${text}' does not parse`);
       return false;
     }
+    const seen = new Set();
     for (const key of q.keys()) {
       if (!kHashKeys.includes(key)) {
         showMessage(`link: unknown key '${key}' (known: ${kHashKeys.join(', ')})`);
         return false;
       }
-    }
-    if (q.has('objective')) {
-      const o = q.get('objective');
-      const check = ask('evaluate', { pattern: 'msaa-1', objective: o });
-      if (check.error) {
-        showMessage(`link: ${check.error}`);
+      if (seen.has(key)) {
+        showMessage(`link: '${key}' is given more than once`);
         return false;
       }
-      setObjective(o);
+      seen.add(key);
     }
+    // The objective and the scene are read by the library's parsers (the
+    // CLI's), never split here: what the page writes, it reads back.
+    const request = {};
+    if (q.has('objective')) request.objective = q.get('objective');
+    if (q.has('scene')) request.scene = q.get('scene');
+    const parsed = ask('readLink', request);
+    if (parsed.error) {
+      showMessage(`link: ${parsed.error}`);
+      return false;
+    }
+    if (parsed.objective) setObjective(parsed.objective);
     if (q.has('scene')) {
       const s = q.get('scene');
-      const m = /^halfplane:angle=([-0-9.e]+),offset=0$/.exec(s);
-      if (m) { $('scene').value = 'halfplane:angle=30,offset=0'; $('edge-angle').value = m[1]; }
-      else if ([...$('scene').options].some((o) => o.value === s)) $('scene').value = s;
-      else { showMessage(`link: scene '${s}' is not one of the page's views`); return false; }
+      if (parsed.scene_name === 'halfplane' && parsed.offset === 0) {
+        $('scene').value = 'halfplane:angle=30,offset=0';
+        $('edge-angle').value = String(parsed.angle);
+      } else if ([...$('scene').options].some((o) => o.value === s)) {
+        $('scene').value = s;
+      } else {
+        showMessage(`link: scene '${s}' is not one of the page's views`);
+        return false;
+      }
     }
     if (q.has('tab')) selectTab(q.get('tab'));
     if (q.has('pattern')) {

@@ -9,8 +9,11 @@
 //   - every seeded point generator and a seeded optimization: module == CLI, bit for bit;
 //   - an optimization run to the end in the worker == `aapat optimize` with the same seed;
 //   - cancel stops it and the page keeps working;
-//   - a bad upload, a NaN weight, a hash that does not parse and a pattern over
-//     the limits each show a message naming the problem;
+//   - every objective form in a link: the CLI's E2, and the same again from the
+//     link the page writes;
+//   - a bad upload, a NaN weight, a hash that does not parse, a link's bad
+//     scene, a key given twice, a link too long and a pattern over the limits
+//     each show a message naming the problem;
 //   - no console message of any kind, no uncaught error.
 // Usage: node explorer.test.mjs PAGE.html AAPAT_BINARY MODULE.js [--bench] [--screenshot PNG]
 import { execFileSync } from 'node:child_process';
@@ -110,6 +113,32 @@ try {
   const text = await page.$eval('#e2', (e) => e.textContent);
   const la = cli('eval', 'flipquad', '--objective', 'laine-aila', '--json').rows[0].e2;
   check(text === '0.3643' && near(await e2Shown(), la, 1e-12), `#pattern=flipquad&objective=laine-aila shows ${text} (Laine & Aila Table 2: 0.3643)`);
+
+  // Every objective form a link can hold: the page shows the CLI's E2 for it,
+  // and the link the page writes reopens the same objective (read by the
+  // library's parser, never split on '=' in the page).
+  for (const o of ['laine-aila norm=2', 'recommended norm=4', 'filter=lanczos:lobes=2 acuity=uniform:step=1 norm=2',
+    'norm=inf', 'filter=gaussian acuity=laine-aila']) {
+    await open('#pattern=flipquad&objective=' + encodeURIComponent(o));
+    const native = cli('eval', 'flipquad', '--objective', o, '--json').rows[0].e2;
+    const first = await e2Shown();
+    const m0 = await message();
+    const written = await page.evaluate(() => location.hash);
+    await open(written);
+    const again = await e2Shown();
+    check(m0 === '' && (await message()) === '' && near(first, native, 1e-12) && again === first,
+      `objective '${o}' in a link: E2 ${first.toFixed(6)} (CLI ${native.toFixed(6)}), and again from the link the page wrote (${decodeURIComponent(written)})`);
+  }
+  await open('#pattern=flipquad&scene=halfplane:angle=e,offset=0');
+  const badAngle = await message();
+  check(/^link: /.test(badAngle) && /angle/.test(badAngle) && /not a finite number/.test(badAngle), `a link's scene with angle 'e': "${badAngle}"`);
+  await open('#pattern=flipquad&pattern=rgss');
+  const twice = await message();
+  check(twice === "link: 'pattern' is given more than once", `a key given twice: "${twice}"`);
+  const limit = info.limits.link_bytes;
+  await open('#design=' + 'x'.repeat(limit));
+  const long = await message();
+  check(new RegExp(`past the limit of ${limit}`).test(long), `a link past ${limit} characters: "${long.slice(0, 100)}"`);
 
   // A drag with the mouse; the CLI evaluates the pattern the page shows.
   await open('#pattern=msaa-16');

@@ -267,10 +267,12 @@ std::vector<Limit> make_table() {
        "`kMaxJsonDepth`, `core/json_depth.h`"},
       {"the explorer page",
        fmt::format("view {} pixels a side, {} points, spectrum {} a side, {} starts, {} iterations "
-                   "a start, {} reference samples, seeds 0 to {}",
+                   "a start, {} reference samples, seeds 0 to {}; a link of at most {} characters "
+                   "after '#' (a larger design is saved as a file)",
                    kMaxPageViewSize, grouped(kMaxPagePoints), kMaxPageSpectrumSize,
                    grouped(kMaxPageStarts), grouped(kMaxPageIterations),
-                   grouped(kMaxPageReferenceSamples), grouped(kMaxPageSeed)),
+                   grouped(kMaxPageReferenceSamples), grouped(kMaxPageSeed),
+                   grouped(kMaxPageLinkBytes)),
        "`registry/page_limits.h`"},
       {"upscaler phases (`sequence phases --ratio`)", "ratio 1 to 16",
        "`upscaler_phase_count`, `temporal/sequence/render_scale.h`"},

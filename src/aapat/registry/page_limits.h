@@ -12,5 +12,9 @@ inline constexpr int kMaxPageStarts = 1024;            // an optimization's star
 inline constexpr int kMaxPageIterations = 1000000;     // iterations per start
 inline constexpr int kMaxPageReferenceSamples = 4096;  // reference samples per pixel
 inline constexpr int kMaxPageSeed = 2147483647;        // seeds a JavaScript number holds exactly
+// A link's characters after '#': below Chromium's 2 MB address limit, so that
+// a link the page writes is one a browser opens. A design past it is saved
+// as a file instead, and a longer link is refused with a message.
+inline constexpr int kMaxPageLinkBytes = 1 << 20;
 
 }  // namespace aapat
