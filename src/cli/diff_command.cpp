@@ -6,6 +6,7 @@
 #include <memory>
 #include <ostream>
 
+#include "aapat/core/read_file.h"
 #include "aapat/io/flip_map.h"
 #include "aapat/io/png_image.h"
 #include "aapat/study/study_json.h"
@@ -29,8 +30,18 @@ std::string number(const JsonObject& v, const char* format) {
 void run_diff(const DiffOptions& o, std::ostream& out) {
   if (!o.map.empty() && !o.map.ends_with(".png"))
     throw Error(fmt::format("--map: '{}' must end in .png", o.map));
-  const PngColor reference = read_png_color(o.reference, "reference image");
-  const PngColor test = read_png_color(o.test, "test image");
+  // Both headers first: images of two sizes are refused, naming both files,
+  // before either is decoded.
+  const std::string reference_bytes = read_file(o.reference, "reference image", kMaxPngFileBytes);
+  const std::string test_bytes = read_file(o.test, "test image", kMaxPngFileBytes);
+  const auto rs = png_dimensions(reference_bytes), ts = png_dimensions(test_bytes);
+  if (rs && ts && *rs != *ts)
+    throw Error(fmt::format(
+        "the reference image '{}' is {}x{} pixels and the test image '{}' is {}x{}: they must "
+        "be the same size",
+        o.reference, rs->first, rs->second, o.test, ts->first, ts->second));
+  const PngColor reference = decode_png_color(reference_bytes, o.reference, "reference image");
+  const PngColor test = decode_png_color(test_bytes, o.test, "test image");
   auto note_alpha = [](const PngColor& image, const std::string& path) {
     if (image.had_alpha)
       warnings() << fmt::format(

@@ -562,7 +562,14 @@ TEST(Hardening, DiffRefusesWhatItCannotCompareAndWritesNoMap) {
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string truncated = write("truncated.png", bytes.substr(0, bytes.size() / 2));
   expect_error(run({"diff", ref, dir + "zoneplate-ref.png", "--map", map}), kExitError,
-               "the reference is 48x40 pixels and the test 64x48");
+               "the reference image '" + ref + "' is 48x40 pixels and the test image '" + dir +
+                   "zoneplate-ref.png' is 64x48: they must be the same size");
+  // From the headers, before decoding: a truncated image of another size is
+  // refused for its size.
+  std::ifstream zp(dir + "zoneplate-ref.png", std::ios::binary);
+  const std::string zone((std::istreambuf_iterator<char>(zp)), std::istreambuf_iterator<char>());
+  const std::string cut = write("cut-zoneplate.png", zone.substr(0, 100));
+  expect_error(run({"diff", ref, cut}), kExitError, "is 64x48: they must be the same size");
   expect_error(run({"diff", ref, dir + "README.md", "--map", map}), kExitError,
                "test image '" + dir + "README.md': not a PNG");
   expect_error(run({"diff", ref, truncated, "--map", map}), kExitError, "cannot decode it");

@@ -24,6 +24,7 @@
 #include "aapat/core/read_file.h"
 #include "aapat/io/gltf_prescan.h"
 #include "aapat/io/jpeg_image.h"
+#include "aapat/io/ply_prescan.h"
 #include "aapat/io/png_image.h"
 #include "aapat/render/texture.h"
 
@@ -128,10 +129,11 @@ class CheckedFiles : public Assimp::IOSystem {
       if (std::filesystem::path(file) != std::filesystem::path(model_))
         check_contained(model_, file);
       const std::string bytes = read_model_file(file, "model file", read_);
-      // A glTF's node graph and sizes, before assimp recurses or allocates.
-      if (std::filesystem::path(file) == std::filesystem::path(model_) &&
-          looks_like_gltf(bytes, file))
-        prescan_gltf(bytes, model_);
+      // A glTF's node graph, a PLY's counts: checked before assimp recurses or allocates.
+      if (std::filesystem::path(file) == std::filesystem::path(model_)) {
+        if (looks_like_gltf(bytes, file)) prescan_gltf(bytes, model_);
+        if (looks_like_ply(bytes)) prescan_ply(bytes, model_);
+      }
       auto* copy = new uint8_t[bytes.size() + 1];
       std::copy(bytes.begin(), bytes.end(), copy);
       return new Assimp::MemoryIOStream(copy, bytes.size(), true);
@@ -427,6 +429,10 @@ std::shared_ptr<const Mesh> load_mesh(const std::string& path, FilesRead& read) 
   } catch (const std::bad_alloc&) {
     throw Error(fmt::format("model '{}': too large to hold in memory", path));
   }
+  // A file the model names that was refused (a device as its material
+  // library, a file too large) and that the model could do without.
+  if (!files->refusal.empty())
+    mesh->warnings.push_back(fmt::format("a file it names was not read: {}", files->refusal));
   validate(*mesh, fmt::format("model '{}'", path));
   mesh->hash = content_hash(*mesh);
   return mesh;

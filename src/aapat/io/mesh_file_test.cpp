@@ -258,5 +258,41 @@ TEST(MeshFile, ARewrittenBufferIsReadAgain) {
   fs::remove_all(dir);
 }
 
+// PLY: counts past the limits are refused from the header (assimp allocated
+// them first: std::bad_alloc), and an ASCII face whose list count is not the
+// number of indices on its line is named (assimp read on into the next lines).
+TEST(MeshFile, PlyCountsAndFaceListsAreChecked) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("aapat-ply-{}", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto ply = [&](const std::string& name, const std::string& vertices,
+                       const std::string& face) {
+    std::ofstream(dir / name) << "ply\nformat ascii 1.0\nelement vertex " << vertices
+                              << "\nproperty float x\nproperty float y\nproperty float z\n"
+                                 "element face 1\nproperty list uchar int vertex_indices\n"
+                                 "end_header\n0 0 0\n1 0 0\n0 1 0\n"
+                              << face << "\n";
+    return (dir / name).string();
+  };
+  EXPECT_EQ(read_mesh(ply("good.ply", "3", "3 0 1 2"))->triangles.size(), 1u);
+  const std::string liar = ply("liar.ply", "3", "255 0 1 2");
+  EXPECT_EQ(testing::error_message([&] { read_mesh(liar); }),
+            "model '" + liar + "': face 0 lists 255 indices but its line gives 3");
+  const std::string huge = ply("huge.ply", "3000000000000", "3 0 1 2");
+  EXPECT_EQ(
+      testing::error_message([&] { read_mesh(huge); }),
+      "model '" + huge + "': 3000000000000 vertex elements; at most 12000000 (docs/limits.md)");
+  // An OBJ whose material library is a device: the model reads, with a warning.
+  std::ofstream(dir / "dev.obj") << "mtllib /dev/zero\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  ::setenv("AAPAT_TRUST_MODELS", "1", 1);  // past the folder rule, to the device itself
+  const std::shared_ptr<const Mesh> dev = read_mesh((dir / "dev.obj").string());
+  ::unsetenv("AAPAT_TRUST_MODELS");
+  ASSERT_EQ(dev->warnings.size(), 1u);
+  EXPECT_NE(dev->warnings[0].find("a file it names was not read"), std::string::npos)
+      << dev->warnings[0];
+  EXPECT_NE(dev->warnings[0].find("/dev/zero"), std::string::npos) << dev->warnings[0];
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace aapat

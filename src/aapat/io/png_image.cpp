@@ -87,7 +87,21 @@ void write_png_image(const std::string& path, const Image& image) {
 PngColor read_png_color(const std::string& path, const std::string& what) {
   // A PNG of kMaxColorImagePixels compresses to far less than this; the
   // header's size is checked before anything is decoded.
-  return decode_png_color(read_file(path, what, size_t{1} << 30), path, what, kColorImageLimits);
+  return decode_png_color(read_file(path, what, kMaxPngFileBytes), path, what, kColorImageLimits);
+}
+
+std::optional<std::pair<uint32_t, uint32_t>> png_dimensions(std::string_view bytes) {
+  // The signature, then the IHDR chunk: length, "IHDR", width, height (big-endian).
+  if (bytes.size() < 24 ||
+      png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) != 0 ||
+      bytes.substr(12, 4) != "IHDR")
+    return std::nullopt;
+  const auto be32 = [&](size_t at) {
+    uint32_t v = 0;
+    for (size_t k = 0; k < 4; ++k) v = (v << 8) | static_cast<unsigned char>(bytes[at + k]);
+    return v;
+  };
+  return std::pair{be32(16), be32(20)};
 }
 
 namespace {

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "aapat/analyze/color_image.h"
@@ -50,6 +52,12 @@ struct PngColor {
 PngColor read_png_color(const std::string& path, const std::string& what);
 // The same from the file's bytes (a texture embedded in a model); `path`
 // names them in errors.
+// A PNG's width and height from its header, without decoding; none when the
+// bytes do not start as a PNG does.
+std::optional<std::pair<uint32_t, uint32_t>> png_dimensions(std::string_view bytes);
+// The largest PNG file read_png_color reads (a PNG of kMaxColorImagePixels
+// compresses to far less).
+inline constexpr size_t kMaxPngFileBytes = size_t{1} << 30;
 // `limits` the size it may have (a model's texture: kMaxTextureSide).
 PngColor decode_png_color(std::string_view bytes, const std::string& path, const std::string& what,
                           const ImageLimits& limits = kColorImageLimits);

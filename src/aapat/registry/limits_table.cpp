@@ -186,7 +186,9 @@ std::vector<Limit> make_table() {
                    "first without recursion and refused before assimp runs when its JSON nests "
                    "past {}, its node graph has a cycle, nests past {} or expands to more than "
                    "{} nodes (a node listed twice as a child is copied), or an accessor holds "
-                   "more than {} elements (its sparse part included)",
+                   "more than {} elements (its sparse part included). A PLY's vertex and face "
+                   "counts are checked from its header, and an ASCII face's list against its "
+                   "line, before assimp runs",
                    mib(kMaxModelFileBytes), grouped(kMaxMeshTriangles), grouped(kMaxMeshVertices),
                    grouped(kMaxMeshMaterials), grouped(kMaxMeshTextureTexels), kMaxTextureSide,
                    kMaxModelNodeDepth, kMaxJsonDepth, kMaxModelNodeDepth, grouped(kMaxModelNodes),
