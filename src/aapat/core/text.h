@@ -49,6 +49,16 @@ inline std::string one_line(std::string_view text) {
   return out;
 }
 
+// The longest prefix of `text` of at most `max_bytes` that ends on a UTF-8
+// character's boundary: a name shortened for a label never ends in half a
+// character.
+inline std::string_view utf8_prefix(std::string_view text, size_t max_bytes) {
+  if (text.size() <= max_bytes) return text;
+  size_t cut = max_bytes;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return text.substr(0, cut);
+}
+
 // An error message as a face shows it: at most kMaxMessageBytes, cut at a
 // UTF-8 character's boundary with the count of what was left out, so that a
 // 100 KB argument echoed in a message does not flood a terminal or a log.
@@ -56,9 +66,8 @@ inline constexpr size_t kMaxMessageBytes = 1000;
 inline std::string shortened_message(std::string_view message,
                                      size_t max_bytes = kMaxMessageBytes) {
   if (message.size() <= max_bytes) return std::string(message);
-  size_t cut = max_bytes;
-  while (cut > 0 && (static_cast<unsigned char>(message[cut]) & 0xC0) == 0x80) --cut;
-  return std::string(message.substr(0, cut)) + "... (" + std::to_string(message.size() - cut) +
+  const std::string_view kept = utf8_prefix(message, max_bytes);
+  return std::string(kept) + "... (" + std::to_string(message.size() - kept.size()) +
          " more bytes)";
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "aapat/core/metric.h"
+#include "aapat/core/text.h"
 #include "aapat/io/pattern_svg.h"
 #include "aapat/io/png_image.h"
 #include "aapat/io/scene_json.h"
@@ -89,7 +90,7 @@ std::string polar_svg(const std::vector<const StudyPattern*>& patterns) {
     s += fmt::format(
         R"(<rect x="{}" y="{}" width="10" height="10" fill="{}"/><text x="{}" y="{}" font-size="11">{}</text>)",
         kSize + 4, 20 + 16 * i, c, kSize + 18, 29 + 16 * i,
-        xml_escape(patterns[i]->name.substr(0, 22)));
+        xml_escape(std::string(utf8_prefix(patterns[i]->name, 22))));
   }
   return s + "</svg>";
 }
@@ -164,8 +165,8 @@ std::string budget_section(const StudyResult& r, const BudgetStudy& b, const Stu
   // The patterns drawn.
   std::vector<GalleryItem> gallery;
   for (const StudyPattern& p : b.patterns)
-    gallery.push_back(
-        {p.pattern, p.name.substr(0, 24), fmt::format("E2 {:.3f}", p.objective[rec])});
+    gallery.push_back({p.pattern, std::string(utf8_prefix(p.name, 24)),
+                       fmt::format("E2 {:.3f}", p.objective[rec])});
   h += "<figure><figcaption>Every pattern of this budget, its samples as weight discs, with E2 "
        "under the recommended objective.</figcaption>" +
        gallery_svg(gallery, 8, "") + "</figure>";
