@@ -1,5 +1,8 @@
 // The papers' experiments re-run: Laine-Aila Table 3 and Figure 10,
 // Hasselgren Table 2, the hardware lattice table.
+#include <utility>
+#include <variant>
+
 #include "aapat/study/objective_study.h"
 #include "aapat/study/optimize_run.h"
 #include "aapat/study/study_json.h"
@@ -11,11 +14,16 @@ void bind_studies(py::module_& m) {
   m.def(
       "study_compare",
       [](const std::vector<py::object>& patterns,
-         const std::optional<std::vector<std::string>>& scenes, int size, int frames,
-         int reference_samples, int resamples, uint64_t seed) {
+         const std::optional<std::vector<std::string>>& scenes,
+         const std::variant<int, std::pair<int, int>>& size, int frames, int reference_samples,
+         int resamples, uint64_t seed) {
         StudySettings s;
         if (scenes) s.scenes = *scenes;
-        s.size = size;
+        // N for N x N, or (width, height), as `--size` takes N or WxH.
+        if (const int* n = std::get_if<int>(&size))
+          s.width = s.height = *n;
+        else
+          std::tie(s.width, s.height) = std::get<std::pair<int, int>>(size);
         s.frames = frames;
         s.reference.samples = reference_samples;
         s.resamples = resamples;
@@ -33,7 +41,8 @@ void bind_studies(py::module_& m) {
         return to_python(study_compare_json(s, study_objectives(s), measured));
       },
       py::arg("patterns"), py::kw_only(), py::arg("scenes") = py::none(),
-      py::arg("size") = StudySettings{}.size, py::arg("frames") = StudySettings{}.frames,
+      py::arg("size") = std::pair<int, int>{StudySettings{}.width, StudySettings{}.height},
+      py::arg("frames") = StudySettings{}.frames,
       py::arg("reference_samples") = StudySettings{}.reference.samples,
       py::arg("resamples") = StudySettings{}.resamples, py::arg("seed") = StudySettings{}.seed,
       R"doc(aapat study --compare: every objective and rendered measure of the patterns

@@ -110,22 +110,25 @@ has them all), a name of the optimized ones ("aapat-taa-8") or a file.)doc");
   m.def(
       "sequence_eval",
       [](const py::object& seq, const std::string& model, double alpha, int window,
-         const std::string& resolve, const py::object& objective, const py::object& filter,
-         const py::object& acuity, const py::object& norm) {
+         const std::string& resolve, double ratio, const py::object& objective,
+         const py::object& filter, const py::object& acuity, const py::object& norm) {
         const Sequence s = py::isinstance<Sequence>(seq)
                                ? seq.cast<Sequence>()
                                : resolve_sequence(seq.cast<std::string>());
         const Metric metric = make_metric(objective, filter, acuity, norm);
         const Accumulation a = make_accumulation(model, alpha, window, resolve);
-        const auto r = interruptible([&] { return evaluate_temporal(s, a, metric); });
+        const std::optional<Upscale> upscale =
+            ratio != 1 ? std::optional(make_upscale(ratio)) : std::nullopt;
+        const auto r = interruptible([&] { return evaluate_temporal(s, a, metric, 0, upscale); });
         return to_python(temporal_report_json(s, r));
       },
       py::arg("sequence"), py::kw_only(), py::arg("model") = std::string(kDefaultAccumulation),
       py::arg("alpha") = kDefaultAlpha, py::arg("window") = 0, py::arg("resolve") = "",
-      AAPAT_OBJECTIVE_ARGS,
+      py::arg("ratio") = 1.0, AAPAT_OBJECTIVE_ARGS,
       with_metric_args(
           (std::string(R"doc(The temporal metrics of a sequence (a Sequence or a spec) under an
-accumulation model: a dict with the keys of one row of `aapat sequence eval
+accumulation model (at a render scale 1/ratio, each frame reconstructed into
+display pixels, when ratio > 1, as `aapat sequence eval --ratio`): a dict with the keys of one row of `aapat sequence eval
 --json`: sequence, frames, family, worst_e2, mean_e2, steady_e2, cut_curve,
 settle_frame, flicker (the mean over the period's transitions), worst_flicker
 (the largest), flicker_per_transition, mean_offset, worst_centroid, prefixes.)doc") +

@@ -92,7 +92,7 @@ def calls(files):
         "save_pattern": (aapat.save_pattern, [p, os.path.join(tmp, "s.json")], {}),
         "sequence": (aapat.sequence, ["halton:frames=4"], {}),
         "Sequence.save": (seq.save, [os.path.join(tmp, "q.json")], {}),
-        "sequence_eval": (aapat.sequence_eval, [seq], {"alpha": 0.2, "window": 0}),
+        "sequence_eval": (aapat.sequence_eval, [seq], {"alpha": 0.2, "window": 0, "ratio": 1.0}),
         "sequence_pan": (aapat.sequence_pan, [["halton:frames=4"]],
                          {"taa": "ue4", "ratio": 1.0, "settings": {"history": "bilinear"},
                           "velocities": [(0.3, 0.2)],

@@ -53,6 +53,12 @@ def test_sequence_eval_row_is_the_cli_row(aapat_cli):
     assert py["flicker"] <= py["worst_flicker"]  # the mean, and the largest
 
 
+def test_sequence_eval_at_a_ratio_is_the_cli_row(aapat_cli):
+    cli = cli_json(aapat_cli, "sequence", "eval", "aapat-upscale-1.5", "--ratio", "1.5")
+    py = aapat.sequence_eval("aapat-upscale-1.5", ratio=1.5)
+    assert py == cli["rows"][0]
+
+
 def test_sequence_pan_rows_are_the_cli_rows(aapat_cli):
     """One evaluation on both faces: the same rows, the default velocities too."""
     args = ["aapat-taa-8", "halton:frames=8", "--taa", "ue4", "--acuity", "uniform:step=30"]

@@ -266,6 +266,7 @@ void run_animate(AnimateOptions& o, std::ostream& out, bool ratio_given) {
                           {"frames", a.frames},
                           {"width", a.width},
                           {"height", a.height},
+                          {"reference", describe_reference(a.reference)},
                           {"rmse", e.rmse},
                           {"max_deviation", e.max_deviation}});
     if (linear) {
@@ -296,18 +297,21 @@ void run_animate(AnimateOptions& o, std::ostream& out, bool ratio_given) {
   }
   if (linear) {
     out << fmt::format(
-        "{} animation{}, {} frames of {}x{}, {} under {}{}: RMSE {:.3f}, max deviation {}, mean "
-        "SSIM {}, mean FLIP {:.4f}, flicker {:.3f} levels per pixel and frame\n",
+        "{} animation{}, {} frames of {}x{}, {} under {}{} against {}: RMSE {:.3f}, max "
+        "deviation {}, mean SSIM {}, mean FLIP {:.4f}, flicker {:.3f} levels per pixel and "
+        "frame\n",
         a.animation, o.still ? " (static)" : "", a.frames, a.width, a.height, sequence->name,
-        o.model.text(), o.cut ? " from a cut" : " in steady state", e.rmse, e.max_deviation,
+        o.model.text(), o.cut ? " from a cut" : " in steady state", describe_reference(a.reference),
+        e.rmse, e.max_deviation,
         linear->mean_ssim ? fmt::format("{:.4f}", *linear->mean_ssim) : "-", linear->mean_flip,
         linear->flicker);
     return;
   }
   out << fmt::format(
-      "{} animation, {} frames of {}x{}, {}: RMSE {:.3f}, max deviation {}, mean FLIP {:.4f}\n",
-      a.animation, a.frames, a.width, a.height, o.pattern, e.rmse, e.max_deviation,
-      plain->mean_flip);
+      "{} animation, {} frames of {}x{}, {} against {}: RMSE {:.3f}, max deviation {}, mean FLIP "
+      "{:.4f}\n",
+      a.animation, a.frames, a.width, a.height, o.pattern, describe_reference(a.reference), e.rmse,
+      e.max_deviation, plain->mean_flip);
 }
 
 }  // namespace

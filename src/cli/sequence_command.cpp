@@ -76,10 +76,15 @@ void add_eval(CLI::App* parent, std::function<void(std::ostream&)>& action) {
     MetricOptions metric;
     ModelOptions model;
     int curve = 0;
+    double ratio = 1;
     bool json = false, prefixes = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("sequences", o->sequences, "sequence files or generator specs")->required();
+  cmd->add_option("--ratio", o->ratio,
+                  "display / render resolution (>= 1): each frame reconstructed into display "
+                  "pixels, as optimize --sequence --ratio and sequence pan --ratio model it")
+      ->capture_default_str();
   cmd->add_option("--pattern", o->pattern, "for the generators that take a pattern apart");
   o->metric.add_to(cmd);
   o->model.add_to(cmd);
@@ -98,20 +103,25 @@ void add_eval(CLI::App* parent, std::function<void(std::ostream&)>& action) {
     std::vector<std::pair<Sequence, TemporalReport>> rows;
     for (const std::string& spec : o->sequences) {
       Sequence s = resolve_sequence(spec, pattern);
-      TemporalReport r = evaluate_temporal(s, model, metric, o->curve);
+      TemporalReport r =
+          evaluate_temporal(s, model, metric, o->curve,
+                            o->ratio != 1 ? std::optional(make_upscale(o->ratio)) : std::nullopt);
       rows.emplace_back(std::move(s), std::move(r));
     }
     if (o->json) {
       JsonObject js = json_report("sequence eval");
       js.update(objective_json(objective));
       js["model"] = o->model.text();
+      js["ratio"] = o->ratio;
       JsonObject::array_t list;
       for (const auto& [s, r] : rows) list.push_back(temporal_report_json(s, r));
       js["rows"] = list;
       out << json_text(js);
       return;
     }
-    out << fmt::format("{}; {}\n", o->model.text(), objective.caption());
+    out << fmt::format("{}{}; {}\n", o->model.text(),
+                       o->ratio != 1 ? fmt::format(", render scale 1/{}", o->ratio) : "",
+                       objective.caption());
     size_t width = 8;
     for (const auto& row : rows) width = std::max(width, row.first.name.size());
     out << fmt::format("{:<{}} {:>6} {:>9} {:>9} {:>9} {:>9} {:>7} {:>9} {:>9} {:>9}\n", "sequence",

@@ -25,7 +25,7 @@ namespace {
 struct StudyOptions {
   StudySettings settings;
   std::vector<std::string> compare;
-  std::string budgets = "2,4,8", norms = "inf,2,4", table, csv, html;
+  std::string budgets = "2,4,8", norms = "inf,2,4", size = "64", table, csv, html;
   ReferenceOptions reference;
   bool json = false;
 };
@@ -134,7 +134,8 @@ JsonObject study_json(const StudyResult& r, const StudyOptions& o) {
   }
   doc.update(JsonObject{{"scenes", r.scenes},
                         {"measures", kStudyMeasures},
-                        {"size", o.settings.size},
+                        {"width", o.settings.width},
+                        {"height", o.settings.height},
                         {"frames", o.settings.frames},
                         {"seed", o.settings.seed},
                         {"reference", describe_reference(o.settings.reference)},
@@ -188,6 +189,7 @@ void run_compare(StudyOptions& o, std::ostream& out) {
 void run_study(StudyOptions& o, std::ostream& out) {
   o.settings.budgets = parse_budgets(o.budgets);
   o.settings.norms = parse_norms(o.norms);
+  std::tie(o.settings.width, o.settings.height) = parse_size(o.size, "--size", 1024);
   o.settings.reference.samples = o.reference.settings.samples;
   o.settings.reference.filter = o.reference.settings.filter;
   if (!o.html.empty() && !o.html.ends_with(".html"))
@@ -234,7 +236,7 @@ Action add_study_command(CLI::App& app) {
   cmd->add_option("--scenes", o->settings.scenes,
                   "triangle, circle (animations), halfplane (every edge angle), or render scenes")
       ->capture_default_str();
-  cmd->add_option("--size", o->settings.size, "pixels a side")->capture_default_str();
+  cmd->add_option("--size", o->size, "WIDTHxHEIGHT, or N for N x N")->capture_default_str();
   cmd->add_option("--frames", o->settings.frames, "frames per animated scene")
       ->capture_default_str();
   cmd->add_option("--starts", o->settings.starts, "optimizer starts per objective and budget")

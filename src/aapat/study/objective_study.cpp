@@ -36,19 +36,20 @@ bool one_pixel(const Pattern& p, int n) {
          static_cast<int>(p.sets[0].size()) == n;
 }
 
-// The frames of a study scene at `size`.
-std::vector<Scene> frames_of(const std::string& scene, int size, int frames) {
+// The frames of a study scene at width x height.
+std::vector<Scene> frames_of(const std::string& scene, int width, int height, int frames) {
   std::vector<Scene> out;
   if (scene == "triangle" || scene == "circle") {
-    for (int f = 0; f < frames; ++f) out.push_back(animation_frame(scene, size, size, f, frames));
+    for (int f = 0; f < frames; ++f)
+      out.push_back(animation_frame(scene, width, height, f, frames));
   } else if (scene == "halfplane") {
     // Every edge angle: the normal turns by 180 / frames degrees a frame,
     // offset from the axes so that no frame is axis-aligned by accident.
-    const Vec2 centre{(size - 1) / 2.0, (size - 1) / 2.0};
+    const Vec2 centre{(width - 1) / 2.0, (height - 1) / 2.0};
     for (int f = 0; f < frames; ++f)
       out.push_back(HalfPlaneScene{centre, 180.0 * (f + 0.37) / frames, 0.21});
   } else {
-    out.push_back(resolve_scene(scene, size, size));
+    out.push_back(resolve_scene(scene, width, height));
   }
   return out;
 }
@@ -116,18 +117,18 @@ std::vector<StudyPattern> budget_patterns(const StudySettings& s,
 // One pattern's rendered measures on one scene: every frame against its
 // reference, the deviations of all frames together.
 StudyMeasures render_measures(const Pattern& p, const std::vector<Scene>& frames,
-                              const std::vector<Image>& references, int size) {
+                              const std::vector<Image>& references, int width, int height) {
   Sampling sampling;
   sampling.pattern = p;
   ImageError total;
   double pixels = 0, ssim_sum = 0, flip_sum = 0;
   for (size_t f = 0; f < frames.size(); ++f) {
-    const Image image = render(frames[f], size, size, sampling, std::nullopt);
+    const Image image = render(frames[f], width, height, sampling, std::nullopt);
     const ImageError e = compare(image, references[f]);
     for (int i = 0; i < 256; ++i) total.count[i] += e.count[i];
     total.max_deviation = std::max(total.max_deviation, e.max_deviation);
     pixels += static_cast<double>(image.values.size());
-    ssim_sum += size >= kSsimWindow ? ssim(image, references[f]) : 1.0;
+    ssim_sum += std::min(width, height) >= kSsimWindow ? ssim(image, references[f]) : 1.0;
     flip_sum += flip_mean(image, references[f]);
   }
   summarize(total, pixels);
@@ -151,8 +152,9 @@ void validate(const StudySettings& s) {
     throw ParameterError("patterns", fmt::format(" {}: expected 3 to 1000 per budget", s.patterns));
   if (s.acuities.empty() || s.norms.empty() || s.scenes.empty())
     throw ParameterError("objectives", ": name at least one acuity table, norm and scene");
-  if (s.size < 8 || s.size > 1024)
-    throw ParameterError("size", fmt::format(" {}: expected 8 to 1024 pixels", s.size));
+  if (s.width < 8 || s.width > 1024 || s.height < 8 || s.height > 1024)
+    throw ParameterError(
+        "size", fmt::format(" {}x{}: expected 8 to 1024 pixels a side", s.width, s.height));
   if (s.frames < 1 || s.frames > 1024)
     throw ParameterError("frames", fmt::format(" {}: expected 1 to 1024", s.frames));
   if (s.starts < 1 || s.starts > 10000)
@@ -162,7 +164,7 @@ void validate(const StudySettings& s) {
   for (const std::string& a : s.acuities) make_acuity(a);
   make_filter(s.filter);
   for (const double p : s.norms) Metric(make_filter(s.filter), make_acuity(s.acuities[0]), p);
-  for (const std::string& scene : s.scenes) frames_of(scene, 8, 1);
+  for (const std::string& scene : s.scenes) frames_of(scene, 8, 8, 1);
 }
 
 std::vector<StudyObjective> study_objectives(const StudySettings& s) {
@@ -186,15 +188,15 @@ SceneFrames scene_frames(const StudySettings& s, const ReferenceSource& referenc
                          const StudyProgress& progress, bool shifted = false) {
   SceneFrames out;
   for (size_t sc = 0; sc < s.scenes.size(); ++sc) {
-    out.frames.push_back(frames_of(s.scenes[sc], s.size, s.frames));
+    out.frames.push_back(frames_of(s.scenes[sc], s.width, s.height, s.frames));
     out.references.emplace_back();
     out.shifted.emplace_back();
     for (size_t f = 0; f < out.frames.back().size(); ++f) {
       ReferenceSettings ref = s.reference;
       ref.seed = frame_reference_seed(ref.seed, static_cast<int>(f));
-      out.references.back().push_back(references(out.frames.back()[f], s.size, s.size, ref, 0));
+      out.references.back().push_back(references(out.frames.back()[f], s.width, s.height, ref, 0));
       if (shifted)
-        out.shifted.back().push_back(references(out.frames.back()[f], s.size, s.size, ref, 0.5));
+        out.shifted.back().push_back(references(out.frames.back()[f], s.width, s.height, ref, 0.5));
     }
     if (progress)
       progress(static_cast<int>(sc + 1), static_cast<int>(s.scenes.size()), "references");
@@ -224,9 +226,9 @@ void measure(std::vector<StudyPattern>& patterns, const StudySettings& s,
                           "rendered there",
                           patterns[i].pattern.name));
         ByteWriter w;
-        for (double m :
-             render_measures(patterns[i].pattern, scenes.frames[sc],
-                             corner ? scenes.shifted[sc] : scenes.references[sc], s.size))
+        for (double m : render_measures(patterns[i].pattern, scenes.frames[sc],
+                                        corner ? scenes.shifted[sc] : scenes.references[sc],
+                                        s.width, s.height))
           w.put(m);
         return w.take();
       });

@@ -49,9 +49,9 @@ struct StudySettings {
   // angle), and any render scene (spiral, circles, checkerboard, ...).
   std::vector<std::string> scenes{"triangle", "circle",  "halfplane",
                                   "spiral",   "circles", "checkerboard"};
-  int size = 64;    // pixels a side
-  int frames = 16;  // per animated scene
-  int starts = 8;   // optimizer starts per objective and budget
+  int width = 64, height = 64;  // pixels
+  int frames = 16;              // per animated scene
+  int starts = 8;               // optimizer starts per objective and budget
   int resamples = 1000;
   uint64_t seed = 1;
   ReferenceSettings reference{256, "mitchell", 1};

@@ -21,7 +21,7 @@ StudySettings small() {
   s.acuities = {"laine-aila", "uniform:step=10"};
   s.norms = {Metric::kMaxNorm, 2};
   s.scenes = {"halfplane", "disc"};
-  s.size = 16;
+  s.width = s.height = 16;
   s.frames = 3;
   s.starts = 2;
   s.resamples = 50;
@@ -81,7 +81,7 @@ TEST(ObjectiveStudy, SmallStudyIsConsistentAndDeterministic) {
 // samples beats the standard 4x MSAA pattern (docs/catalog-table.md).
 TEST(ObjectiveStudy, CornerKernelsAreMeasuredAgainstCornerReferences) {
   StudySettings s = small();
-  s.size = 24;
+  s.width = s.height = 24;
   s.reference.samples = 64;
   const auto measured =
       measure_patterns({{"2x2", "catalog", resolve_pattern("aapat-2x2-4"), {}, {}, {}},

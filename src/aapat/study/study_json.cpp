@@ -198,9 +198,15 @@ JsonObject study_compare_json(const StudySettings& settings,
     against.push_back(entry);
   }
   JsonObject doc = json_report("study");
+  // The size and reference every rendered number depends on, in every result.
   doc.update(JsonObject{{"objectives", names},
                         {"scenes", settings.scenes},
                         {"measures", kStudyMeasures},
+                        {"width", settings.width},
+                        {"height", settings.height},
+                        {"frames", settings.frames},
+                        {"seed", settings.seed},
+                        {"reference", describe_reference(settings.reference)},
                         {"patterns", rows},
                         {"against_first", against}});
   return doc;

@@ -194,21 +194,21 @@ std::string budget_section(const StudyResult& r, const BudgetStudy& b, const Stu
       break;
     }
   if (scene != "triangle" && scene != "circle" && scene != "halfplane") {
-    const Scene sc = resolve_scene(scene, s.size, s.size);
+    const Scene sc = resolve_scene(scene, s.width, s.height);
     ReferenceSettings ref = s.reference;
     ref.seed = frame_reference_seed(ref.seed, 0);
-    const Image reference = references(sc, s.size, s.size, ref, 0);
+    const Image reference = references(sc, s.width, s.height, ref, 0);
     h += "<figure><figcaption>" + xml_escape(scene) +
          ": each pattern's rendering (its own weights) and its error (white: none, black: 10% "
          "or more).</figcaption><div>";
     for (const StudyPattern* p : curves) {
       Sampling sampling;
       sampling.pattern = p->pattern;
-      const Image image = render(sc, s.size, s.size, sampling, std::nullopt);
+      const Image image = render(sc, s.width, s.height, sampling, std::nullopt);
       h += fmt::format(
           R"(<div style="display:inline-block;margin-right:10px"><div class="note">{}</div><img class="crop" alt="rendering" src="{}"> <img class="crop" alt="error" src="{}"></div>)",
-          xml_escape(p->name), png_uri(s.size, s.size, level_pixels(image), 3),
-          png_uri(s.size, s.size, error_pixels(image, reference), 3));
+          xml_escape(p->name), png_uri(s.width, s.height, level_pixels(image), 3),
+          png_uri(s.width, s.height, error_pixels(image, reference), 3));
     }
     h += "</div></figure>";
   }
@@ -279,8 +279,8 @@ std::string study_report_html(const StudyResult& r, const StudySettings& s,
            "{} objectives (filter {}), {} scenes ({}) at {}&times;{} pixels, {} "
            "frames per animation, references of {} jittered samples per pixel "
            "with {}; seed {}.",
-           r.objectives.size(), xml_escape(s.filter), r.scenes.size(), xml_escape(scenes), s.size,
-           s.size, s.frames, s.reference.samples, xml_escape(s.reference.filter), s.seed) +
+           r.objectives.size(), xml_escape(s.filter), r.scenes.size(), xml_escape(scenes), s.width,
+           s.height, s.frames, s.reference.samples, xml_escape(s.reference.filter), s.seed) +
        "</p>";
   h += "<p><b>Recommended objective: " + xml_escape(r.objectives[rec].name()) +
        fmt::format(

@@ -8,6 +8,7 @@
 
 #include "aapat/analyze/l2_discrepancy.h"
 #include "aapat/analyze/star_discrepancy.h"
+#include "aapat/temporal/model/upscale_model.h"
 
 namespace aapat {
 namespace {
@@ -90,7 +91,7 @@ std::vector<PrefixMeasure> prefix_measures(const std::vector<Vec2>& points) {
 }
 
 TemporalReport evaluate_temporal(const Sequence& s, const Accumulation& a, const Metric& metric,
-                                 int curve_frames) {
+                                 int curve_frames, const std::optional<Upscale>& upscale) {
   validate(s);
   validate(a);
   const int period = s.period();
@@ -98,16 +99,21 @@ TemporalReport evaluate_temporal(const Sequence& s, const Accumulation& a, const
     throw ParameterError("curve-frames",
                          fmt::format(" {}: expected 0 (automatic) to 4096", curve_frames));
   if (curve_frames == 0) curve_frames = default_curve_frames(a, period);
+  if (upscale) check_ratio(upscale->ratio);
+  const auto kernels_at = [&](int k, bool steady_state) {
+    return upscale ? upscaled_kernels(s, a, *upscale, k, steady_state)
+                   : accumulated_kernels(s, a, k, steady_state);
+  };
   TemporalReport r;
   std::vector<std::vector<Kernel>> steady;
   for (int k = 0; k < period; ++k) {
-    steady.push_back(accumulated_kernels(s, a, k, true));
+    steady.push_back(kernels_at(k, true));
     r.steady_e2.push_back(kernels_e2(metric, steady.back()));
   }
   r.worst_e2 = *std::max_element(r.steady_e2.begin(), r.steady_e2.end());
   r.mean_e2 = std::accumulate(r.steady_e2.begin(), r.steady_e2.end(), 0.0) / period;
   for (int k = 0; k < curve_frames; ++k)
-    r.cut_curve.push_back(kernels_e2(metric, accumulated_kernels(s, a, k, false)));
+    r.cut_curve.push_back(kernels_e2(metric, kernels_at(k, false)));
   r.settle_frame = curve_frames;
   while (r.settle_frame > 0 &&
          r.cut_curve[static_cast<size_t>(r.settle_frame - 1)] <= 1.01 * r.worst_e2)

@@ -24,10 +24,12 @@
 //    one of m equal strata; 1 is N-rooks), the star and L2-star discrepancy.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "aapat/core/metric.h"
 #include "aapat/temporal/model/accumulation.h"
+#include "aapat/temporal/sequence/render_scale.h"
 
 namespace aapat {
 
@@ -56,9 +58,13 @@ struct TemporalReport {
 
 // The curve runs `curve_frames` frames after the cut (0: enough to settle,
 // 2 periods for a box, at least until frame 0's weight falls below 1% for
-// an EMA, plus a period). Throws Error naming the problem.
+// an EMA, plus a period). With `upscale`, every frame is rendered at the
+// render scale and reconstructed into display pixels (upscale_model.h): the
+// kernels are the display phases', the model that `optimize --sequence
+// --ratio` searches under. Throws Error naming the problem.
 TemporalReport evaluate_temporal(const Sequence& s, const Accumulation& a, const Metric& metric,
-                                 int curve_frames = 0);
+                                 int curve_frames = 0,
+                                 const std::optional<Upscale>& upscale = std::nullopt);
 
 // E2 of a set of kernels (the largest over kernels).
 double kernels_e2(const Metric& metric, const std::vector<Kernel>& kernels);
