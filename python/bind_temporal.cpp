@@ -144,6 +144,8 @@ settle_frame, flicker (the mean over the period's transitions), worst_flicker
          const py::object& progress, const py::object& objective, const py::object& filter,
          const py::object& acuity, const py::object& norm) {
         SequenceSearch s;
+        if (ratio.is_none() && reconstruct != kDefaultReconstruction)
+          throw Error("reconstruct: the reconstruction of an upscale; give ratio=R with it");
         if (!ratio.is_none()) s.upscale = make_upscale(ratio.cast<double>(), reconstruct);
         s.frames = frames;
         s.samples_per_frame = samples_per_frame;

@@ -124,4 +124,14 @@ head, rest = doc.split(begin)
 sys.stdout.write(head + begin + sys.stdin.read() + end + rest.split(end, 1)[1])
 ' "$root/docs/limits.md" > docs/limits.md.new
 mv docs/limits.md.new docs/limits.md
+# docs/cli.md's option tables are `aapat list --modes` (the tables the
+# commands enforce), set between their two markers.
+"$aapat" list --modes | python3 -c '
+import sys
+doc = open(sys.argv[1]).read()
+begin, end = "<!-- the tables: aapat list --modes -->\n", "<!-- end of the tables -->\n"
+head, rest = doc.split(begin)
+sys.stdout.write(head + begin + sys.stdin.read() + end + rest.split(end, 1)[1])
+' "$root/docs/cli.md" > docs/cli.md.new
+mv docs/cli.md.new docs/cli.md
 echo "figures written under docs/"

@@ -25,7 +25,7 @@ i=0
 for anim in triangle circle; do
   for s in "${jitters[@]}"; do
     "$aapat" animate "$anim" --sequence "$s" --frames 64 --json >"$tmp/anim-$i.json"
-    "$aapat" animate "$anim" --sequence "$s" --frames 32 --static --json >"$tmp/still-$i.json"
+    "$aapat" animate "$anim" --sequence "$s" --frames 32 --motion static --json >"$tmp/still-$i.json"
     i=$((i + 1))
   done
 done

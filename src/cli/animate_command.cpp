@@ -25,6 +25,7 @@
 #include "aapat/temporal/sequence/sequence_json.h"
 #include "cli/animation_options.h"
 #include "cli/commands.h"
+#include "cli/option_modes.h"
 #include "cli/progress.h"
 #include "cli/sequence_options.h"
 
@@ -87,9 +88,15 @@ bool is_builtin_animation(const std::string& name) {
   return name == "circle" || name == "triangle";
 }
 
-// The scene of a scene spec or file and its motion (pan by default; --static: none).
+// The scene of a scene spec or file and its motion (pan by default; --motion
+// static: none). A built-in animation holds still only in temporal mode.
 void resolve_moving_scene(AnimateOptions& o, AnimationSettings& a) {
-  if (is_builtin_animation(a.animation) && o.motion.empty()) return;
+  if (is_builtin_animation(a.animation) && o.still && o.sequence.empty())
+    throw Error(
+        fmt::format("--motion static: the {} animation holds still in temporal mode "
+                    "(--sequence) only; give a scene to render it still",
+                    a.animation));
+  if (is_builtin_animation(a.animation) && (o.motion.empty() || o.still)) return;
   if (is_builtin_animation(a.animation))
     throw Error(
         fmt::format("--motion: the {} animation has its own motion; give a scene "
@@ -131,6 +138,56 @@ std::vector<uint8_t> grey_of(const std::vector<uint8_t>& levels, int channels) {
   return grey;
 }
 
+// animate's modes: a pattern, a sequence accumulated by a model, an engine's
+// TAA. What each takes, and what to give instead of what it does not.
+OptionModes animate_option_modes() {
+  const std::string add_sequence = "add --sequence S for temporal accumulation";
+  const std::string add_taa = "add --taa PRESET (ue4, fsr2, godot, bevy) for engine TAA";
+  const std::string taa_set =
+      "the preset's own setting is changed with --taa-set KEY=VALUE (aapat list: taa presets)";
+  OptionModes t;
+  t.command = "animate";
+  t.selectors = {"taa", "sequence"};
+  t.shared = {"motion", "size",     "frames", "reference-samples", "reference-filter",
+              "cache",  "no-cache", "seed",   "frames-dir",        "gif",
+              "mp4",    "fps",      "json"};
+  t.modes = {
+      {"the pattern mode (--pattern)",
+       {"pattern", "filter", "histogram"},
+       {{"model", add_sequence},
+        {"alpha", add_sequence},
+        {"window", add_sequence},
+        {"resolve", add_sequence},
+        {"cut", add_sequence},
+        {"csv", add_sequence},
+        {"taa-set", add_taa},
+        {"ratio", add_taa},
+        {"warmup", add_taa}},
+       {"circle", "--pattern", "rgss"}},
+      {"the temporal mode (--sequence)",
+       {"sequence", "model", "alpha", "window", "resolve", "cut", "csv", "histogram"},
+       {{"filter", "a sequence's frames reconstruct with their own weights, or --resolve F"},
+        {"pattern", "give --pattern or --sequence, not both"},
+        {"taa-set", add_taa},
+        {"ratio", add_taa},
+        {"warmup", add_taa}},
+       {"circle", "--sequence", "halton:frames=4"}},
+      {"the engine TAA mode (--taa)",
+       {"taa", "taa-set", "ratio", "warmup", "sequence", "cut", "csv"},
+       {{"alpha",
+         "the preset's blend is --taa-set alpha=A (alpha_min=, alpha_max= where the "
+         "preset has them)"},
+        {"model", taa_set},
+        {"window", taa_set},
+        {"resolve", "the preset reconstructs with --taa-set reconstruct=F"},
+        {"filter", "the preset reconstructs with --taa-set reconstruct=F"},
+        {"pattern", "an engine renders a jitter sequence: --sequence, or the preset's own"},
+        {"histogram", "use --csv"}},
+       {"checkerboard", "--taa", "ue4", "--motion", "static"}},
+  };
+  return t;
+}
+
 void run_engine(const AnimateOptions& o, const AnimationSettings& a, const Sequence& sequence,
                 const EngineTaa& taa, const std::function<void(int, const Image&)>& on_frame,
                 const std::string& frames_dir, const GreyFrames& gif, std::ostream& out) {
@@ -140,7 +197,6 @@ void run_engine(const AnimateOptions& o, const AnimationSettings& a, const Seque
         fmt::format("--taa: give a scene to move (checkerboard, a scene file, ...) with "
                     "--motion; the {} animation moves by its own rule",
                     a.animation));
-  if (!o.histogram.empty()) throw Error("--histogram: not in engine TAA (use --csv)");
   EngineRun run;
   run.scene = *a.scene;
   run.motion = a.motion;
@@ -168,12 +224,8 @@ void run_engine(const AnimateOptions& o, const AnimationSettings& a, const Seque
 void run_animate(AnimateOptions& o, std::ostream& out, bool ratio_given) {
   AnimationSettings a = o.settings();
   const bool engine = !o.taa.empty();
-  if (!engine && (ratio_given || !o.taa_set.empty() || o.warmup >= 0))
-    throw Error(
-        "--ratio, --taa-set and --warmup belong to engine TAA: add --taa PRESET "
-        "(ue4, fsr2, godot, bevy)");
-  if (engine && !o.pattern.empty())
-    throw Error("--taa renders a jitter sequence (--sequence, or the preset's own): not --pattern");
+  // Which options apply in which mode: the option table (add_animate_command).
+  o.still = o.motion == "static";
   if (engine) check_ratio(o.ratio);
   resolve_moving_scene(o, a);
   for (const auto& [path, ext] : {std::pair{o.gif, ".gif"}, std::pair{o.mp4, ".mp4"}})
@@ -200,10 +252,6 @@ void run_animate(AnimateOptions& o, std::ostream& out, bool ratio_given) {
   } cleanup{frames_dir};
   if (!engine && o.pattern.empty() == o.sequence.empty())
     throw Error("animate: give either --pattern or --sequence (temporal accumulation)");
-  if (!engine && o.sequence.empty() && (o.cut || o.still || !o.csv.empty()))
-    throw Error("--cut, --static and --csv belong to the temporal mode: add --sequence");
-  if (!o.sequence.empty() && !o.filter.empty())
-    throw Error("--filter: a sequence's frames reconstruct with their own weights or --resolve");
   Sampling s;
   std::optional<Sequence> sequence;
   std::optional<Accumulation> model;
@@ -345,8 +393,6 @@ Action add_animate_command(CLI::App& app) {
                   "frame sampled with its phase and accumulated by --model (docs/temporal.md)");
   o->model.add_to(cmd);
   cmd->add_flag("--cut", o->cut, "temporal mode: start from a camera cut (default: steady state)");
-  cmd->add_flag("--static", o->still,
-                "temporal mode: no motion, the first frame's scene throughout");
   cmd->add_option("--csv", o->csv, "temporal mode: per frame RMSE, max deviation, SSIM, flicker");
   cmd->add_option("--filter", o->filter,
                   "reconstruct with this filter (default: the pattern's weights)");
@@ -359,6 +405,11 @@ Action add_animate_command(CLI::App& app) {
       ->check(CLI::Range(1, kMaxFramesPerSecond));
   cmd->add_option("--histogram", o->histogram, "squared-error histogram of all frames (.csv)");
   cmd->add_flag("--json", o->json, "print JSON");
+  enforce_option_modes(cmd, animate_option_modes(), [cmd] {
+    return cmd->get_option("--taa")->count() > 0        ? size_t{2}
+           : cmd->get_option("--sequence")->count() > 0 ? size_t{1}
+                                                        : size_t{0};
+  });
   return [o, ratio](std::ostream& out) { run_animate(*o, out, ratio->count() > 0); };
 }
 

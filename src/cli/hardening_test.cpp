@@ -162,9 +162,17 @@ TEST(Hardening, OptionsAreHonouredOrRefusedBeforeWork) {
   EXPECT_FALSE(fs::exists(temp_path("x.png")));
   expect_error(run({"render", "checkerboard", "--grid", "--error", temp_path("e.png"), "-o",
                     temp_path("s.png"), "--size", "16x16"}),
-               kExitError, "render --grid: --error is for a single rendering");
+               kExitUsage,
+               "--error: does not apply in the sheet mode (--grid), which would ignore it; a "
+               "sheet takes its samplings from --rows");
   expect_error(run({"render", "checkerboard", "--pattern", "rgss", "--rows", "jittered@4"}),
-               kExitError, "render: --rows is for a --grid sheet");
+               kExitUsage, "--rows: does not apply in the single-rendering mode");
+  expect_error(run({"render", "spiral", "--pattern", "rgss", "--threshold", "0.1"}), kExitUsage,
+               "--threshold: does not apply in the single-rendering mode, which would ignore it; "
+               "add --adaptive CRITERION");
+  // The example: engine TAA takes the preset's own blend, by --taa-set.
+  expect_error(run({"animate", "spiral", "--taa", "fsr2", "--alpha", "0.2"}), kExitUsage,
+               "--taa-set alpha=");
   expect_error(run({"snap", "rgss", "--nonnegative"}), kExitError,
                "--nonnegative constrains the weights --optimize-weights finds");
   // --mp4 without ffmpeg fails before a single frame is rendered.
@@ -533,7 +541,6 @@ TEST(Hardening, BadTexturesAndRefinementSettingsAreNamedAndWriteNothing) {
       {{"spiral", "--adaptive", "contrast", "--threshold", "1.5"}, "--threshold 1.5"},
       {{"spiral", "--adaptive", "contrast", "--max-samples", "2"}, "--max-samples 2"},
       {{"spiral", "--adaptive", "gradient"}, "--adaptive 'gradient'"},
-      {{"spiral", "--threshold", "0.1"}, "are for --adaptive CRITERION"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args = {"render"};

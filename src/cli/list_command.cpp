@@ -10,6 +10,7 @@
 #include "aapat/io/json_report.h"
 #include "aapat/registry/spec_registries.h"
 #include "cli/commands.h"
+#include "cli/option_modes.h"
 
 namespace aapat {
 namespace {
@@ -37,9 +38,17 @@ Action add_list_command(CLI::App& app) {
       "list",
       "list the catalog patterns, filters, generators, acuity tables, scenes, API profiles, "
       "motions, sequences and TAA presets");
-  auto json = std::make_shared<bool>(false);
-  cmd->add_flag("--json", *json, "print the registries as JSON (docs/json.md)");
-  return [json](std::ostream& out) {
+  auto json = std::make_shared<bool>(false), modes = std::make_shared<bool>(false);
+  auto* json_flag = cmd->add_flag("--json", *json, "print the registries as JSON (docs/json.md)");
+  cmd->add_flag("--modes", *modes,
+                "print instead which options apply in which mode of animate, render and "
+                "optimize, as markdown (docs/cli.md)")
+      ->excludes(json_flag);
+  return [json, modes](std::ostream& out) {
+    if (*modes) {
+      out << option_modes_markdown();
+      return;
+    }
     if (*json) {
       JsonObject doc = json_report("list");
       doc.update(registry_json());

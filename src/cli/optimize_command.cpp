@@ -1,9 +1,9 @@
 // `aapat optimize`: multi-start optimization of a family (Laine-Aila Sec. 5),
 // or polishing of an existing pattern.
 #include <fmt/format.h>
-
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <memory>
 #include <ostream>
 
@@ -29,6 +29,7 @@
 #include "cli/app.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
+#include "cli/option_modes.h"
 #include "cli/progress.h"
 #include "cli/sequence_options.h"
 
@@ -186,6 +187,8 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
   s.seed = o.seed;
   s.iterations = o.iterations;
   if (!o.api.empty()) s.profile = &api_profile(o.api);
+  if (o.reconstruct != kDefaultReconstruction && !o.ratio_given)
+    throw Error("--reconstruct: the reconstruction of an upscale; give --ratio R with it");
   if (o.ratio_given) s.upscale = make_upscale(o.ratio, o.reconstruct);
   SequenceSearchResult r;
   try {
@@ -282,6 +285,58 @@ void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ost
 }
 
 }  // namespace
+
+// optimize's modes: a pattern search, a sequence search under the linear
+// model (at a render scale with --ratio), and a sequence search under motion
+// through an engine's TAA. What each takes, and what to give instead.
+OptionModes optimize_option_modes() {
+  const std::vector<std::string> pattern = {
+      "family",         "placement",   "starts", "seed",    "seeds", "lock",
+      "time-limit",     "iterations",  "method", "lattice", "api",   "weights-only",
+      "border-samples", "nonnegative", "csv",    "svg"};
+  const std::vector<std::string> sequence = {"sequence",       "samples-per-frame",
+                                             "flicker-weight", "jitter-bound",
+                                             "jitter-radius",  "equal-weights",
+                                             "frame-measure",  "model",
+                                             "alpha",          "window",
+                                             "resolve",        "ratio",
+                                             "reconstruct",    "starts",
+                                             "seed",           "iterations",
+                                             "method",         "api"};
+  const std::vector<std::string> motion = {
+      "sequence", "taa",      "taa-set", "velocity",     "from",
+      "step",     "min-step", "ratio",   "jitter-bound", "samples-per-frame"};
+  std::map<std::string, std::string> not_pattern, not_sequence, not_motion;
+  for (const std::string& o : sequence) not_pattern[o] = "add --sequence K to search a sequence";
+  for (const std::string& o : motion)
+    if (!not_pattern.contains(o)) not_pattern[o] = "add --sequence K --taa PRESET";
+  for (const std::string& o : pattern)
+    if (std::find(sequence.begin(), sequence.end(), o) == sequence.end())
+      not_sequence[o] = "a sequence search takes none of the pattern search's options";
+  for (const char* o : {"taa-set", "velocity", "from", "step", "min-step"})
+    not_sequence[o] = "add --taa PRESET: it belongs to the search under motion";
+  for (const std::string& o : pattern) not_motion[o] = "the search under motion takes none";
+  for (const char* o : {"starts", "seed", "iterations", "method"})
+    not_motion[o] =
+        "the search under motion is a compass search from --from, with --step and "
+        "--min-step";
+  for (const char* o : {"model", "alpha", "window", "resolve", "flicker-weight", "jitter-radius",
+                        "equal-weights", "frame-measure", "reconstruct"})
+    not_motion[o] = "the preset's own TAA is the model: change it with --taa-set KEY=VALUE";
+  OptionModes t;
+  t.command = "optimize";
+  t.selectors = {"sequence", "taa"};
+  t.shared = {"objective", "filter", "acuity", "norm", "threads", "output", "json"};
+  t.modes = {
+      {"the pattern search (--family or PATTERN)", pattern, not_pattern, {"--family", "P(1,1,2)"}},
+      {"the sequence search (--sequence)", sequence, not_sequence, {"--sequence", "4"}},
+      {"the search under motion (--sequence with --taa)",
+       motion,
+       not_motion,
+       {"--sequence", "4", "--taa", "ue4"}},
+  };
+  return t;
+}
 
 Action add_optimize_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
@@ -384,6 +439,11 @@ Action add_optimize_command(CLI::App& app) {
       ->capture_default_str();
 
   auto* starts_option = cmd->get_option("--starts");
+  enforce_option_modes(cmd, optimize_option_modes(), [cmd] {
+    return cmd->get_option("--sequence")->count() == 0 ? size_t{0}
+           : cmd->get_option("--taa")->count() > 0     ? size_t{2}
+                                                       : size_t{1};
+  });
   return [o, starts_option](std::ostream& out) { run_optimize(*o, starts_option, out); };
 }
 

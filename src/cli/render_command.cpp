@@ -25,6 +25,7 @@
 #include "aapat/temporal/engine/taa_render.h"
 #include "aapat/temporal/sequence/sequence_json.h"
 #include "cli/commands.h"
+#include "cli/option_modes.h"
 #include "cli/progress.h"
 #include "cli/reference_options.h"
 #include "cli/sequence_options.h"
@@ -334,6 +335,75 @@ void run_temporal(const Options& o, std::ostream& out) {
       r.mean_ssim ? fmt::format("{:.4f}", *r.mean_ssim) : "-", r.mean_flip, r.flicker);
 }
 
+// render's modes: one rendering (adaptive or not), a contact sheet, a
+// sequence accumulated over a still scene. What each takes, and what to give
+// instead of what it does not.
+OptionModes render_option_modes() {
+  const std::vector<std::string> single = {
+      "pattern",        "generator", "samples",       "filter",  "reference",
+      "error",          "histogram", "histogram-svg", "mode",    "shading-point",
+      "texture-filter", "lod",       "mipmap",        "measure", "adaptive"};
+  std::vector<std::string> adaptive = single;
+  for (const char* a : {"threshold", "max-depth", "max-samples", "per-square", "refinement-map"})
+    adaptive.push_back(a);
+  std::map<std::string, std::string> not_single;
+  for (const char* a : {"threshold", "max-depth", "max-samples", "per-square", "refinement-map"})
+    not_single[a] = "add --adaptive CRITERION";
+  for (const char* g : {"rows", "columns", "zoom", "table"}) not_single[g] = "add --grid";
+  for (const char* t : {"model", "alpha", "window", "resolve", "frames", "cut"})
+    not_single[t] = "add --sequence S for temporal accumulation";
+  std::map<std::string, std::string> not_grid;
+  for (const std::string& o : adaptive)
+    not_grid[o] =
+        "a sheet takes its samplings from --rows and its filters from --columns, each with "
+        "+KEY=VALUE options";
+  for (const char* t : {"model", "alpha", "window", "resolve", "frames", "cut"})
+    not_grid[t] = "add --sequence S (without --grid) for temporal accumulation";
+  std::map<std::string, std::string> not_temporal;
+  for (const std::string& o : adaptive)
+    not_temporal[o] =
+        "a sequence's frames render with their own weights (or --resolve F) and are always "
+        "measured";
+  for (const char* g : {"rows", "columns", "zoom", "table"})
+    not_temporal[g] = "a sheet renders no sequence";
+  OptionModes t;
+  t.command = "render";
+  t.selectors = {"grid", "sequence", "adaptive"};
+  t.shared = {"size",
+              "rotate",
+              "scale",
+              "translate",
+              "seed",
+              "output",
+              "reference-samples",
+              "reference-filter",
+              "cache",
+              "no-cache",
+              "texture",
+              "json",
+              "grid",
+              "sequence"};
+  std::map<std::string, std::string> not_adaptive = not_single;
+  for (const char* a : {"threshold", "max-depth", "max-samples", "per-square", "refinement-map"})
+    not_adaptive.erase(a);
+  t.modes = {
+      {"the single-rendering mode", single, not_single, {"spiral", "--pattern", "rgss"}},
+      {"the adaptive mode (--adaptive)",
+       adaptive,
+       not_adaptive,
+       {"spiral", "--pattern", "rgss", "--adaptive", "contrast"}},
+      {"the sheet mode (--grid)",
+       {"rows", "columns", "zoom", "table"},
+       not_grid,
+       {"spiral", "--grid", "-o", "sheet.png"}},
+      {"the temporal mode (--sequence)",
+       {"model", "alpha", "window", "resolve", "frames", "cut"},
+       not_temporal,
+       {"spiral", "--sequence", "halton:frames=4"}},
+  };
+  return t;
+}
+
 }  // namespace
 
 Action add_render_command(CLI::App& app) {
@@ -405,29 +475,13 @@ Action add_render_command(CLI::App& app) {
   cmd->add_option("--frames", o->frames, "temporal mode: frames rendered (0: the period)")
       ->check(CLI::Range(0, kMaxTaaFrames));
   cmd->add_flag("--cut", o->cut, "temporal mode: start from a camera cut (default: steady state)");
-  // Options of one mode are refused in the other, before any work.
-  const std::vector<const CLI::Option*> single_only = {
-      cmd->get_option("--pattern"),        cmd->get_option("--generator"),
-      cmd->get_option("--samples"),        cmd->get_option("--filter"),
-      cmd->get_option("--reference"),      cmd->get_option("--error"),
-      cmd->get_option("--histogram"),      cmd->get_option("--histogram-svg"),
-      cmd->get_option("--mode"),           cmd->get_option("--shading-point"),
-      cmd->get_option("--texture-filter"), cmd->get_option("--lod"),
-      cmd->get_option("--mipmap"),         cmd->get_option("--adaptive"),
-      cmd->get_option("--threshold"),      cmd->get_option("--max-depth"),
-      cmd->get_option("--max-samples"),    cmd->get_option("--per-square"),
-      cmd->get_option("--refinement-map")};
-  const std::vector<const CLI::Option*> grid_only = {
-      cmd->get_option("--rows"), cmd->get_option("--columns"), cmd->get_option("--zoom"),
-      cmd->get_option("--table")};
-  return [o, single_only, grid_only](std::ostream& out) {
-    for (const CLI::Option* opt : o->grid ? single_only : grid_only)
-      if (opt->count() > 0)
-        throw Error(o->grid ? fmt::format("render --grid: {} is for a single rendering; a sheet "
-                                          "takes its samplings from --rows and filters from "
-                                          "--columns",
-                                          opt->get_name())
-                            : fmt::format("render: {} is for a --grid sheet", opt->get_name()));
+  enforce_option_modes(cmd, render_option_modes(), [cmd] {
+    return cmd->get_option("--grid")->count() > 0       ? size_t{2}
+           : cmd->get_option("--sequence")->count() > 0 ? size_t{3}
+           : cmd->get_option("--adaptive")->count() > 0 ? size_t{1}
+                                                        : size_t{0};
+  });
+  return [o](std::ostream& out) {
     if (!o->sequence.empty()) return run_temporal(*o, out);
     if (o->cut || o->frames)
       throw Error("--cut and --frames belong to the temporal mode: add --sequence");

@@ -157,7 +157,8 @@ TEST(SequenceCli, TemporalRenderingReportsEveryMeasure) {
   const auto r = run({"animate", "circle", "--sequence", "halton:frames=4", "--frames", "4",
                       "--size", "24", "--reference-samples", "16", "--no-cache", "--csv", csv});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("in steady state: RMSE"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("in steady state against 16 jittered samples per pixel"), std::string::npos)
+      << r.out;
   EXPECT_TRUE(testing::slurp(csv).starts_with("frame,rmse,max_deviation,ssim,flip,flicker\n"));
   const auto still = run({"render", "spiral", "--size", "24x24", "--sequence", "r2:frames=4",
                           "--reference-samples", "16", "--no-cache", "--json"});
@@ -190,14 +191,16 @@ TEST(SequenceCli, BadInputIsNamedAndWritesNothing) {
       {{"optimize", "--sequence", "4", "--samples-per-frame", "16", "--api", "metal", "-o", out},
        "--api metal takes at most"},
       {{"animate", "circle", "--sequence", "halton", "--pattern", "rgss"},
-       "give either --pattern or --sequence"},
+       "--pattern: does not apply in the temporal mode (--sequence), which would ignore it; give "
+       "--pattern or --sequence, not both"},
       {{"sequence", "phases", "--ratio", "0.5"}, "--ratio 0.5"},
       {{"optimize", "--sequence", "4", "--taa", "fsr2", "--from", "halton:frames=3", "-o", out},
        "--from halton:b1=2,b2=3,frames=3,start=1: 3 frames, not 4"},
       {{"optimize", "--sequence", "4", "--taa", "fsr2", "--min-step", "0.5", "-o", out},
        "--min-step 0.5"},
       {{"optimize", "--sequence", "4", "--velocity", "0,0", "-o", out},
-       "--taa-set, --velocity and --from belong to the search under motion"},
+       "--velocity: does not apply in the sequence search (--sequence), which would ignore it; "
+       "add --taa PRESET"},
       {{"optimize", "--sequence", "4", "--taa", "nosuch", "-o", out}, "nosuch"},
   };
   for (const Case& c : cases) {
