@@ -10,14 +10,14 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 aapat=${AAPAT:-$root/build/release/aapat}
 out=$root/data/sequences
 mkdir -p "$out"
-"$aapat" optimize --sequence 8 --starts 200 --seed 1 --flicker-weight 5 -o "$out/aapat-taa-8.json"
-"$aapat" optimize --sequence 16 --starts 128 --seed 1 --flicker-weight 5.25 -o "$out/aapat-taa-16.json"
+"$aapat" optimize --sequence 8 --starts 200 --seed 1 --flicker-weight 5 --name aapat-taa-8 -o "$out/aapat-taa-8.json"
+"$aapat" optimize --sequence 16 --starts 128 --seed 1 --flicker-weight 5.25 --name aapat-taa-16 -o "$out/aapat-taa-16.json"
 # For UE4-style TAA (a min/max clamp, alpha 0.04): aapat-taa-8's objective with
 # every jitter within 0.31 of the centre, which wins on moving content under
 # UE4's clamp where the unbounded ring does not (docs/temporal.md, "Under
 # motion"); the search names it aapat-taa-8, the catalog aapat-ue4-8.
 "$aapat" optimize --sequence 8 --starts 200 --seed 1 --flicker-weight 5 --jitter-radius 0.31 \
-  -o "$out/aapat-ue4-8.json"
+  --name aapat-ue4-8 -o "$out/aapat-ue4-8.json"
 /usr/bin/python3 - "$out/aapat-ue4-8.json" <<'PY'
 import json, sys
 with open(sys.argv[1]) as f:
@@ -34,5 +34,5 @@ PY
 for spec in 1.5:18:4 1.7:23:4 2:32:4 3:72:2; do
   IFS=: read -r ratio frames starts <<<"$spec"
   "$aapat" optimize --sequence "$frames" --ratio "$ratio" --alpha 0.0588235294117647 \
-    --starts "$starts" --seed 1 -o "$out/aapat-upscale-$ratio.json"
+    --starts "$starts" --seed 1 --name aapat-upscale-$ratio -o "$out/aapat-upscale-$ratio.json"
 done

@@ -37,3 +37,9 @@ def test_the_worked_example_of_the_docs_runs(tmp_path):
     assert r.returncode == 0, r.stderr
     assert "rgss           P(1,1,4)    E2 0.4390" in r.stdout
     assert "optimized: P(1,1,4) from 16 jittered starts, E2 0.3587" in r.stdout
+    # docs/python.md shows what it prints, line for line (the figure's line aside).
+    doc = open(os.path.join(os.path.dirname(__file__), "..", "..", "docs", "python.md")).read()
+    shown = doc.split("It prints:\n\n```\n", 1)[1].split("```", 1)[0]
+    printed = "".join(line for line in r.stdout.splitlines(keepends=True)
+                      if not line.startswith("(matplotlib"))
+    assert printed == shown

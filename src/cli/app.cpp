@@ -141,7 +141,7 @@ std::string fingerprint(int argc, const char* const* argv, const std::set<std::s
       continue;
     }
     if (arg.starts_with("--threads=") || arg.starts_with("--checkpoint=") ||
-        arg == "--fresh-checkpoint" || arg == "--progress-lines")
+        arg == "--fresh-checkpoint" || arg == "--progress-lines" || arg == "--quiet")
       continue;
     text += " ";
     text += shell_quoted(arg);
@@ -267,10 +267,13 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
                  "results are the same for any count)")
       ->check(CLI::Range(0, kMaxThreads));
   // A long run in the background shows how far it got in its log.
-  bool progress_lines = false;
-  app.add_flag("--progress-lines", progress_lines,
-               "print progress on stderr as a line per tenth of the job, terminal or not (a run "
-               "in the background with its stderr in a log); before the command");
+  bool progress_lines = false, quiet = false;
+  auto* lines_flag = app.add_flag(
+      "--progress-lines", progress_lines,
+      "print progress on stderr as a line per tenth of the job, terminal or not; before the "
+      "command (by default a bar on a terminal, else a line every 5 seconds of a long job)");
+  app.add_flag("--quiet", quiet, "no progress on stderr at all; before the command")
+      ->excludes(lines_flag);
   // A long run keeps its finished work items, and resumes from them.
   std::string checkpoint_path;
   auto* checkpoint_option =
@@ -346,10 +349,14 @@ int run_aapat(int argc, const char* const* argv, std::ostream& out, std::ostream
   // Lines for this command only: the next command in the same process (a
   // test, Python) draws its bars as before.
   struct RestoreProgress {
-    bool lines = Progress::printing_lines();
-    ~RestoreProgress() { Progress::print_lines(lines); }
+    bool lines = Progress::printing_lines(), quiet = Progress::quieted();
+    ~RestoreProgress() {
+      Progress::print_lines(lines);
+      Progress::quiet(quiet);
+    }
   } restore_progress;
   if (progress_lines) Progress::print_lines();
+  if (quiet) Progress::quiet();
   // An engine's own threads (an MPI rank's main thread) come on top of --threads.
   std::optional<tbb::global_control> limit;
   if (threads > 0 || items.service_threads() > 0)

@@ -69,3 +69,29 @@ TEST(CliEval, ProfileWritesSvgAndCsv) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// A pattern file named like a catalog entry: the catalog's own samples keep
+// the name (`show rgss -o`), other samples are read under the file's name.
+TEST(CliEval, APatternFileNamedLikeACatalogEntryIsReadUnderItsOwnName) {
+  const std::string same = testing::temp_path("same.json"),
+                    edited = testing::temp_path("mine.json");
+  ASSERT_EQ(testing::run({"show", "rgss", "-o", same}).code, 0);
+  nlohmann::json doc = nlohmann::json::parse(testing::slurp(same));
+  doc["sets"][0][0][0] = 0.1;  // one sample moved
+  std::ofstream(edited) << doc.dump();
+  ::testing::internal::CaptureStderr();
+  const auto r = testing::run({"eval", same, edited, "--json"});
+  const std::string warned = ::testing::internal::GetCapturedStderr();
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto rows = nlohmann::json::parse(r.out)["rows"];
+  EXPECT_EQ(rows[0]["pattern"], "rgss");
+  EXPECT_EQ(rows[1]["pattern"], "mine");
+  EXPECT_NE(warned.find("pattern file '" + edited + "' is named 'rgss'"), std::string::npos)
+      << warned;
+}
+
+}  // namespace
+}  // namespace aapat

@@ -89,7 +89,7 @@ std::string starts_csv(const MultiStartResult& result, const Objective& objectiv
 struct OptimizeOptions {
   std::string pattern, family, placement, seeds = OptimizeRunSettings{}.seeds,
                                           method = method_key(OptimizerSettings{}.method);
-  std::string output, csv, svg, api;
+  std::string output, csv, svg, api, name;
   MetricOptions metric;
   int lattice = OptimizeRunSettings{}.lattice;
   int starts = kDefaultSearchStarts, threads = OptimizeRunSettings{}.threads,
@@ -139,6 +139,7 @@ void run_pan_search(const OptimizeOptions& o, std::ostream& out) {
     throw Error(fmt::format("--{}{}", e.parameter(), e.detail()));
   }
   for (const std::string& warning : r.warnings) warnings() << "aapat: warning: " << warning << "\n";
+  if (!o.name.empty()) r.best.name = o.name;
   if (!o.output.empty()) save_sequence_file(r.best, o.output);
   if (o.json) {
     out << json_text(pan_search_json(s, objective, r));
@@ -199,6 +200,7 @@ void run_sequence_search(const OptimizeOptions& o, std::ostream& out) {
     throw Error(fmt::format("--{}{}", e.parameter(), e.detail()));
   }
   for (const std::string& warning : r.warnings) warnings() << "aapat: warning: " << warning << "\n";
+  if (!o.name.empty()) r.best.name = o.name;
   if (!o.output.empty()) save_sequence_file(r.best, o.output);
   if (o.json) {
     out << json_text(sequence_search_json(s, o.model.text(), objective, r));
@@ -262,6 +264,7 @@ void run_optimize(OptimizeOptions& o, const CLI::Option* starts_option, std::ost
     Progress bar("optimize");
     r = optimize_run(objective, s, bar.callback());
   }
+  if (!o.name.empty()) r.best.name = o.name;
   // With --json the document alone goes to stdout.
   std::ostream discard(nullptr);
   std::ostream& text = o.json ? discard : out;
@@ -326,7 +329,7 @@ OptionModes optimize_option_modes() {
   OptionModes t;
   t.command = "optimize";
   t.selectors = {"sequence", "taa"};
-  t.shared = {"objective", "filter", "acuity", "norm", "threads", "output", "json"};
+  t.shared = {"objective", "filter", "acuity", "norm", "threads", "output", "json", "name"};
   t.modes = {
       {"the pattern search (--family or PATTERN)", pattern, not_pattern, {"--family", "P(1,1,2)"}},
       {"the sequence search (--sequence)", sequence, not_sequence, {"--sequence", "4"}},
@@ -382,6 +385,9 @@ Action add_optimize_command(CLI::App& app) {
                 "papers' closed pixel; default: strictly inside, as plain MSAA needs)");
   cmd->add_flag("--nonnegative", o->nonnegative, "keep weights >= 0 and report the E2 this costs");
   cmd->add_option("-o,--output", o->output, "write the best pattern (.json)");
+  cmd->add_option("--name", o->name,
+                  "the name of the pattern or sequence found (default: what it is: family or "
+                  "length, objective or ratio, seed)");
   cmd->add_option("--csv", o->csv,
                   "write every start: start, initial E2, final E2, iterations, seconds");
   cmd->add_option("--svg", o->svg, "write a drawing of the best pattern");

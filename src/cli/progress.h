@@ -1,13 +1,22 @@
-// A one-line progress bar on a terminal's stderr; silent when stderr is not a
-// terminal (piped or redirected), so logs and scripts stay clean; lines when
-// asked (--progress-lines, or an MPI job's rank 0).
+// Progress of a long command on stderr, wherever stderr goes:
+//  - on a terminal, a one-line bar;
+//  - otherwise (a log, a pipe), a line at most every kProgressLineSeconds
+//    (AAPAT_PROGRESS_SECONDS), the first once the job has run that long, so
+//    that a short command prints nothing and a six-minute one shows how far
+//    it got;
+//  - a line per tenth of the job, terminal or not, when asked
+//    (--progress-lines, or an MPI job's rank 0);
+//  - nothing with --quiet.
 #pragma once
 
+#include <chrono>
 #include <string>
 
 #include "aapat/study/progress.h"
 
 namespace aapat {
+
+inline constexpr double kProgressLineSeconds = 5;
 
 class Progress {
  public:
@@ -22,12 +31,17 @@ class Progress {
   // background whose stderr goes to a log.
   static void print_lines(bool on = true);
   static bool printing_lines();
+  // --quiet: no progress of any kind (`on`), or progress again.
+  static void quiet(bool on = true);
+  static bool quieted();
 
  private:
+  enum class Style { kNone, kBar, kTimedLines, kTenths };
   std::string label_;
-  bool active_;
+  Style style_;
   bool drawn_ = false;  // a bar that never drew leaves no empty line
   int tenths_ = -1;     // the last tenth printed as a line
+  std::chrono::steady_clock::time_point start_, last_line_;
 };
 
 }  // namespace aapat

@@ -123,7 +123,32 @@ TEST(SequenceCli, OptimizeWritesASequenceThatBeatsHalton) {
   ASSERT_EQ(r.code, 0) << r.err;
   const auto doc = nlohmann::json::parse(r.out);
   EXPECT_LE(doc["j"].get<double>(), doc["halton_j"].get<double>());
-  EXPECT_EQ(load_sequence_file(path).name, "aapat-taa-4");
+  EXPECT_EQ(load_sequence_file(path).name, "taa-4-seed1");  // what it is
+}
+
+// Names that do not lie: a search at 1.5 named like the catalog entry (the
+// issue's `-o jitter.json` of a file named aapat-upscale-1.5) is read under
+// its file's name, with a warning; the catalog entry's own file keeps it.
+TEST(SequenceCli, AFileNamedLikeACatalogEntryIsReadUnderItsOwnName) {
+  const std::string path = temp_path("jitter.json");
+  const auto r = run({"optimize", "--sequence", "18", "--ratio", "1.5", "--starts", "1",
+                      "--iterations", "3", "--name", "aapat-upscale-1.5", "-o", path});
+  ASSERT_EQ(r.code, 0) << r.err;
+  ::testing::internal::CaptureStderr();
+  const auto eval = run({"sequence", "eval", path, "aapat-upscale-1.5", "--json"});
+  const std::string warned = ::testing::internal::GetCapturedStderr();
+  ASSERT_EQ(eval.code, 0) << eval.err;
+  const auto doc = nlohmann::json::parse(eval.out);
+  EXPECT_EQ(doc["rows"][0]["sequence"], "jitter");
+  EXPECT_EQ(doc["rows"][1]["sequence"], "aapat-upscale-1.5");
+  EXPECT_NE(warned.find("is named 'aapat-upscale-1.5', a catalog entry whose samples differ"),
+            std::string::npos)
+      << warned;
+  // The catalog's own file keeps its name: it is the entry.
+  EXPECT_EQ(load_sequence_file(std::string(AAPAT_TESTDATA_DIR) +
+                               "/../data/sequences/aapat-upscale-1.5.json")
+                .name,
+            "aapat-upscale-1.5");
 }
 
 // The search under motion: never above its start, every velocity reported,

@@ -13,6 +13,7 @@
 #include "aapat/core/nearest_name.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/io/atomic_file.h"
+#include "aapat/io/catalog_clash.h"
 #include "aapat/io/file_header.h"
 #include "aapat/io/pattern_text.h"
 
@@ -151,7 +152,18 @@ bool is_pattern_path(std::string_view path) {
 
 Pattern load_pattern_file(const std::string& path) {
   const std::string text = read_file(path, "pattern file");
-  return path.ends_with(".xyw") ? pattern_from_text(text, path) : pattern_from_json(text, path);
+  Pattern p =
+      path.ends_with(".xyw") ? pattern_from_text(text, path) : pattern_from_json(text, path);
+  // A catalog name on other samples is read under the file's own name.
+  const auto taken = [](std::string_view n) {
+    return pattern_registry().find(n) != nullptr || in_aapat_catalog(n);
+  };
+  if (taken(p.name)) {
+    const Pattern entry =
+        in_aapat_catalog(p.name) ? aapat_catalog_pattern(p.name) : catalog_pattern(p.name);
+    if (!same_samples(p, entry)) p.name = name_off_the_catalog(p.name, path, taken, "pattern file");
+  }
+  return p;
 }
 
 void save_pattern_file(const Pattern& p, const std::string& path) {

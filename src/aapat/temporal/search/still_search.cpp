@@ -516,10 +516,13 @@ void sequence_terms(const SequenceSearch& s, const Metric& metric,
 SequenceSearchResult optimize_sequence(const SequenceSearch& s, const Metric& metric,
                                        const ItemsProgress& progress) {
   validate(s);
-  const std::string name = s.upscale ? fmt::format("aapat-upscale-{:g}", s.upscale->ratio)
-                           : s.samples_per_frame == 1
-                               ? fmt::format("aapat-taa-{}", s.frames)
-                               : fmt::format("aapat-msaa-{}x{}", s.frames, s.samples_per_frame);
+  // Named after what it is (never after a catalog entry: a user's search is
+  // not the catalog's sequence): kind, length, ratio, seed.
+  const std::string name =
+      s.upscale ? fmt::format("upscale-{:g}-{}-seed{}", s.upscale->ratio, s.frames, s.seed)
+      : s.samples_per_frame == 1
+          ? fmt::format("taa-{}-seed{}", s.frames, s.seed)
+          : fmt::format("msaa-{}x{}-seed{}", s.frames, s.samples_per_frame, s.seed);
   // Start 0: Halton (2, 3) from index 1, consecutive points per frame
   // (clamped into a --jitter-bound).
   const double bound = bound_of(s);

@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "aapat/io/atomic_file.h"
+#include "aapat/io/catalog_clash.h"
 #include "aapat/io/file_header.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/temporal/sequence/sequence_generators.h"
@@ -129,7 +130,22 @@ Sequence sequence_from_json(std::string_view text, std::string_view source) {
 }
 
 Sequence load_sequence_file(const std::string& path) {
-  return sequence_from_json(read_file(path, "sequence file"), path);
+  Sequence s = sequence_from_json(read_file(path, "sequence file"), path);
+  // An optimized sequence's name on other frames is read under the file's own name.
+  const auto taken = [](std::string_view n) {
+    for (const auto& entry : embedded::kAapatSequences)
+      if (entry.first == n) return true;
+    return false;
+  };
+  for (const auto& [name, text] : embedded::kAapatSequences) {
+    if (name != s.name) continue;
+    const Sequence entry = sequence_from_json(text, fmt::format("data/sequences/{}.json", name));
+    const bool same =
+        entry.period() == s.period() &&
+        std::equal(entry.frames.begin(), entry.frames.end(), s.frames.begin(), same_samples);
+    if (!same) s.name = name_off_the_catalog(s.name, path, taken, "sequence file");
+  }
+  return s;
 }
 
 void save_sequence_file(const Sequence& s, const std::string& path) {
