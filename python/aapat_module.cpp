@@ -18,6 +18,16 @@ point sets with their spectra and discrepancies, and a test renderer, on numpy
 arrays. Specs name filters, acuity tables, generators and scenes
 ("name:key=value,..."); aapat.registry() lists them all.)doc";
   m.attr("__version__") = AAPAT_VERSION;
+  // Every array the module takes or gives is numpy's: without numpy, the
+  // import itself fails and says what to install (not the first call that
+  // returns an array, with pybind11's message).
+  try {
+    py::module_::import("numpy");
+  } catch (py::error_already_set&) {
+    throw py::import_error(
+        "aapat needs numpy: install it (Debian: apt-get install python3-numpy; or pip install "
+        "numpy) and import aapat again");
+  }
   // aapat.Error is a ValueError (a bad value) and a TypeError (a value of the
   // wrong type, see strict_arguments.cpp).
   static py::exception<Error>& error = py::register_exception<Error>(

@@ -2,7 +2,11 @@
 // enumeration of the P(4,1+,n) placements, the GIL released while they run.
 #include <fmt/format.h>
 
+#include "aapat/core/hardware_layout.h"
+#include "aapat/core/lattice.h"
+#include "aapat/io/api_export.h"
 #include "aapat/study/optimize_run.h"
+#include "aapat/study/pattern_studies.h"
 #include "aapat/study/study_json.h"
 #include "bindings.h"
 
@@ -214,6 +218,58 @@ by E2 within each cost when optimized (e2 and pattern are None otherwise).
     cull_one_edge: drop configurations with every sample on one border line.
     optimize: optimize every configuration from `starts` jittered starts.
     seed: random seed. progress: a callable f(done, total, note).)doc"));
+
+  m.def(
+      "snap",
+      [](const py::object& pattern, int lattice, bool optimize_weights, bool nonnegative,
+         const py::object& objective, const py::object& filter, const py::object& acuity,
+         const py::object& norm) {
+        if (nonnegative && !optimize_weights)
+          throw Error(
+              "nonnegative constrains the weights optimize_weights finds: set optimize_weights");
+        const Objective o = make_objective(objective, filter, acuity, norm);
+        const Pattern before = to_pattern(pattern);
+        const SnapResult r = interruptible(
+            [&] { return snap_study(o.metric(), before, lattice, optimize_weights, nonnegative); });
+        py::dict d = to_python(snap_json(o, before.name, lattice, r));
+        d["result"] = r.snapped;
+        return d;
+      },
+      py::arg("pattern"), py::kw_only(), py::arg("lattice") = kLatticeSteps,
+      py::arg("optimize_weights") = false, py::arg("nonnegative") = false, AAPAT_OBJECTIVE_ARGS,
+      R"doc(aapat snap: every sample to the nearest point of the 1/lattice-pixel lattice
+(programmable MSAA's 1/16), E2 before and after, and with optimize_weights the
+weights re-optimized for the snapped positions (nonnegative: weights >= 0). A
+dict with the values of `aapat snap --json`; "result" is the snapped
+aapat.Pattern.)doc");
+
+  m.def(
+      "export",
+      [](const py::object& pattern, const std::string& api, const std::string& shader, bool snap,
+         const std::optional<std::pair<int, int>>& grid, const py::object& objective,
+         const py::object& filter, const py::object& acuity, const py::object& norm) {
+        const ApiProfile& profile = api_profile(api);
+        const Objective o = make_objective(objective, filter, acuity, norm);
+        int gw = 0, gh = 0;
+        if (grid) {
+          std::tie(gw, gh) = *grid;
+          if (!profile.grid_choice)
+            throw Error(fmt::format("grid: {} has a fixed grid", profile.name));
+          if (gw < 1 || gh < 1 || gw > profile.max_grid || gh > profile.max_grid)
+            throw Error(fmt::format("grid: {}x{}; {} takes 1 to {} a side", gw, gh, profile.name,
+                                    profile.max_grid));
+        }
+        return export_pattern(
+            to_pattern(pattern), profile, o,
+            shader.empty() ? default_shader(profile) : parse_shader_language(shader), snap, gw, gh);
+      },
+      py::arg("pattern"), py::kw_only(), py::arg("api") = "d3d12-tier1", py::arg("shader") = "",
+      py::arg("snap") = false, py::arg("grid") = py::none(), AAPAT_OBJECTIVE_ARGS,
+      R"doc(aapat export: a lattice pattern as an API's sample positions and a resolve
+shader, the text `aapat export` prints. api: "d3d12-tier1", "d3d12-tier2",
+"vulkan", "metal" or "gl"; shader: "hlsl", "glsl" or "msl" (default the API's
+own); snap: snap to the 1/16 lattice first; grid: (w, h) pixels for the APIs
+that take a grid (default the pattern's tile).)doc");
 }
 
 }  // namespace aapat::python

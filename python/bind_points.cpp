@@ -76,7 +76,8 @@ mixture, Zhou, Fang & Ning), each O(N log N) in double-double; star (exact up
 to 4096 points, else bounds with their gap); edge (720 directions). Returns
 the values of `aapat discrepancy --json` (without its source): points, then
 l2_star, l2_generalized, l2_centred, l2_wrap_around, l2_unanchored,
-l2_symmetric, l2_mixture, star_lower, star_upper, star_exact, star_gap, edge,
+l2_symmetric, l2_mixture, star_lower, star_upper, star_exact (the exact value, or None where only
+bounds were computed), star_is_exact, star_gap, edge,
 edge_normal_deg (of the measures asked).
 
 Every value is the discrepancy D, not D^2: scipy.stats.qmc.discrepancy returns

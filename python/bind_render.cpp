@@ -8,6 +8,7 @@
 #include "aapat/io/png_image.h"
 #include "aapat/io/scene_json.h"
 #include "aapat/render/animation.h"
+#include "aapat/render/image_flip.h"
 #include "aapat/study/study_json.h"
 #include "aapat/temporal/engine/engine_json.h"
 #include "aapat/temporal/engine/engine_taa.h"
@@ -61,10 +62,14 @@ ColorImage color_image(const py::array& given, const char* what) {
   for (size_t p = 0; p < img.pixels(); ++p)
     for (int c = 0; c < 3; ++c) {
       const double x = v[p * channels + (channels == 3 ? c : 0)];
-      if (!(x >= 0 && x <= 1))
-        throw Error(
-            fmt::format("diff: {} holds {} at pixel {}; values must be in [0, 1]", what, x, p));
-      img.rgb[3 * p + c] = static_cast<float>(x);
+      // Quantized as render's FLIP and a PNG quantize (render/image_flip.h):
+      // a filtered reference's small overshoot is clamped as render clamps it.
+      if (!(x >= -kMaxOvershoot && x <= 1 + kMaxOvershoot))
+        throw Error(fmt::format(
+            "diff: {} holds {} at pixel {}; values must be in [0, 1] (an overshoot of up to {} "
+            "past either end, a filtered image's, is clamped)",
+            what, x, p, kMaxOvershoot));
+      img.rgb[3 * p + c] = stored_value(x);
     }
   return img;
 }

@@ -59,6 +59,8 @@ def calls(files):
         "Filter": (aapat.Filter, ["tent"], {}),
         "Filter.__call__": (aapat.filter("tent").__call__, [np.linspace(-1, 1, 5)], {}),
         "diff": (aapat.diff, [img, img * 0.9], {"ppd": 67.0}),
+        "snap": (aapat.snap, ["flipquad"], {"lattice": 16, "optimize_weights": False}),
+        "export": (aapat.export, ["msaa-4"], {"api": "vulkan", "snap": True, "grid": (2, 2)}),
         "discrepancy": (aapat.discrepancy, [aapat.generate("halton", 32)], {"measures": "l2-star"}),
         "engine_taa": (aapat.engine_taa, ["checkerboard"],
                        {"size": (16, 16), "frames": 2, "warmup": 0, "reference_samples": 4,
@@ -146,10 +148,10 @@ def test_every_callable_has_a_bad_argument_case(files):
 
 @pytest.mark.parametrize("name", sorted(
     ["acuity", "AcuityTable", "filter", "Filter", "Filter.__call__", "diff", "discrepancy",
-     "engine_taa", "enumerate", "eval", "eval_report", "figure10", "generate", "hardware_table",
+     "engine_taa", "enumerate", "eval", "eval_report", "export", "figure10", "generate", "hardware_table",
      "load_pattern", "optimize", "optimize_sequence", "optimize_sequence_pan", "pattern", "Pattern", "Pattern.from_json",
      "Pattern.save", "profile", "read_points", "registry", "limits", "render", "save_pattern", "sequence",
-     "Sequence.save", "sequence_compare", "sequence_eval", "sequence_pan", "sequence_search", "spectrum", "study_compare", "spectrum_1d", "table2", "table3",
+     "Sequence.save", "sequence_compare", "sequence_eval", "sequence_pan", "sequence_search", "snap", "spectrum", "study_compare", "spectrum_1d", "table2", "table3",
      "write_points"]))
 def test_random_bad_arguments_raise_only_aapat_error(name, files, monkeypatch):
     # A bad value may be a valid relative path ("nan"): whatever a case

@@ -164,7 +164,8 @@ ARRAY_CALLS = {
     "discrepancy": lambda a: aapat.discrepancy(a + 0.5),
     "spectrum": lambda a: aapat.spectrum(a + 0.5, size=8),
     "write_points": lambda a: aapat.write_points("/nonexistent-dir/x.csv", a + 0.5),
-    "diff": lambda a: aapat.diff(a + 0.5, np.full_like(a, 0.5)),
+    # Spread past the overshoot a filtered image may have (0.25 either side).
+    "diff": lambda a: aapat.diff(a * 3 + 0.5, np.full_like(a, 0.5)),
 }
 
 
@@ -354,6 +355,28 @@ def test_diff_refuses_arrays_over_the_pixel_limit_before_copying_them():
     huge = np.broadcast_to(np.float32(0.5), (6000, 6000, 3))
     with pytest.raises(ValueError, match=r"diff: reference has 6000x6000 pixels; at most 33554432"):
         aapat.diff(huge, huge)
+
+
+def test_diff_of_renders_arrays_is_renders_own_figures():
+    """One quantization rule: aapat.diff of a rendering and its reference
+    (arrays, the reference's overshoot past 0 and 1 included) gives render's
+    FLIP, RMSE and SSIM to the last digit."""
+    r = aapat.render("spiral", pattern="rgss", size=(64, 48), reference=True,
+                     reference_samples=64)
+    assert r["reference_image"].min() < 0  # the Mitchell reference rings below black
+    d = aapat.diff(r["reference_image"], r["image"])
+    assert (d["flip"], d["rmse"], d["ssim"]) == (r["flip"], r["rmse"], r["ssim"])
+    with pytest.raises(ValueError, match=r"an overshoot of up to 0.25"):
+        aapat.diff(r["reference_image"] + 2, r["image"])
+
+
+def test_snap_and_export_are_the_cli_commands(aapat_cli):
+    cli = cli_json(aapat_cli, "snap", "flipquad", "--optimize-weights")
+    py = aapat.snap("flipquad", optimize_weights=True)
+    assert {k: v for k, v in py.items() if k not in ("result", "command", "schema")} == cli
+    assert py["result"].family == "P(4,1+,2)"
+    text = aapat_cli("export", "flipquad", "--snap", "--api", "vulkan", "--grid", "2x2")
+    assert aapat.export("flipquad", snap=True, api="vulkan", grid=(2, 2)) == text
 
 
 def test_render_flip_is_aapat_diff_of_its_files(aapat_cli, tmp_path):

@@ -43,3 +43,19 @@ def test_the_worked_example_of_the_docs_runs(tmp_path):
     printed = "".join(line for line in r.stdout.splitlines(keepends=True)
                       if not line.startswith("(matplotlib"))
     assert printed == shown
+
+
+def test_import_without_numpy_says_what_to_install(tmp_path):
+    """A numpy that cannot be imported (a stand-in package that raises) makes
+    `import aapat` fail at once with a message naming what to install."""
+    import os
+    import subprocess
+    import sys
+    fake = tmp_path / "numpy"
+    fake.mkdir()
+    (fake / "__init__.py").write_text("raise ImportError('no numpy here')\n")
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(tmp_path)] + sys.path)}
+    r = subprocess.run([sys.executable, "-c", "import aapat"], capture_output=True, text=True,
+                       env=env)
+    assert r.returncode != 0
+    assert "aapat needs numpy: install it (Debian: apt-get install python3-numpy" in r.stderr

@@ -29,7 +29,7 @@ def test_the_slow_generators_report_hundredths_and_give_the_same_points():
 def test_one_point_has_the_star_discrepancy_of_its_box():
     # One point at (1/2, 1/2): the worst anchored box is [0,1)^2 minus it, 3/4.
     d = aapat.discrepancy(np.array([[0.5, 0.5]]))
-    assert d["star_exact"] and d["star_upper"] == pytest.approx(0.75)
+    assert d["star_is_exact"] and d["star_exact"] == d["star_upper"] == pytest.approx(0.75)
 
 
 def test_a_utk_file_gives_the_discrepancy_of_the_same_points_in_csv(tmp_path):

@@ -25,9 +25,9 @@ std::string discrepancy_text(const JsonObject& doc) {
   for (const L2KindInfo& kind : l2_kinds())
     if (const std::string key(kind.key); doc.contains(key))
       line(std::string(kind.label), fmt::format("{:.6g}", value(key.c_str())));
-  if (doc.contains("star_exact") && doc["star_exact"].get<bool>())
-    line("star", fmt::format("{:.6g} (exact)", value("star_upper")));
-  else if (doc.contains("star_exact"))
+  if (doc.contains("star_is_exact") && doc["star_is_exact"].get<bool>())
+    line("star", fmt::format("{:.6g} (exact)", value("star_exact")));
+  else if (doc.contains("star_is_exact"))
     line("star", fmt::format("in [{:.6g}, {:.6g}] (bounds; gap {:.3g})", value("star_lower"),
                              value("star_upper"), value("star_gap")));
   if (doc.contains("edge"))

@@ -27,7 +27,8 @@ TEST(CliDiscrepancy, DiscrepancyReportsAllThree) {
   ASSERT_EQ(r.code, 0) << r.err;
   const auto d = nlohmann::json::parse(r.out);
   EXPECT_NEAR(d["star_upper"].get<double>(), 1 - std::pow(1 - 1.0 / 8, 2), 1e-12);  // closed form
-  EXPECT_TRUE(d["star_exact"].get<bool>());
+  EXPECT_TRUE(d["star_is_exact"].get<bool>());
+  EXPECT_EQ(d["star_exact"].get<double>(), d["star_upper"].get<double>());  // the value itself
   EXPECT_GT(d["edge"].get<double>(), 0.0);
   EXPECT_EQ(run({"discrepancy", "no-such"}).code, 1);
   const std::string bad = temp_path("bad.csv");

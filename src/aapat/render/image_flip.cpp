@@ -4,6 +4,10 @@
 
 namespace aapat {
 
+float stored_value(double v) {
+  return static_cast<float>(grey_level(v)) / 255.0f;
+}
+
 ColorImage color_image(const Image& image) {
   ColorImage c{image.width, image.height,
                std::vector<float>(static_cast<size_t>(image.width) * image.height * 3)};
@@ -12,8 +16,7 @@ ColorImage color_image(const Image& image) {
       const size_t k = (static_cast<size_t>(j) * image.width + i) * image.channels;
       float* out = &c.rgb[3 * (static_cast<size_t>(image.height - 1 - j) * image.width + i)];
       for (size_t ch = 0; ch < 3; ++ch)  // grey: R = G = B
-        out[ch] = static_cast<float>(grey_level(image.values[k + (image.channels == 3 ? ch : 0)])) /
-                  255.0f;
+        out[ch] = stored_value(image.values[k + (image.channels == 3 ? ch : 0)]);
     }
   return c;
 }

@@ -9,6 +9,18 @@
 
 namespace aapat {
 
+// The value a PNG written from `v` holds, back in [0, 1]: v's 8-bit level
+// (grey_level, which rounds and clamps) over 255. The one quantization rule
+// of render's FLIP, `aapat diff` (whose PNGs hold levels) and Python's diff
+// on arrays, so that the three agree to the last digit on the same images.
+float stored_value(double v);
+
+// How far outside [0, 1] an image's value may lie and still be taken (and
+// clamped, as a PNG stores it): a filtered reference's overshoot (the
+// negative lobes of Mitchell-Netravali or Lanczos ring past black and white
+// at a hard edge). Python's diff refuses values further out.
+inline constexpr double kMaxOvershoot = 0.25;
+
 // The image's levels as a colour image (grey: R = G = B), rows from the top.
 ColorImage color_image(const Image& image);
 

@@ -120,7 +120,9 @@ JsonObject discrepancy_json(const std::string& source, const DiscrepancyReport& 
   if (d.star)
     doc.update(JsonObject{{"star_lower", d.star->lower},
                           {"star_upper", d.star->upper},
-                          {"star_exact", d.star->exact},
+                          // The exact value where it was computed, else null; the flag beside it.
+                          {"star_exact", d.star->exact ? JsonObject(d.star->upper) : nullptr},
+                          {"star_is_exact", d.star->exact},
                           {"star_gap", d.star->upper - d.star->lower}});
   if (d.edge)
     doc.update(JsonObject{{"edge", d.edge->value}, {"edge_normal_deg", d.edge->normal_deg}});

@@ -19,7 +19,8 @@ TEST(StudyJson, DiscrepancyOfTheCentreHasItsClosedForms) {
   EXPECT_EQ(doc["source"], "centre");
   EXPECT_EQ(doc["points"], 1);
   EXPECT_NEAR(doc["l2_star"].get<double>(), std::sqrt(23.0 / 288.0), 1e-12);
-  EXPECT_TRUE(doc["star_exact"].get<bool>());
+  EXPECT_TRUE(doc["star_is_exact"].get<bool>());
+  EXPECT_EQ(doc["star_exact"].get<double>(), doc["star_upper"].get<double>());
   EXPECT_NEAR(doc["star_upper"].get<double>(), 0.75, 1e-12);
   EXPECT_FALSE(doc.contains("edge"));
   EXPECT_FALSE(discrepancy_json("", d).contains("source"));  // Python's array has no source
