@@ -95,8 +95,7 @@ Pattern pattern_of(const Json& request, const char* key = "pattern") {
   if (!request.contains(key)) throw Error(fmt::format("{}: missing", key));
   const Json& v = request[key];
   if (v.is_string()) {
-    const std::string name = v.get<std::string>();
-    return in_aapat_catalog(name) ? aapat_catalog_pattern(name) : catalog_pattern(name);
+    return named_pattern(v.get<std::string>());  // the CLI's message for a name it lacks
   }
   return pattern_from_json(v.dump(), key);
 }

@@ -286,11 +286,23 @@
     if (!quick) {
       drawWeights();
       refreshExport();
+      // A comparison shown is kept current: every change to the pattern or
+      // the objective (an optimization's result included) redraws it.
+      if ($('compare-table').rows.length > 0) compare();
       writeHash();
     }
     stats.updates += 1;
   }
+  // The export profile: the one chosen if it can take the pattern, else the
+  // first that can (FLIPQUAD's shared samples need a 2x2 grid: not tier 1).
+  function fitExportProfile(pattern) {
+    const fits = (api) => !ask('exportText', { pattern, api, snap: true, objective: objectiveText() }).error;
+    if (fits($('api').value)) return;
+    const first = [...$('api').options].map((o) => o.value).find(fits);
+    if (first) $('api').value = first;
+  }
   function setPattern(pattern, catalogName) {
+    fitExportProfile(pattern);
     state.pattern = pattern;
     state.catalogName = catalogName || null;
     $('catalog').value = catalogName && [...$('catalog').options].some((o) => o.value === catalogName)

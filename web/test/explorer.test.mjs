@@ -114,6 +114,22 @@ try {
   const la = cli('eval', 'flipquad', '--objective', 'laine-aila', '--json').rows[0].e2;
   check(text === '0.3643' && near(await e2Shown(), la, 1e-12), `#pattern=flipquad&objective=laine-aila shows ${text} (Laine & Aila Table 2: 0.3643)`);
 
+  // Export opens on a profile that takes the pattern: FLIPQUAD's shared
+  // samples need a 2x2 grid, so not the first profile (D3D12 tier 1).
+  await open('#pattern=flipquad');
+  const exportText = await page.$eval('#export-text', (e) => e.value);
+  const api = await page.$eval('#api', (e) => e.value);
+  check(!exportText.startsWith('(not exportable') && exportText.includes(`profile=${api}`),
+    `FLIPQUAD's export opens on a profile that takes it: ${api}`);
+  // The Compare table follows every change: compare with RGSS, then change
+  // the pattern, and its first row is the new pattern's E2.
+  await page.$eval('#compare-select', (e) => { for (const o of e.options) o.selected = o.value === 'rgss'; });
+  await page.click('#compare');
+  await page.select('#catalog', 'msaa-4');
+  const firstRow = await page.$eval('#compare-table', (t) => Number(t.rows[1].cells[3].textContent));
+  const msaa4 = cli('eval', 'msaa-4', '--json').rows[0].e2;
+  check(firstRow === Number(msaa4.toFixed(4)), `the Compare table follows a change of pattern: ${firstRow} (msaa-4's E2)`);
+
   // Every objective form a link can hold: the page shows the CLI's E2 for it,
   // and the link the page writes reopens the same objective (read by the
   // library's parser, never split on '=' in the page).
@@ -248,7 +264,8 @@ try {
 
   await open('#pattern=flipqaud');
   const m3 = await message();
-  check(/^link: /.test(m3) && /flipquad/.test(m3), `misspelt catalog name in the link: "${m3}"`);
+  check(/^link: /.test(m3) && /flipquad/.test(m3) && /aapat-8/.test(m3),
+    `misspelt catalog name in the link, the aapat names listed as the CLI lists them: "${m3.slice(0, 120)}..."`);
   await open('#design={"tile":[1,1],');
   const m4 = await message();
   check(/link: the design is not valid JSON/.test(m4), `a link whose design does not parse: "${m4}"`);

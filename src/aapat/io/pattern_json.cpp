@@ -177,6 +177,10 @@ Pattern resolve_pattern(const std::string& name_or_path) {
     throw Error(fmt::format("pattern '{}': it is a folder, not a pattern file", name_or_path));
   if (is_pattern_path(name_or_path) || std::filesystem::is_regular_file(name_or_path, ec))
     return load_pattern_file(name_or_path);
+  return named_pattern(name_or_path);
+}
+
+Pattern named_pattern(const std::string& name_or_path) {
   if (in_aapat_catalog(name_or_path)) return aapat_catalog_pattern(name_or_path);
   if (pattern_registry().find(name_or_path) || name_or_path.starts_with("grid-"))
     return catalog_pattern(name_or_path);

@@ -22,5 +22,8 @@ void save_pattern_file(const Pattern& p, const std::string& path);
 // A catalog name or a path to a pattern file (anything ending in .json or
 // naming an existing file).
 Pattern resolve_pattern(const std::string& name_or_path);
+// A catalog or aapat catalog pattern by name, no file read (the page's
+// names); the same message as resolve_pattern for a name that is neither.
+Pattern named_pattern(const std::string& name);
 
 }  // namespace aapat
