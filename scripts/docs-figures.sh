@@ -114,24 +114,22 @@ cp "$flip_tmp/mesh-reference.png" "$img/flip-mesh-reference.png"
 rm -rf "$flip_tmp"
 # Every registry of specs, as aapat list prints it (the same entries the parsers use).
 "$aapat" list > docs/registry.txt
-# docs/limits.md's table is `aapat limits --markdown` (the library's table of
-# limits), set between its two markers; the prose around it is kept.
-"$aapat" limits --markdown | python3 -c '
-import re, sys
-doc = open(sys.argv[1]).read()
-begin, end = "<!-- the table: aapat limits --markdown -->\n", "<!-- end of the table -->\n"
-head, rest = doc.split(begin)
-sys.stdout.write(head + begin + sys.stdin.read() + end + rest.split(end, 1)[1])
-' "$root/docs/limits.md" > docs/limits.md.new
-mv docs/limits.md.new docs/limits.md
-# docs/cli.md's option tables are `aapat list --modes` (the tables the
-# commands enforce), set between their two markers.
-"$aapat" list --modes | python3 -c '
+# Standard input set between two marker lines of a committed doc, the prose
+# around them kept: splice DOC BEGIN-MARKER END-MARKER.
+splice() {
+  python3 -c '
 import sys
 doc = open(sys.argv[1]).read()
-begin, end = "<!-- the tables: aapat list --modes -->\n", "<!-- end of the tables -->\n"
+begin, end = sys.argv[2] + "\n", sys.argv[3] + "\n"
 head, rest = doc.split(begin)
 sys.stdout.write(head + begin + sys.stdin.read() + end + rest.split(end, 1)[1])
-' "$root/docs/cli.md" > docs/cli.md.new
-mv docs/cli.md.new docs/cli.md
+' "$root/$1" "$2" "$3" > "$1.new"
+  mv "$1.new" "$1"
+}
+# docs/limits.md's table is `aapat limits --markdown` (the library's table of limits).
+"$aapat" limits --markdown |
+  splice docs/limits.md "<!-- the table: aapat limits --markdown -->" "<!-- end of the table -->"
+# docs/cli.md's option tables are `aapat list --modes` (the tables the commands enforce).
+"$aapat" list --modes |
+  splice docs/cli.md "<!-- the tables: aapat list --modes -->" "<!-- end of the tables -->"
 echo "figures written under docs/"

@@ -343,29 +343,30 @@ OptionModes render_option_modes() {
       "pattern",        "generator", "samples",       "filter",  "reference",
       "error",          "histogram", "histogram-svg", "mode",    "shading-point",
       "texture-filter", "lod",       "mipmap",        "measure", "adaptive"};
+  const std::vector<std::string> refinement = {"threshold", "max-depth", "max-samples",
+                                               "per-square", "refinement-map"},
+                                 sheet = {"rows", "columns", "zoom", "table"},
+                                 temporal = {"model",   "alpha",  "window",
+                                             "resolve", "frames", "cut"};
   std::vector<std::string> adaptive = single;
-  for (const char* a : {"threshold", "max-depth", "max-samples", "per-square", "refinement-map"})
-    adaptive.push_back(a);
-  std::map<std::string, std::string> not_single;
-  for (const char* a : {"threshold", "max-depth", "max-samples", "per-square", "refinement-map"})
-    not_single[a] = "add --adaptive CRITERION";
-  for (const char* g : {"rows", "columns", "zoom", "table"}) not_single[g] = "add --grid";
-  for (const char* t : {"model", "alpha", "window", "resolve", "frames", "cut"})
-    not_single[t] = "add --sequence S for temporal accumulation";
-  std::map<std::string, std::string> not_grid;
-  for (const std::string& o : adaptive)
-    not_grid[o] =
-        "a sheet takes its samplings from --rows and its filters from --columns, each with "
-        "+KEY=VALUE options";
-  for (const char* t : {"model", "alpha", "window", "resolve", "frames", "cut"})
-    not_grid[t] = "add --sequence S (without --grid) for temporal accumulation";
-  std::map<std::string, std::string> not_temporal;
-  for (const std::string& o : adaptive)
-    not_temporal[o] =
-        "a sequence's frames render with their own weights (or --resolve F) and are always "
-        "measured";
-  for (const char* g : {"rows", "columns", "zoom", "table"})
-    not_temporal[g] = "a sheet renders no sequence";
+  adaptive.insert(adaptive.end(), refinement.begin(), refinement.end());
+  // What to give instead: `instead` for every option of `options`.
+  const auto each = [](std::map<std::string, std::string>& to,
+                       const std::vector<std::string>& options, const std::string& instead) {
+    for (const std::string& o : options) to[o] = instead;
+  };
+  std::map<std::string, std::string> not_single, not_grid, not_temporal;
+  each(not_single, refinement, "add --adaptive CRITERION");
+  each(not_single, sheet, "add --grid");
+  each(not_single, temporal, "add --sequence S for temporal accumulation");
+  each(not_grid, adaptive,
+       "a sheet takes its samplings from --rows and its filters from --columns, each with "
+       "+KEY=VALUE options");
+  each(not_grid, temporal, "add --sequence S (without --grid) for temporal accumulation");
+  each(not_temporal, adaptive,
+       "a sequence's frames render with their own weights (or --resolve F) and are always "
+       "measured");
+  each(not_temporal, sheet, "a sheet renders no sequence");
   OptionModes t;
   t.command = "render";
   t.selectors = {"grid", "sequence", "adaptive"};
@@ -384,20 +385,16 @@ OptionModes render_option_modes() {
               "grid",
               "sequence"};
   std::map<std::string, std::string> not_adaptive = not_single;
-  for (const char* a : {"threshold", "max-depth", "max-samples", "per-square", "refinement-map"})
-    not_adaptive.erase(a);
+  for (const std::string& a : refinement) not_adaptive.erase(a);
   t.modes = {
       {"the single-rendering mode", single, not_single, {"spiral", "--pattern", "rgss"}},
       {"the adaptive mode (--adaptive)",
        adaptive,
        not_adaptive,
        {"spiral", "--pattern", "rgss", "--adaptive", "contrast"}},
-      {"the sheet mode (--grid)",
-       {"rows", "columns", "zoom", "table"},
-       not_grid,
-       {"spiral", "--grid", "-o", "sheet.png"}},
+      {"the sheet mode (--grid)", sheet, not_grid, {"spiral", "--grid", "-o", "sheet.png"}},
       {"the temporal mode (--sequence)",
-       {"model", "alpha", "window", "resolve", "frames", "cut"},
+       temporal,
        not_temporal,
        {"spiral", "--sequence", "halton:frames=4"}},
   };
