@@ -25,8 +25,7 @@ std::string progress_of(const std::vector<std::string>& args) {
 
 TEST(Progress, LinesOffATerminalAndNoneWhenQuiet) {
   ::setenv("AAPAT_PROGRESS_SECONDS", "0", 1);
-  const std::vector<std::string> command = {"enumerate", "--optimize", "--objective",
-                                            "laine-aila"};
+  const std::vector<std::string> command = {"enumerate", "--optimize", "--objective", "laine-aila"};
   const std::string lines = progress_of(command);
   EXPECT_NE(lines.find("enumerate: 1/85 E2"), std::string::npos) << lines;
   EXPECT_NE(lines.find("enumerate: 85/85"), std::string::npos) << lines;

@@ -47,7 +47,8 @@ TEST(GltfPrescan, DeepNodesAreRefusedBeforeAssimp) {
             "model 'm.gltf': nodes nested more than 256 deep (docs/limits.md)");
   // 255 nested nodes are read.
   std::string fine = "[";
-  for (int i = 0; i < 255; ++i) fine += fmt::format("{}{{\"children\": [{}]}}", i ? "," : "", i + 1);
+  for (int i = 0; i < 255; ++i)
+    fine += fmt::format("{}{{\"children\": [{}]}}", i ? "," : "", i + 1);
   fine += ",{\"mesh\": 0}]";
   EXPECT_NO_THROW(prescan_gltf(triangle_with(fine), "m.gltf"));
 }
