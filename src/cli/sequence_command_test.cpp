@@ -33,23 +33,21 @@ TEST(SequenceCli, GenerateWritesAFileThatEvalReads) {
   EXPECT_NEAR(doc["rows"][0]["worst_e2"].get<double>(), 0.1347, 5e-5);
 }
 
-// --ratio evaluates at a render scale, under the model `optimize --sequence
-// --ratio` searched: there aapat-upscale-1.5 beats Halton(2,3) of 18 phases,
-// its own period, on worst E2 (0.0963 against 0.1041); without a ratio the
-// numbers are the one-pixel model's, and a ratio below 1 is refused.
+// --ratio evaluates at a render scale (small here: the ASan build runs it;
+// the catalog's claim at 1.5 is python/tests/test_faces.py's): the JSON
+// says the ratio, the numbers are not the one-pixel model's, and a ratio
+// below 1 is refused.
 TEST(SequenceCli, EvalTakesARatio) {
   const auto at = [](const std::vector<std::string>& extra) {
-    std::vector<std::string> args = {"sequence", "eval", "halton:frames=18", "aapat-upscale-1.5",
-                                     "--json"};
+    std::vector<std::string> args = {"sequence",       "eval", "halton:frames=4",
+                                     "--curve-frames", "2",    "--json"};
     args.insert(args.end(), extra.begin(), extra.end());
     const auto r = run(args);
     EXPECT_EQ(r.code, 0) << r.err;
     return nlohmann::json::parse(r.out);
   };
-  const auto scaled = at({"--ratio", "1.5"}), plain = at({});
-  EXPECT_EQ(scaled["ratio"], 1.5);
-  EXPECT_NEAR(scaled["rows"][0]["worst_e2"].get<double>(), 0.1041, 5e-5);
-  EXPECT_NEAR(scaled["rows"][1]["worst_e2"].get<double>(), 0.0963, 5e-5);
+  const auto scaled = at({"--ratio", "2"}), plain = at({});
+  EXPECT_EQ(scaled["ratio"], 2.0);
   EXPECT_NE(plain["rows"][0]["worst_e2"], scaled["rows"][0]["worst_e2"]);
   const auto bad = run({"sequence", "eval", "halton:frames=8", "--ratio", "0.5"});
   EXPECT_NE(bad.code, 0);
