@@ -33,10 +33,16 @@ std::optional<std::string> nearest_name(std::string_view name,
                                         const std::vector<std::string>& candidates) {
   std::optional<std::string> best;
   size_t best_distance = 0;
+  constexpr size_t kMostAllowed = 3;
   for (const std::string& c : candidates) {
-    const size_t d = edit_distance(name, c);
-    const size_t allowed = std::clamp<size_t>(std::max(name.size(), c.size()) / 3, 1, 3);
     const bool prefix = name.size() >= 3 && c.starts_with(name);
+    // The distance is at least the difference in length: past the most ever
+    // allowed, no need to compute it (a 100 KB argument against every name
+    // took seconds).
+    const size_t gap = name.size() > c.size() ? name.size() - c.size() : c.size() - name.size();
+    if (gap > kMostAllowed && !prefix) continue;
+    const size_t d = edit_distance(name, c);
+    const size_t allowed = std::clamp<size_t>(std::max(name.size(), c.size()) / 3, 1, kMostAllowed);
     if ((d <= allowed || prefix) && (!best || d < best_distance)) {
       best = c;
       best_distance = d;
