@@ -12,9 +12,44 @@
 namespace aapat {
 namespace {
 
+// sin and exp as the C library computes them: fast, for a filter's value
+// at a sample (a render calls it per sample and tap).
+double libm_sin(double x) {
+  return std::sin(x);
+}
+double libm_exp(double x) {
+  return std::exp(x);
+}
+
+template <double (*Sin)(double)>
 double sinc(double x) {
   if (std::abs(x) < 1e-8) return 1.0 - (kPi * x) * (kPi * x) / 6.0;
-  return portable_sin(kPi * x) / (kPi * x);
+  return Sin(kPi * x) / (kPi * x);
+}
+
+// The impulse response with the given sin and exp.
+template <double (*Sin)(double), double (*Exp)(double)>
+double shape_value_with(const FilterShape& shape, double x) {
+  const double ax = std::abs(x);
+  return std::visit(
+      Overloaded{[&](const BoxShape& s) { return ax <= s.width / 2 ? 1.0 : 0.0; },
+                 [&](const TentShape& s) { return std::max(0.0, 1.0 - ax / s.radius); },
+                 [&](const GaussianShape& s) {
+                   return ax <= s.radius ? Exp(-x * x / (2 * s.sigma * s.sigma)) : 0.0;
+                 },
+                 [&](const MitchellShape& s) { return MitchellCubic(s.b, s.c)(x); },
+                 [&](const LanczosShape& s) {
+                   return ax < s.lobes ? sinc<Sin>(x) * sinc<Sin>(x / s.lobes) : 0.0;
+                 },
+                 [&](const LanczosGaussianShape& s) {
+                   return ax < s.lobes
+                              ? Exp(-x * x / (2 * s.sigma * s.sigma)) * sinc<Sin>(x / s.lobes)
+                              : 0.0;
+                 },
+                 [&](const BlinnNiceShape&) {
+                   return ax < 4 ? sinc<Sin>(x / 2) * sinc<Sin>(x / 4) : 0.0;
+                 }},
+      shape);
 }
 
 // Pieces on [0, radius]: the breakpoints of a piecewise polynomial, or 1/16
@@ -46,23 +81,10 @@ double shape_radius(const FilterShape& shape) {
                     shape);
 }
 
+// The tables the metric integrates are built from aapat's own sin and exp
+// (core/portable_math.h): the same bits on every platform, so E2 is too.
 double shape_value(const FilterShape& shape, double x) {
-  const double ax = std::abs(x);
-  return std::visit(
-      Overloaded{
-          [&](const BoxShape& s) { return ax <= s.width / 2 ? 1.0 : 0.0; },
-          [&](const TentShape& s) { return std::max(0.0, 1.0 - ax / s.radius); },
-          [&](const GaussianShape& s) {
-            return ax <= s.radius ? portable_exp(-x * x / (2 * s.sigma * s.sigma)) : 0.0;
-          },
-          [&](const MitchellShape& s) { return MitchellCubic(s.b, s.c)(x); },
-          [&](const LanczosShape& s) { return ax < s.lobes ? sinc(x) * sinc(x / s.lobes) : 0.0; },
-          [&](const LanczosGaussianShape& s) {
-            return ax < s.lobes ? portable_exp(-x * x / (2 * s.sigma * s.sigma)) * sinc(x / s.lobes)
-                                : 0.0;
-          },
-          [&](const BlinnNiceShape&) { return ax < 4 ? sinc(x / 2) * sinc(x / 4) : 0.0; }},
-      shape);
+  return shape_value_with<portable_sin, portable_exp>(shape, x);
 }
 
 Filter::Filter(FilterShape shape, std::string name)
@@ -165,7 +187,7 @@ int Filter::locate(double x, double* t) const {
 }
 
 double Filter::shape_value_at(double x) const {
-  return shape_value(shape_, x);
+  return shape_value_with<libm_sin, libm_exp>(shape_, x);
 }
 
 double Filter::step_response(double a) const {

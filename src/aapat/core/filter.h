@@ -75,7 +75,9 @@ class MitchellCubic {
 };
 
 double shape_radius(const FilterShape& shape);
-// The unnormalized impulse response.
+// The unnormalized impulse response, from aapat's own sin and exp (the same
+// bits on every platform: the metric's tables are built from it). A
+// Filter's value() uses the C library's, fast, for renders.
 double shape_value(const FilterShape& shape, double x);
 
 class Filter {
