@@ -1,5 +1,6 @@
 #include "aapat/core/portable_math.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -182,6 +183,46 @@ double portable_log(double x) {
   if (std::isinf(x)) return x;
   const DD v = log_dd(x);
   return v.hi + v.lo;
+}
+
+double portable_exp_fast(double x) {
+  if (std::isnan(x)) return x;
+  if (x > 709.78) return std::numeric_limits<double>::infinity();
+  if (x < -745.1) return 0.0;
+  const double k = std::nearbyint(x * 0x1.71547652b82fep+0);
+  // x - k log 2 in two parts (Cody and Waite): k log2_hi is exact for |k| < 2^20.
+  const double r = (x - k * 0x1.62e42fee00000p-1) - k * 0x1.a39ef35793c76p-33;
+  // 1/n! for n = 0..13, each the correctly rounded quotient of two exact
+  // doubles, made at compile time; |r| <= 0.347, so r^14/14! is below 2^-66.
+  static constexpr auto kInvFactorial = [] {
+    std::array<double, 14> f{};
+    double n_factorial = 1;
+    for (int n = 0; n < 14; ++n) {
+      if (n > 0) n_factorial *= n;
+      f[static_cast<size_t>(n)] = 1.0 / n_factorial;
+    }
+    return f;
+  }();
+  double p = kInvFactorial[13];
+  for (int n = 12; n >= 0; --n) p = p * r + kInvFactorial[static_cast<size_t>(n)];
+  const int e = static_cast<int>(k), half = e / 2;
+  return std::ldexp(std::ldexp(p, half), e - half);
+}
+
+double portable_log_fast(double x) {
+  if (std::isnan(x) || x < 0) return std::numeric_limits<double>::quiet_NaN();
+  if (x == 0) return -std::numeric_limits<double>::infinity();
+  if (std::isinf(x)) return x;
+  int e = 0;
+  double m = std::frexp(x, &e);
+  if (m < 0x1.6a09e667f3bcdp-1) {
+    m *= 2;
+    --e;
+  }
+  const double s = (m - 1) / (m + 1), s2 = s * s;  // |s| < 0.172
+  double p = 1.0 / 23;
+  for (int n = 21; n >= 1; n -= 2) p = p * s2 + 1.0 / n;
+  return 2 * s * p + e * 0x1.62e42fefa39efp-1;
 }
 
 double portable_pow(double x, double y) {

@@ -62,6 +62,19 @@ TEST(PortableMath, WithinOneUlpOfTheCLibrary) {
   EXPECT_GE(equal, total * 999 / 1000) << equal << " of " << total;
 }
 
+// The fast forms: within two units in the last place of the C library.
+TEST(PortableMath, FastExpAndLogWithinTwoUlps) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> exponent(-700, 700), power(-300, 300);
+  for (int i = 0; i < 20000; ++i) {
+    const double e = exponent(rng), l = std::pow(10.0, power(rng));
+    ASSERT_LE(ulps(portable_exp_fast(e), std::exp(e)), 2) << e;
+    ASSERT_LE(ulps(portable_log_fast(l), std::log(l)), 2) << l;
+  }
+  EXPECT_EQ(portable_exp_fast(0.0), 1.0);
+  EXPECT_EQ(portable_log_fast(1.0), 0.0);
+}
+
 TEST(PortableMath, PythagoreanIdentityToTheLastBits) {
   for (int d = 0; d < 720; ++d) {
     const double x = d * 0x1.921fb54442d18p+0 / 90;

@@ -81,7 +81,7 @@ void shuffle(RandomIt first, RandomIt last, std::mt19937_64& rng) {
 
 // Standard normal draws by Marsaglia's polar method, the second of each pair
 // kept for the next call, as libstdc++'s std::normal_distribution draws them
-// (its logarithm aapat's own: core/portable_math.h).
+// (its logarithm aapat's own, the same bits everywhere: core/portable_math.h).
 class Gaussian {
  public:
   Gaussian(double mean = 0, double sd = 1) : mean_(mean), sd_(sd) {}
@@ -97,7 +97,7 @@ class Gaussian {
         y = 2.0 * unit_double(rng) - 1.0;
         r2 = x * x + y * y;
       } while (r2 > 1.0 || r2 == 0.0);
-      const double mult = std::sqrt(-2 * portable_log(r2) / r2);
+      const double mult = std::sqrt(-2 * portable_log_fast(r2) / r2);
       kept_ = x * mult;
       saved_ = true;
       v = y * mult;
