@@ -384,11 +384,15 @@ std::shared_ptr<const Mesh> read_mesh(const std::string& path) {
   constexpr size_t kKept = 4;
   static std::mutex lock;
   static std::vector<Kept> kept;
+  // The entry is copied under the lock and its files read outside it: a
+  // large model's re-read does not hold up other threads' lookups.
+  std::optional<Kept> candidate;
   {
     std::lock_guard<std::mutex> hold(lock);
     for (const Kept& k : kept)
-      if (k.path == path && unchanged(k.read)) return k.mesh;
+      if (k.path == path) candidate = k;
   }
+  if (candidate && unchanged(candidate->read)) return candidate->mesh;
   FilesRead read;
   std::shared_ptr<const Mesh> mesh = load_mesh(path, read);
   std::lock_guard<std::mutex> hold(lock);
