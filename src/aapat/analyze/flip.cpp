@@ -1,6 +1,7 @@
 #include "aapat/analyze/flip.h"
 
 #include <fmt/format.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
@@ -161,111 +162,131 @@ FeatureFilters feature_filters(double ppd) {
   return f;
 }
 
-using Plane = std::vector<float>;  // width * height, rows from the top
+// One image's half of FLIP, per pixel: its CSF-filtered colour as
+// Hunt-adjusted CIELab (steps 2, 3) and the edge and point strength of its
+// luminance (step 4). Written for a band of rows at a time into `out`, so
+// that the intermediate planes are a few rows tall and reused: a 1920x1080
+// pair once touched 30 full-size planes, and on this kind of machine the
+// page faults of fresh memory cost more than the arithmetic.
+struct HalfPlanes {
+  float *l, *a, *b, *edge, *point;  // each `width` wide, the band's rows
+};
 
-// Row filters along x with the edge pixel repeated: out[p][i] = sum_k
-// taps[p][k] in[i + k - r]. `taps` share one radius.
-void filter_rows(const Plane& in, int w, int h, const std::vector<const Taps*>& taps,
-                 const std::vector<Plane*>& out) {
-  const int r = taps[0]->radius;
-  tbb::parallel_for(0, h, [&](int j) {
-    throw_if_interrupted();
-    std::vector<float> padded(static_cast<size_t>(w + 2 * r));
-    const float* row = in.data() + static_cast<size_t>(j) * w;
-    for (int i = 0; i < w + 2 * r; ++i) padded[i] = row[std::clamp(i - r, 0, w - 1)];
-    for (size_t p = 0; p < taps.size(); ++p) {
-      float* o = out[p]->data() + static_cast<size_t>(j) * w;
-      const float* t = taps[p]->w.data();
-      // Tap by tap over the whole row, so that the inner loop vectorizes.
-      std::fill(o, o + w, 0.0f);
-      for (int k = 0; k <= 2 * r; ++k) {
-        const float tk = t[k];
-        const float* in_k = padded.data() + k;
-        for (int i = 0; i < w; ++i) o[i] += tk * in_k[i];
-      }
-    }
-  });
-}
+struct Filters {
+  CsfFilters csf;
+  FeatureFilters feature;
+  int halo() const { return std::max(csf.y.radius, feature.g.radius); }
+};
 
-// The same along y, one output row at a time: whole rows accumulated, so
-// the inner loop runs along memory.
-void filter_column(const Plane& in, int w, int h, int j, const Taps& taps, float* out) {
+// Scratch rows of one band: the opponent channels, their row-filtered
+// versions and the luminance's, for the band's rows and a halo above and
+// below (the column filters' reach).
+struct BandScratch {
+  std::vector<float> y, cx, cz, y1, cx1, cz1, cz2, gx, dx, ddx, col, padded;
+  void resize(size_t n, int w, int halo) {
+    for (auto* v : {&y, &cx, &cz, &y1, &cx1, &cz1, &cz2, &gx, &dx, &ddx}) v->resize(n);
+    col.resize(static_cast<size_t>(8) * w);
+    padded.resize(static_cast<size_t>(w + 2 * halo));
+  }
+};
+
+// out[i] = sum_k taps[k] in[i + k - r] with the edge pixel repeated.
+void filter_row(const float* row, int w, const Taps& taps, float* padded, float* out) {
+  const int r = taps.radius;
+  for (int i = 0; i < w + 2 * r; ++i) padded[i] = row[std::clamp(i - r, 0, w - 1)];
+  // Tap by tap over the whole row, so that the inner loop vectorizes.
   std::fill(out, out + w, 0.0f);
-  for (int k = -taps.radius; k <= taps.radius; ++k) {
-    const float t = taps.w[static_cast<size_t>(k + taps.radius)];
-    const float* row = in.data() + static_cast<size_t>(std::clamp(j + k, 0, h - 1)) * w;
-    for (int i = 0; i < w; ++i) out[i] += t * row[i];
+  for (int k = 0; k <= 2 * r; ++k) {
+    const float tk = taps.w[static_cast<size_t>(k)];
+    const float* in_k = padded + k;
+    for (int i = 0; i < w; ++i) out[i] += tk * in_k[i];
   }
 }
 
-// An image in YyCxCz, one plane per channel.
-struct Opponent {
-  Plane y, cx, cz;
-};
-
-Opponent to_opponent(const ColorImage& img) {
-  const size_t n = img.pixels();
-  Opponent o{Plane(n), Plane(n), Plane(n)};
-  tbb::parallel_for(size_t{0}, n, [&](size_t p) {
-    throw_if_interrupted();
-    const float* c = &img.rgb[3 * p];
-    const Vec3f v = xyz_to_ycxcz(
-        rgb_to_xyz({srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2])}));
-    o.y[p] = v.x, o.cx[p] = v.y, o.cz[p] = v.z;
-  });
-  return o;
+// The same along y for output row j, whose neighbours are rows of the band
+// plane `in` starting at image row `first`: whole rows accumulated, so the
+// inner loop runs along memory.
+void filter_column(const std::vector<float>& in, int w, int h, int first, int j, const Taps& taps,
+                   float* out) {
+  std::fill(out, out + w, 0.0f);
+  for (int k = -taps.radius; k <= taps.radius; ++k) {
+    const float t = taps.w[static_cast<size_t>(k + taps.radius)];
+    const int row = std::clamp(j + k, 0, h - 1) - first;
+    const float* src = in.data() + static_cast<size_t>(row) * w;
+    for (int i = 0; i < w; ++i) out[i] += t * src[i];
+  }
 }
 
-// Step 2 and 3 for one image: the CSF-filtered colour of each pixel as
-// Hunt-adjusted CIELab. Returned as three planes (L, a, b).
-Opponent filtered_lab(const Opponent& o, int w, int h, const CsfFilters& f) {
-  const size_t n = static_cast<size_t>(w) * h;
-  Plane y1(n), cx1(n), cz1(n), cz2(n);
-  filter_rows(o.y, w, h, {&f.y}, {&y1});
-  filter_rows(o.cx, w, h, {&f.cx}, {&cx1});
-  filter_rows(o.cz, w, h, {&f.cz1, &f.cz2}, {&cz1, &cz2});
-  Opponent lab{Plane(n), Plane(n), Plane(n)};
-  tbb::parallel_for(0, h, [&](int j) {
+// Rows [j0, j1) of one image's half into `out` (row j0 first).
+void half_band(const ColorImage& img, const Filters& f, int j0, int j1, BandScratch& s,
+               const HalfPlanes& out) {
+  const int w = img.width, h = img.height, halo = f.halo();
+  const int first = std::max(0, j0 - halo), last = std::min(h, j1 + halo);
+  s.resize(static_cast<size_t>(last - first) * w, w, halo);
+  float* padded = s.padded.data();
+  for (int j = first; j < last; ++j) {
     throw_if_interrupted();
-    std::vector<float> y(w), cx(w), c1(w), c2(w);
-    filter_column(y1, w, h, j, f.y, y.data());
-    filter_column(cx1, w, h, j, f.cx, cx.data());
-    filter_column(cz1, w, h, j, f.cz1, c1.data());
-    filter_column(cz2, w, h, j, f.cz2, c2.data());
+    const size_t o = static_cast<size_t>(j - first) * w;
+    const float* c = &img.rgb[3 * static_cast<size_t>(j) * w];
+    for (int i = 0; i < w; ++i, c += 3) {
+      const Vec3f v = xyz_to_ycxcz(
+          rgb_to_xyz({srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2])}));
+      s.y[o + i] = v.x, s.cx[o + i] = v.y, s.cz[o + i] = v.z;
+    }
+    filter_row(&s.y[o], w, f.csf.y, padded, &s.y1[o]);
+    filter_row(&s.cx[o], w, f.csf.cx, padded, &s.cx1[o]);
+    filter_row(&s.cz[o], w, f.csf.cz1, padded, &s.cz1[o]);
+    filter_row(&s.cz[o], w, f.csf.cz2, padded, &s.cz2[o]);
+    // The luminance (Y + 16) / 116, relative in [0, 1], for the features;
+    // y1 is done with s.y's row, so the row becomes the luminance.
+    for (int i = 0; i < w; ++i) s.y[o + i] = (s.y[o + i] + 16.0f) / 116.0f;
+    filter_row(&s.y[o], w, f.feature.g, padded, &s.gx[o]);
+    filter_row(&s.y[o], w, f.feature.dg, padded, &s.dx[o]);
+    filter_row(&s.y[o], w, f.feature.ddg, padded, &s.ddx[o]);
+  }
+  float* col = s.col.data();
+  float *y = col, *cx = col + w, *c1 = col + 2 * w, *c2 = col + 3 * w;
+  float *dxy = col + 4 * w, *ddxy = col + 5 * w, *dyx = col + 6 * w, *ddyx = col + 7 * w;
+  for (int j = j0; j < j1; ++j) {
+    filter_column(s.y1, w, h, first, j, f.csf.y, y);
+    filter_column(s.cx1, w, h, first, j, f.csf.cx, cx);
+    filter_column(s.cz1, w, h, first, j, f.csf.cz1, c1);
+    filter_column(s.cz2, w, h, first, j, f.csf.cz2, c2);
+    filter_column(s.dx, w, h, first, j, f.feature.g, dxy);    // d/dx, smoothed along y
+    filter_column(s.ddx, w, h, first, j, f.feature.g, ddxy);  // d2/dx2, smoothed along y
+    filter_column(s.gx, w, h, first, j, f.feature.dg, dyx);   // d/dy of the x-smoothed image
+    filter_column(s.gx, w, h, first, j, f.feature.ddg, ddyx);
+    const size_t o = static_cast<size_t>(j - j0) * w;
     for (int i = 0; i < w; ++i) {
       Vec3f rgb = xyz_to_rgb(ycxcz_to_xyz({y[i], cx[i], c1[i] + c2[i]}));
       rgb = {std::clamp(rgb.x, 0.0f, 1.0f), std::clamp(rgb.y, 0.0f, 1.0f),
              std::clamp(rgb.z, 0.0f, 1.0f)};
       const Vec3f v = hunt(xyz_to_lab(rgb_to_xyz(rgb)));
-      const size_t p = static_cast<size_t>(j) * w + i;
-      lab.y[p] = v.x, lab.cx[p] = v.y, lab.cz[p] = v.z;
+      out.l[o + i] = v.x, out.a[o + i] = v.y, out.b[o + i] = v.z;
+      out.edge[o + i] = std::hypot(dxy[i], dyx[i]);
+      out.point[o + i] = std::hypot(ddxy[i], ddyx[i]);
     }
-  });
-  return lab;
+  }
 }
 
-// Step 4 for one image: edge and point strength of the luminance, as planes.
-std::pair<Plane, Plane> features(const Plane& ycxcz_y, int w, int h, const FeatureFilters& f) {
-  const size_t n = static_cast<size_t>(w) * h;
-  Plane lum(n);  // (Y + 16) / 116: relative luminance in [0, 1]
-  for (size_t p = 0; p < n; ++p) lum[p] = (ycxcz_y[p] + 16.0f) / 116.0f;
-  Plane gx(n), dx(n), ddx(n);
-  filter_rows(lum, w, h, {&f.g, &f.dg, &f.ddg}, {&gx, &dx, &ddx});
-  Plane edge(n), point(n);
-  tbb::parallel_for(0, h, [&](int j) {
-    throw_if_interrupted();
-    std::vector<float> dxy(w), ddxy(w), dyx(w), ddyx(w);
-    filter_column(dx, w, h, j, f.g, dxy.data());    // d/dx, smoothed along y
-    filter_column(ddx, w, h, j, f.g, ddxy.data());  // d2/dx2, smoothed along y
-    filter_column(gx, w, h, j, f.dg, dyx.data());   // d/dy of the x-smoothed image
-    filter_column(gx, w, h, j, f.ddg, ddyx.data());
-    for (int i = 0; i < w; ++i) {
-      const size_t p = static_cast<size_t>(j) * w + i;
-      edge[p] = std::hypot(dxy[i], dyx[i]);
-      point[p] = std::hypot(ddxy[i], ddyx[i]);
-    }
+// Rows per band: tall enough that the halo (about 20 rows at 67 ppd) is a
+// small part of the work, short enough that a band's scratch stays in cache
+// and every core gets bands.
+constexpr int kBandRows = 64;
+
+template <class Body>
+void for_each_band(int h, Body body) {
+  const int bands = (h + kBandRows - 1) / kBandRows;
+  tbb::parallel_for(0, bands, [&](int b) {
+    const int j0 = b * kBandRows;
+    body(j0, std::min(h, j0 + kBandRows));
   });
-  return {std::move(edge), std::move(point)};
+}
+
+void check_ppd(double ppd) {
+  if (!(ppd >= kMinPixelsPerDegree && ppd <= kMaxPixelsPerDegree))
+    throw ParameterError("ppd", fmt::format(" {}: expected {} to {} pixels per degree", ppd,
+                                            kMinPixelsPerDegree, kMaxPixelsPerDegree));
 }
 
 void summarize(FlipResult& r) {
@@ -306,45 +327,65 @@ double default_pixels_per_degree() {
   return pixels_per_degree(0.7, 3840, 0.7);
 }
 
-FlipResult flip(const ColorImage& reference, const ColorImage& test, double ppd) {
-  if (!(ppd >= kMinPixelsPerDegree && ppd <= kMaxPixelsPerDegree))
-    throw ParameterError("ppd", fmt::format(" {}: expected {} to {} pixels per degree", ppd,
-                                            kMinPixelsPerDegree, kMaxPixelsPerDegree));
+FlipReference prepare_flip_reference(const ColorImage& reference, double ppd) {
+  check_ppd(ppd);
+  if (reference.pixels() == 0) throw Error("FLIP: the images are empty");
+  const size_t n = reference.pixels();
+  FlipReference r{reference.width, reference.height, ppd, {}, {}, {}, {}, {}};
+  for (auto* v : {&r.l, &r.a, &r.b, &r.edge, &r.point}) v->resize(n);
+  const Filters f{csf_filters(ppd), feature_filters(ppd)};
+  const int w = reference.width;
+  tbb::enumerable_thread_specific<BandScratch> scratch;
+  for_each_band(reference.height, [&](int j0, int j1) {
+    BandScratch& s = scratch.local();
+    const size_t o = static_cast<size_t>(j0) * w;
+    half_band(reference, f, j0, j1, s, {&r.l[o], &r.a[o], &r.b[o], &r.edge[o], &r.point[o]});
+  });
+  return r;
+}
+
+FlipResult flip(const FlipReference& reference, const ColorImage& test) {
   if (reference.width != test.width || reference.height != test.height)
     throw Error(
         fmt::format("FLIP: the reference is {}x{} pixels and the test {}x{}; they must match",
                     reference.width, reference.height, test.width, test.height));
-  if (reference.pixels() == 0) throw Error("FLIP: the images are empty");
-  const int w = reference.width, h = reference.height;
-  const size_t n = reference.pixels();
-  const Opponent ref = to_opponent(reference), tst = to_opponent(test);
-
-  const CsfFilters csf = csf_filters(ppd);
-  const Opponent ref_lab = filtered_lab(ref, w, h, csf), tst_lab = filtered_lab(tst, w, h, csf);
-  const FeatureFilters ff = feature_filters(ppd);
-  // (Plain names, not structured bindings: clang 14's lambdas cannot capture those.)
-  const std::pair<Plane, Plane> ref_features = features(ref.y, w, h, ff);
-  const std::pair<Plane, Plane> tst_features = features(tst.y, w, h, ff);
-  const Plane &ref_edge = ref_features.first, &ref_point = ref_features.second;
-  const Plane &tst_edge = tst_features.first, &tst_point = tst_features.second;
-
+  const int w = test.width, h = test.height;
+  const Filters f{csf_filters(reference.ppd), feature_filters(reference.ppd)};
   const float cmax = max_color_distance(), knee = kPc * cmax;
-  FlipResult r{w, h, std::vector<float>(n), 0, 0, 0, 0, 0, 0, {}};
-  tbb::parallel_for(size_t{0}, n, [&](size_t p) {
-    throw_if_interrupted();
-    float color = std::pow(hyab({ref_lab.y[p], ref_lab.cx[p], ref_lab.cz[p]},
-                                {tst_lab.y[p], tst_lab.cx[p], tst_lab.cz[p]}),
-                           kQc);
-    // Distances below the knee map to [0, pt], the rest to (pt, 1].
-    color = color < knee ? color * kPt / knee : kPt + (color - knee) / (cmax - knee) * (1 - kPt);
-    const float feature = std::pow(
-        std::max(std::abs(ref_edge[p] - tst_edge[p]), std::abs(ref_point[p] - tst_point[p])) /
-            std::sqrt(2.0f),
-        kQf);
-    r.map[p] = std::pow(color, 1 - feature);
+  FlipResult r{w, h, std::vector<float>(test.pixels()), 0, 0, 0, 0, 0, 0, {}};
+  tbb::enumerable_thread_specific<BandScratch> scratch;
+  tbb::enumerable_thread_specific<std::vector<float>> band_planes;
+  for_each_band(h, [&](int j0, int j1) {
+    BandScratch& s = scratch.local();
+    const size_t m = static_cast<size_t>(j1 - j0) * w, o = static_cast<size_t>(j0) * w;
+    std::vector<float>& planes = band_planes.local();
+    planes.resize(5 * m);
+    const HalfPlanes t{&planes[0], &planes[m], &planes[2 * m], &planes[3 * m], &planes[4 * m]};
+    half_band(test, f, j0, j1, s, t);
+    for (size_t q = 0; q < m; ++q) {
+      const size_t p = o + q;
+      float color = std::pow(
+          hyab({reference.l[p], reference.a[p], reference.b[p]}, {t.l[q], t.a[q], t.b[q]}), kQc);
+      // Distances below the knee map to [0, pt], the rest to (pt, 1].
+      color = color < knee ? color * kPt / knee : kPt + (color - knee) / (cmax - knee) * (1 - kPt);
+      const float feature = std::pow(std::max(std::abs(reference.edge[p] - t.edge[q]),
+                                              std::abs(reference.point[p] - t.point[q])) /
+                                         std::sqrt(2.0f),
+                                     kQf);
+      r.map[p] = std::pow(color, 1 - feature);
+    }
   });
   summarize(r);
   return r;
+}
+
+FlipResult flip(const ColorImage& reference, const ColorImage& test, double ppd) {
+  check_ppd(ppd);
+  if (reference.width != test.width || reference.height != test.height)
+    throw Error(
+        fmt::format("FLIP: the reference is {}x{} pixels and the test {}x{}; they must match",
+                    reference.width, reference.height, test.width, test.height));
+  return flip(prepare_flip_reference(reference, ppd), test);
 }
 
 }  // namespace aapat

@@ -45,6 +45,22 @@ struct FlipResult {
   std::vector<long long> histogram;  // pixels per bucket of width 1/kFlipHistogramBuckets
 };
 
+// The reference's half of FLIP at one ppd (its filtered colour and its
+// features), computed once for every test image compared with it: a study
+// compares one reference with dozens of patterns' renderings.
+struct FlipReference {
+  int width = 0, height = 0;
+  double ppd = 0;
+  std::vector<float> l, a, b, edge, point;  // per pixel, rows from the top
+};
+
+// Throws ParameterError ("ppd") when ppd is not in [kMinPixelsPerDegree,
+// kMaxPixelsPerDegree], Error when the image is empty.
+FlipReference prepare_flip_reference(const ColorImage& reference, double ppd);
+
+// Throws Error when the sizes differ.
+FlipResult flip(const FlipReference& reference, const ColorImage& test);
+
 // Throws Error when the sizes differ or an image is empty, ParameterError
 // ("ppd") when ppd is not in [kMinPixelsPerDegree, kMaxPixelsPerDegree].
 FlipResult flip(const ColorImage& reference, const ColorImage& test, double ppd);

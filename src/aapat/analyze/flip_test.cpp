@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "aapat/core/geometry.h"
@@ -52,6 +53,32 @@ TEST(Flip, BlackAgainstWhiteIsNearlyOne) {
   const ColorImage black{8, 8, std::vector<float>(8 * 8 * 3, 0.0f)};
   const ColorImage white{8, 8, std::vector<float>(8 * 8 * 3, 1.0f)};
   EXPECT_GT(flip(black, white, 67).mean, 0.9);
+}
+
+ColorImage top_rows(const ColorImage& img, int rows) {
+  return {img.width, rows,
+          std::vector<float>(img.rgb.begin(),
+                             img.rgb.begin() + 3 * static_cast<ptrdiff_t>(rows) * img.width)};
+}
+
+// The reference's half prepared once serves every test image; and FLIP,
+// computed in bands of rows, is local: a pixel depends on the rows within
+// the filters' reach (10 at 67 ppd) only, so the top rows of a 150-row pair
+// (three bands) and of its 64-row crop (one band) have the same values
+// wherever the crop's bottom edge is out of reach.
+TEST(Flip, PreparedReferenceAndBandsGiveTheSameValues) {
+  const ColorImage a = random_image(37, 150, 7), b = random_image(37, 150, 8),
+                   c = random_image(37, 150, 9);
+  const FlipReference prepared = prepare_flip_reference(a, 67);
+  EXPECT_EQ(flip(prepared, b).map, flip(a, b, 67).map);
+  EXPECT_EQ(flip(prepared, c).map, flip(a, c, 67).map);
+  const FlipResult whole = flip(a, b, 67), crop = flip(top_rows(a, 64), top_rows(b, 64), 67);
+  const size_t reach = static_cast<size_t>(64 - 10) * 37;
+  EXPECT_TRUE(std::equal(crop.map.begin(), crop.map.begin() + static_cast<ptrdiff_t>(reach),
+                         whole.map.begin()));
+  EXPECT_NE(crop.map.back(), whole.map[crop.map.size() - 1]);  // the crop's edge is felt
+  EXPECT_THROW(flip(prepared, random_image(36, 150, 1)), Error);
+  EXPECT_THROW(prepare_flip_reference(a, 1001), ParameterError);
 }
 
 TEST(Flip, BadSettingsAndSizesAreRefused) {

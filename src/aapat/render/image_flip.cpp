@@ -25,4 +25,12 @@ double flip_mean(const Image& image, const Image& reference) {
   return flip(color_image(reference), color_image(image), default_pixels_per_degree()).mean;
 }
 
+FlipReference flip_reference(const Image& reference) {
+  return prepare_flip_reference(color_image(reference), default_pixels_per_degree());
+}
+
+double flip_mean(const Image& image, const FlipReference& reference) {
+  return flip(reference, color_image(image)).mean;
+}
+
 }  // namespace aapat

@@ -27,4 +27,10 @@ ColorImage color_image(const Image& image);
 // The mean FLIP; images must be the same size.
 double flip_mean(const Image& image, const Image& reference);
 
+// The reference's half of that FLIP, prepared once for a study that
+// compares many renderings with one reference; flip_mean of an image
+// against it is the same value as against the reference itself.
+FlipReference flip_reference(const Image& reference);
+double flip_mean(const Image& image, const FlipReference& reference);
+
 }  // namespace aapat

@@ -1,6 +1,7 @@
 #include "aapat/render/ssim.h"
 
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -26,26 +27,54 @@ std::array<double, kSsimWindow> gaussian_window() {
   return g;
 }
 
-// The Gaussian-weighted mean of f over every window inside the image
-// (separable: rows, then columns); (w - 10) x (h - 10) values.
-template <class F>
-std::vector<double> window_means(int w, int h, F f) {
+// Output rows per band of the windowed means: the band's row-filtered
+// values are its rows plus the window's height, a few hundred KB, reused,
+// where five full-size planes of doubles per channel (a 1920x1080 diff
+// touched 480 MB) cost more in page faults than in arithmetic.
+constexpr int kBandRows = 32;
+
+// The sum of the SSIM index over output rows [j0, j1) of one channel, where
+// x(i, j) and y(i, j) are the two images' levels: the Gaussian-weighted
+// means of x, y, x^2, y^2 and xy over each window inside the image
+// (separable: rows, then columns), then the index per window.
+template <class X, class Y>
+double band_ssim_sum(int w, int j0, int j1, X x, Y y) {
   static const auto g = gaussian_window();
-  const int vw = w - kSsimWindow + 1, vh = h - kSsimWindow + 1;
-  std::vector<double> rows(static_cast<size_t>(vw) * h), out(static_cast<size_t>(vw) * vh);
-  for (int j = 0; j < h; ++j)
+  const int vw = w - kSsimWindow + 1, rows = j1 - j0 + kSsimWindow - 1;
+  std::vector<double> r(static_cast<size_t>(5) * rows * vw);
+  double* rx = r.data();
+  double* ry = rx + static_cast<size_t>(rows) * vw;
+  double* rxx = ry + static_cast<size_t>(rows) * vw;
+  double* ryy = rxx + static_cast<size_t>(rows) * vw;
+  double* rxy = ryy + static_cast<size_t>(rows) * vw;
+  for (int jj = 0; jj < rows; ++jj)
     for (int i = 0; i < vw; ++i) {
-      double s = 0;
-      for (int k = 0; k < kSsimWindow; ++k) s += g[k] * f(i + k, j);
-      rows[static_cast<size_t>(j) * vw + i] = s;
+      double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+      for (int k = 0; k < kSsimWindow; ++k) {
+        const double a = x(i + k, j0 + jj), b = y(i + k, j0 + jj);
+        sx += g[k] * a, sy += g[k] * b, sxx += g[k] * (a * a), syy += g[k] * (b * b),
+            sxy += g[k] * (a * b);
+      }
+      const size_t o = static_cast<size_t>(jj) * vw + i;
+      rx[o] = sx, ry[o] = sy, rxx[o] = sxx, ryy[o] = syy, rxy[o] = sxy;
     }
-  for (int j = 0; j < vh; ++j)
+  double sum = 0;
+  for (int j = 0; j < j1 - j0; ++j) {
+    double row_sum = 0;
     for (int i = 0; i < vw; ++i) {
-      double s = 0;
-      for (int k = 0; k < kSsimWindow; ++k) s += g[k] * rows[static_cast<size_t>(j + k) * vw + i];
-      out[static_cast<size_t>(j) * vw + i] = s;
+      double mx = 0, my = 0, mxx = 0, myy = 0, mxy = 0;
+      for (int k = 0; k < kSsimWindow; ++k) {
+        const size_t o = static_cast<size_t>(j + k) * vw + i;
+        mx += g[k] * rx[o], my += g[k] * ry[o], mxx += g[k] * rxx[o], myy += g[k] * ryy[o],
+            mxy += g[k] * rxy[o];
+      }
+      const double vx = mxx - mx * mx, vy = myy - my * my, cxy = mxy - mx * my;
+      row_sum +=
+          (2 * mx * my + kC1) * (2 * cxy + kC2) / ((mx * mx + my * my + kC1) * (vx + vy + kC2));
     }
-  return out;
+    sum += row_sum;
+  }
+  return sum;
 }
 
 }  // namespace
@@ -58,30 +87,35 @@ double ssim(const Image& a, const Image& b) {
     throw Error(fmt::format("ssim: a {}x{} image is smaller than the {}x{} window", a.width,
                             a.height, kSsimWindow, kSsimWindow));
   // Both images as levels once, not once per window tap of each of the five means.
-  std::vector<double> la(a.values.size()), lb(b.values.size());
-  for (size_t k = 0; k < la.size(); ++k) {
-    la[k] = grey_level(a.values[k]);
-    lb[k] = grey_level(b.values[k]);
-  }
+  // (Bytes: levels are 0 to 255, and an eighth of the memory of doubles.)
+  std::vector<unsigned char> la(a.values.size()), lb(b.values.size());
+  tbb::parallel_for(size_t{0}, la.size(), [&](size_t k) {
+    la[k] = static_cast<unsigned char>(grey_level(a.values[k]));
+    lb[k] = static_cast<unsigned char>(grey_level(b.values[k]));
+  });
   // A colour image's SSIM is the mean of its channels' (scikit-image's channel_axis).
   const auto n = static_cast<size_t>(a.channels);
+  const int w = a.width, h = a.height, vh = h - kSsimWindow + 1;
+  const int bands = (vh + kBandRows - 1) / kBandRows;
   double total = 0;
   for (size_t c = 0; c < n; ++c) {
-    auto x = [&](int i, int j) { return la[(static_cast<size_t>(j) * a.width + i) * n + c]; };
-    auto y = [&](int i, int j) { return lb[(static_cast<size_t>(j) * b.width + i) * n + c]; };
-    const int w = a.width, h = a.height;
-    const auto mx = window_means(w, h, x), my = window_means(w, h, y);
-    const auto mxx = window_means(w, h, [&](int i, int j) { return x(i, j) * x(i, j); });
-    const auto myy = window_means(w, h, [&](int i, int j) { return y(i, j) * y(i, j); });
-    const auto mxy = window_means(w, h, [&](int i, int j) { return x(i, j) * y(i, j); });
+    auto x = [&](int i, int j) {
+      return static_cast<double>(la[(static_cast<size_t>(j) * a.width + i) * n + c]);
+    };
+    auto y = [&](int i, int j) {
+      return static_cast<double>(lb[(static_cast<size_t>(j) * b.width + i) * n + c]);
+    };
+    // Bands in parallel, their sums added in order: the same value on any
+    // number of threads.
+    std::vector<double> band_sums(static_cast<size_t>(bands));
+    tbb::parallel_for(0, bands, [&](int band) {
+      const int j0 = band * kBandRows;
+      band_sums[static_cast<size_t>(band)] =
+          band_ssim_sum(w, j0, std::min(vh, j0 + kBandRows), x, y);
+    });
     double sum = 0;
-    for (size_t k = 0; k < mx.size(); ++k) {
-      const double vx = mxx[k] - mx[k] * mx[k], vy = myy[k] - my[k] * my[k],
-                   cxy = mxy[k] - mx[k] * my[k];
-      sum += (2 * mx[k] * my[k] + kC1) * (2 * cxy + kC2) /
-             ((mx[k] * mx[k] + my[k] * my[k] + kC1) * (vx + vy + kC2));
-    }
-    total += sum / static_cast<double>(mx.size());
+    for (double v : band_sums) sum += v;
+    total += sum / (static_cast<double>(w - kSsimWindow + 1) * vh);
   }
   return total / static_cast<double>(n);
 }

@@ -117,7 +117,9 @@ std::vector<StudyPattern> budget_patterns(const StudySettings& s,
 // One pattern's rendered measures on one scene: every frame against its
 // reference, the deviations of all frames together.
 StudyMeasures render_measures(const Pattern& p, const std::vector<Scene>& frames,
-                              const std::vector<Image>& references, int width, int height) {
+                              const std::vector<Image>& references,
+                              const std::vector<FlipReference>& flip_references, int width,
+                              int height) {
   Sampling sampling;
   sampling.pattern = p;
   ImageError total;
@@ -129,7 +131,7 @@ StudyMeasures render_measures(const Pattern& p, const std::vector<Scene>& frames
     total.max_deviation = std::max(total.max_deviation, e.max_deviation);
     pixels += static_cast<double>(image.values.size());
     ssim_sum += std::min(width, height) >= kSsimWindow ? ssim(image, references[f]) : 1.0;
-    flip_sum += flip_mean(image, references[f]);
+    flip_sum += flip_mean(image, flip_references[f]);
   }
   summarize(total, pixels);
   double tail = 0;
@@ -179,10 +181,12 @@ namespace {
 // Every scene's frames and their references (from the cache when there is
 // one). A 2x2 or 4x4 footprint reconstructs at the pixel corners (the
 // renderer's Image::offset 1/2), so its references are rendered there too:
-// `shifted`, when any pattern needs them.
+// `shifted`, when any pattern needs them. FLIP's half of each reference is
+// prepared once, not once per pattern.
 struct SceneFrames {
   std::vector<std::vector<Scene>> frames;
   std::vector<std::vector<Image>> references, shifted;
+  std::vector<std::vector<FlipReference>> flip_references, flip_shifted;
 };
 SceneFrames scene_frames(const StudySettings& s, const ReferenceSource& references,
                          const StudyProgress& progress, bool shifted = false) {
@@ -198,6 +202,11 @@ SceneFrames scene_frames(const StudySettings& s, const ReferenceSource& referenc
       if (shifted)
         out.shifted.back().push_back(references(out.frames.back()[f], s.width, s.height, ref, 0.5));
     }
+    out.flip_references.emplace_back();
+    out.flip_shifted.emplace_back();
+    for (const Image& r : out.references.back())
+      out.flip_references.back().push_back(flip_reference(r));
+    for (const Image& r : out.shifted.back()) out.flip_shifted.back().push_back(flip_reference(r));
     if (progress)
       progress(static_cast<int>(sc + 1), static_cast<int>(s.scenes.size()), "references");
   }
@@ -226,9 +235,10 @@ void measure(std::vector<StudyPattern>& patterns, const StudySettings& s,
                           "rendered there",
                           patterns[i].pattern.name));
         ByteWriter w;
-        for (double m : render_measures(patterns[i].pattern, scenes.frames[sc],
-                                        corner ? scenes.shifted[sc] : scenes.references[sc],
-                                        s.width, s.height))
+        for (double m : render_measures(
+                 patterns[i].pattern, scenes.frames[sc],
+                 corner ? scenes.shifted[sc] : scenes.references[sc],
+                 corner ? scenes.flip_shifted[sc] : scenes.flip_references[sc], s.width, s.height))
           w.put(m);
         return w.take();
       });
