@@ -14,6 +14,7 @@
 #include "aapat/render/shape_index.h"
 #include "aapat/render/surface.h"
 #include "aapat/render/texture_filter.h"
+#include "aapat/render/thin_geometry.h"
 
 namespace aapat {
 namespace {
@@ -269,6 +270,17 @@ const SceneRegistry& scene_registry() {
          {{"count", "6", "shapes, 1 to 4096"}, {"seed", "1", "random seed"}}},
         [](const Spec& s, int width, int height) -> Scene {
           return random_shapes(s.whole("count", 1, 4096),
+                               static_cast<uint64_t>(s.whole("seed", 0, 2147483647)), width,
+                               height);
+        }},
+       {{"thin-geometry",
+         "count thin features (wires, fences, tufts of grass, dots) in greys that contrast with "
+         "a dark or light background, the same for the same seed on every platform: unseen thin "
+         "content for studies",
+         "aapat: generated test content (render/thin_geometry.h)",
+         {{"count", "12", "features, 1 to 4096"}, {"seed", "1", "random seed"}}},
+        [](const Spec& s, int width, int height) -> Scene {
+          return thin_geometry(s.whole("count", 1, 4096),
                                static_cast<uint64_t>(s.whole("seed", 0, 2147483647)), width,
                                height);
         }},
