@@ -1,12 +1,15 @@
 // E2 evaluations per second (issue: >= 200,000 per core for a 4-sample kernel
 // at 180 angles). Results and the machine: docs/benchmarks.md.
 #include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
 
 #include <random>
 
 #include "aapat/core/filter_catalog.h"
 #include "aapat/core/metric.h"
 #include "aapat/core/metric_simd.h"
+#include "aapat/generate/catalog.h"
+#include "aapat/study/perceptual_objective.h"
 
 namespace aapat {
 namespace {
@@ -38,6 +41,21 @@ BENCHMARK_CAPTURE(E2Evaluation, mitchell_laine_aila_4_angles, "mitchell", "laine
     ->Arg(16)
     ->Arg(64);
 BENCHMARK_CAPTURE(E2Evaluation, lanczos3_180_angles, "lanczos:lobes=3", "uniform:step=1")->Arg(4);
+
+// The perceptual objective (study/perceptual_objective.h) of a 4-sample
+// pattern on one core, beside E2's: every chart rendered and compared by
+// FLIP. Arg: the spec's angles (16, the default, and 8).
+void PerceptualEvaluation(benchmark::State& state) {
+  const tbb::global_control one_core(tbb::global_control::max_allowed_parallelism, 1);
+  PerceptualSpec spec;
+  spec.angles = static_cast<int>(state.range(0));
+  const PerceptualObjective objective(spec);
+  const Pattern p = catalog_pattern("msaa-4");
+  for (auto _ : state) benchmark::DoNotOptimize(objective(p));
+  state.SetItemsProcessed(state.iterations());
+  state.counters["charts"] = objective.chart_count();
+}
+BENCHMARK(PerceptualEvaluation)->Arg(16)->Arg(8)->Unit(benchmark::kMillisecond);
 
 // 4 samples at 180 angles on each SIMD path this processor runs (pinned in
 // turn; the label names it): what a machine without AVX-512 or AVX2 gets.

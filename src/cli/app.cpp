@@ -242,6 +242,7 @@ constexpr std::array kCommands = {
     CommandEntry{"animate", add_animate_command},
     CommandEntry{"table2", add_table2_command},
     CommandEntry{"snap", add_snap_command},
+    CommandEntry{"refine", add_refine_command},
     CommandEntry{"export", add_export_command},
     CommandEntry{"import", add_import_command},
     CommandEntry{"hardware-table", add_hardware_table_command},

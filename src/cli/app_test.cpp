@@ -42,7 +42,7 @@ TEST(Cli, EveryCommandOfTheOverviewRunsByItsName) {
     EXPECT_NE(help.out.find("Usage: aapat " + name), std::string::npos) << help.out;
     ++commands;
   }
-  EXPECT_EQ(commands, 21);
+  EXPECT_EQ(commands, 22);
 }
 
 // The mistakes a new user makes first are named, with the nearest name.

@@ -25,6 +25,7 @@ Action add_render_command(CLI::App& app);
 Action add_animate_command(CLI::App& app);
 Action add_table2_command(CLI::App& app);
 Action add_snap_command(CLI::App& app);
+Action add_refine_command(CLI::App& app);
 Action add_export_command(CLI::App& app);
 Action add_import_command(CLI::App& app);
 Action add_hardware_table_command(CLI::App& app);

@@ -11,6 +11,7 @@
 #include "aapat/io/pattern_json.h"
 #include "aapat/io/profile_plot.h"
 #include "aapat/study/eval_study.h"
+#include "aapat/study/perceptual_objective.h"
 #include "cli/commands.h"
 #include "cli/metric_options.h"
 
@@ -25,7 +26,45 @@ struct EvalOptions {
   std::string profile;
 };
 
+// Under the perceptual objective: its value and each kind's mean FLIP.
+void run_perceptual_eval(const EvalOptions& o, std::ostream& out) {
+  if (!o.metric.filter.empty() || !o.metric.acuity.empty() || !o.metric.norm.empty())
+    throw ParameterError("objective",
+                         ": the perceptual objective has no --filter, --acuity or --norm; give "
+                         "its parameters in the spec (aapat list objectives)");
+  if (!o.profile.empty() || o.optimized_weights)
+    throw ParameterError("objective",
+                         ": --profile and --optimized-weights are E2's; the perceptual objective "
+                         "has neither");
+  const PerceptualObjective objective(parse_perceptual(o.metric.objective));
+  std::vector<Pattern> patterns;
+  std::vector<PerceptualError> errors;
+  for (const auto& name : o.patterns) {
+    patterns.push_back(resolve_pattern(name));
+    errors.push_back(objective.evaluate(patterns.back()));
+  }
+  const JsonObject doc = perceptual_eval_json(objective.spec(), patterns, errors);
+  if (o.json) {
+    out << json_text(doc);
+    return;
+  }
+  size_t width = 22;
+  for (const Pattern& p : patterns) width = std::max(width, p.name.size());
+  out << fmt::format("objective {}\n{:<{}} {:<14} {:>6} {:>10}", objective.spec().text(), "pattern",
+                     width, "family", "n", "perceptual");
+  for (const PerceptualKind& k : errors.front().kinds) out << fmt::format(" {:>9}", k.name);
+  out << "\n";
+  for (size_t i = 0; i < patterns.size(); ++i) {
+    out << fmt::format("{:<{}} {:<14} {:>6} {:>10.6f}", patterns[i].name, width,
+                       family(patterns[i]), format_cost(samples_per_pixel(patterns[i])),
+                       errors[i].value);
+    for (const PerceptualKind& k : errors[i].kinds) out << fmt::format(" {:>9.6f}", k.flip);
+    out << "\n";
+  }
+}
+
 void run_eval(EvalOptions& o, std::ostream& out) {
+  if (is_perceptual(o.metric.objective)) return run_perceptual_eval(o, out);
   if (!o.profile.empty() && !o.profile.ends_with(".svg") && !o.profile.ends_with(".csv"))
     throw Error(fmt::format("--profile: '{}' must end in .svg or .csv", o.profile));
   const Objective objective = o.metric.resolve();

@@ -1,3 +1,6 @@
+#include "aapat/generate/catalog.h"
+#include "aapat/io/pattern_json.h"
+#include "aapat/study/perceptual_objective.h"
 #include "cli/animation_options.h"
 #include "cli/app.h"
 #include "testing/cli_run.h"
@@ -91,6 +94,47 @@ TEST(CliEval, APatternFileNamedLikeACatalogEntryIsReadUnderItsOwnName) {
   EXPECT_EQ(rows[1]["pattern"], "mine");
   EXPECT_NE(warned.find("pattern file '" + edited + "' is named 'rgss'"), std::string::npos)
       << warned;
+}
+
+}  // namespace
+}  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// The perceptual objective on the command line: eval prints its value and
+// each kind's FLIP (the library's, to the digit), refine writes a pattern no
+// worse than its start, and a bad spec or an E2-only flag ends in exit 1
+// naming the problem.
+TEST(CliPerceptual, EvalRefineAndBadSpecs) {
+  const std::string spec = "perceptual:angles=2,patch=16,reference=16";
+  const testing::CliRun e = testing::run({"eval", "msaa-4", "--objective", spec, "--json"});
+  ASSERT_EQ(e.code, 0) << e.err;
+  const auto doc = nlohmann::json::parse(e.out);
+  const PerceptualObjective o(parse_perceptual(spec));
+  EXPECT_EQ(doc["rows"][0]["perceptual"].get<double>(), o(catalog_pattern("msaa-4")));
+  EXPECT_EQ(doc["rows"][0]["kinds"].size(), 3u);
+  const std::string out = testing::temp_path("refined.json");
+  const testing::CliRun r = testing::run(
+      {"--quiet", "refine", "msaa-4", "-O", spec, "--max-tries", "20", "-o", out, "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto refined = nlohmann::json::parse(r.out);
+  EXPECT_LE(refined["after"].get<double>(), refined["before"].get<double>());
+  EXPECT_EQ(o(resolve_pattern(out)), refined["after"].get<double>());
+  EXPECT_EQ(resolve_pattern(out).name, "msaa-4-perceptual");
+  std::filesystem::remove(out);
+  const auto fails = [](std::vector<std::string> args, const std::string& says) {
+    const testing::CliRun bad = testing::run(args);
+    EXPECT_EQ(bad.code, 1) << args[1];
+    EXPECT_NE(bad.err.find(says), std::string::npos) << bad.err;
+  };
+  fails({"eval", "msaa-4", "--objective", "perceptual:ppd=0.5"}, "ppd");
+  fails({"eval", "msaa-4", "--objective", "perceptual:edge=0,line=0,thin=0,dot=0"},
+        "no primitives");
+  fails({"eval", "msaa-4", "--objective", "perceptual:background=inf"}, "background");
+  fails({"eval", "msaa-4", "--objective", "perceptual", "--acuity", "laine-aila"}, "--acuity");
+  fails({"optimize", "--family", "P(1,1,4)", "--objective", "perceptual"}, "aapat refine");
+  fails({"refine", "msaa-4", "-O", "recommended"}, "perceptual");
 }
 
 }  // namespace

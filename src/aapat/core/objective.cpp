@@ -134,6 +134,11 @@ Objective parse_objective(std::string_view text, std::string_view what) {
                             kRecommendedObjective, kPapersObjective));
   size_t first = 0;
   Objective base = named_objective(kRecommendedObjective);
+  if (split_spec(items[0]).first == kPerceptualObjective)
+    throw Error(fmt::format(
+        "{}: the perceptual objective is not E2's: `aapat eval --objective {}` evaluates it, "
+        "`aapat refine` searches under it and `aapat study --perceptual` studies it",
+        what, items[0]));
   if (items[0].find('=') == std::string_view::npos) {
     try {
       base = named_objective(items[0]);

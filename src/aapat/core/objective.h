@@ -43,6 +43,9 @@ struct Objective {
 
 inline constexpr std::string_view kRecommendedObjective = "recommended";
 inline constexpr std::string_view kPapersObjective = "laine-aila";
+// FLIP's model on test charts (study/perceptual_objective.h): a spec of its
+// own, not an E2 objective; its name is refused here with where it is taken.
+inline constexpr std::string_view kPerceptualObjective = "perceptual";
 // What every face evaluates under unless told otherwise.
 inline constexpr std::string_view kDefaultObjective = kRecommendedObjective;
 

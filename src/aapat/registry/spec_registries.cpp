@@ -10,6 +10,7 @@
 #include "aapat/render/motion.h"
 #include "aapat/render/scene.h"
 #include "aapat/render/texture_filter.h"
+#include "aapat/study/perceptual_objective.h"
 #include "aapat/temporal/engine/engine_taa_settings.h"
 #include "aapat/temporal/sequence/sequence_generators.h"
 #include "aapat/temporal/sequence/sequence_json.h"
@@ -37,8 +38,12 @@ std::vector<RegistrySection> registry_sections() {
   return {
       RegistrySection{"objectives",
                       "objectives (--objective; or 'filter=F acuity=A norm=P', starting from "
-                      "recommended)",
-                      objective_infos()},
+                      "recommended; perceptual: aapat eval, refine, study --perceptual)",
+                      [] {
+                        std::vector<SpecInfo> all = objective_infos();
+                        all.push_back(perceptual_info());
+                        return all;
+                      }()},
       section("patterns", "patterns", pattern_registry()),
       RegistrySection{"aapat_patterns",
                       "the aapat catalog (data/patterns: the best found per budget and API, "

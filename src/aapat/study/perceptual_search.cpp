@@ -1,0 +1,89 @@
+#include "aapat/study/perceptual_search.h"
+
+#include <fmt/format.h>
+
+#include <vector>
+
+#include "aapat/optimize/compass_search.h"
+#include "aapat/optimize/problem.h"
+
+namespace aapat {
+namespace {
+
+// Where each search coordinate goes: a generator's x or y, or a weight.
+struct Coordinate {
+  enum Kind { kX, kY, kWeight } kind;
+  int index;
+};
+
+std::vector<Coordinate> coordinates(const Problem& p) {
+  std::vector<Coordinate> out;
+  for (size_t g = 0; g < p.generators.size(); ++g) {
+    const Freedom f = p.generators[g].freedom;
+    if (f == Freedom::kFree || f == Freedom::kSlideX) out.push_back({Coordinate::kX, int(g)});
+    if (f == Freedom::kFree || f == Freedom::kSlideY) out.push_back({Coordinate::kY, int(g)});
+  }
+  for (const auto& group : p.weight_groups)
+    if (group.size() > 1)
+      for (int w : group) out.push_back({Coordinate::kWeight, w});
+  return out;
+}
+
+// The problem moved by x (displacements from the start), on its constraints.
+Problem moved(const Problem& start, const std::vector<Coordinate>& coords,
+              std::span<const double> x) {
+  Problem p = start;
+  for (size_t k = 0; k < coords.size(); ++k) {
+    const Coordinate& c = coords[k];
+    if (c.kind == Coordinate::kX) p.generators[c.index].pos.x += x[k];
+    if (c.kind == Coordinate::kY) p.generators[c.index].pos.y += x[k];
+    if (c.kind == Coordinate::kWeight) p.weights[c.index] += x[k];
+  }
+  project_to_constraints(p, true);
+  return p;
+}
+
+}  // namespace
+
+PerceptualSearchResult refine_perceptual(const Pattern& start, const PerceptualObjective& objective,
+                                         const PerceptualSearchSettings& s,
+                                         const ItemsProgress& progress) {
+  if (!(s.step > 0 && s.step <= 1))
+    throw ParameterError("step", fmt::format(" {}: expected (0, 1] pixels", s.step));
+  if (!(s.min_step > 0 && s.min_step <= s.step))
+    throw ParameterError("min-step", fmt::format(" {}: expected (0, step]", s.min_step));
+  if (s.max_tries < 1 || s.max_tries > 10'000'000)
+    throw ParameterError("max-tries", fmt::format(" {}: expected 1 to 10^7", s.max_tries));
+  Problem problem = problem_from_pattern(start);
+  // The catalog's one-pixel patterns keep their samples strictly inside (an
+  // MSAA sample on the border would be its neighbour's).
+  if (!start.footprint.plus) keep_strictly_inside(problem);
+  project_to_constraints(problem, true);
+  const std::vector<Coordinate> coords = coordinates(problem);
+  const auto value = [&](std::span<const double> x) {
+    return objective(pattern_of(moved(problem, coords, x)));
+  };
+  FunctionObjective f(value, 1);
+  CompassSettings cs;
+  cs.block_size = 1;
+  cs.step = s.step;
+  cs.min_step = s.min_step;
+  cs.lo = -1, cs.hi = 1;
+  cs.max_tries = s.max_tries;
+  const CompassResult r = compass_search(f, std::vector<double>(coords.size(), 0.0), cs, progress);
+  // The search starts from the start put on the constraints (weights made
+  // non-negative, samples inside); where that alone made it worse, the start
+  // itself is the answer.
+  const double original = objective(start);
+  if (original <= r.value) return {start, original, original, r.tries};
+  Pattern best = pattern_of(moved(problem, coords, r.x));
+  // A new name: a file named like the catalog entry with other samples would
+  // be read under its file's name, with a warning (io/catalog_clash.h).
+  best.name = start.name + "-perceptual";
+  best.description = start.description + ", refined under the perceptual objective";
+  best.provenance = start.provenance;
+  best.provenance.emplace_back("refined", objective.spec().text());
+  return {best, original, r.value, r.tries};
+}
+
+}  // namespace aapat
