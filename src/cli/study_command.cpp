@@ -27,7 +27,7 @@ struct StudyOptions {
   std::vector<std::string> compare;
   std::string budgets = "2,4,8", norms = "inf,2,4", size = "64", table, csv, html;
   ReferenceOptions reference;
-  bool json = false;
+  bool json = false, pairs = false;
 };
 
 std::vector<int> parse_budgets(const std::string& text) {
@@ -98,6 +98,28 @@ std::string correlations_csv(const StudyResult& r) {
   return csv;
 }
 
+// Every pair of objectives in how well they predict the mean FLIP, paired
+// over the scenes (objective_pairs), from the study's seed.
+std::vector<ObjectivePair> flip_pairs(const StudyResult& r, const StudySettings& s) {
+  const auto flip =
+      std::find(kStudyMeasures.begin(), kStudyMeasures.end(), std::string_view("flip"));
+  return objective_pairs(r, static_cast<int>(flip - kStudyMeasures.begin()), s.resamples, s.seed);
+}
+
+std::string pairs_table(const StudyResult& r, const StudySettings& s) {
+  std::string t =
+      "Spearman's rho with FLIP, objective a against objective b, paired over the scenes "
+      "(mean over the budgets per scene; 95% bootstrap interval of the mean difference over "
+      "scenes):\n";
+  for (const ObjectivePair& p : flip_pairs(r, s))
+    if (p.a < p.b)
+      t += fmt::format(
+          "  {} - {}: {:+.4f} [{:+.4f}, {:+.4f}], a higher in {} of {} scenes, sign p = {:.3g}\n",
+          r.objectives[p.a].name(), r.objectives[p.b].name(), p.rho.mean_difference, p.rho.low,
+          p.rho.high, p.rho.items - p.rho.lower - p.rho.ties, p.rho.items, p.rho.sign_p);
+  return t;
+}
+
 JsonObject study_json(const StudyResult& r, const StudyOptions& o) {
   JsonObject doc = json_report("study");
   JsonObject objectives = JsonObject::array();
@@ -106,6 +128,7 @@ JsonObject study_json(const StudyResult& r, const StudyOptions& o) {
                           {"filter", r.objectives[i].filter},
                           {"acuity", r.objectives[i].acuity},
                           {"norm", format_norm(r.objectives[i].norm)},
+                          {"perceptual", r.objectives[i].perceptual},
                           {"mean_spearman", r.mean_spearman[i]}});
   JsonObject budgets = JsonObject::array();
   for (const BudgetStudy& b : r.budgets) {
@@ -142,6 +165,18 @@ JsonObject study_json(const StudyResult& r, const StudyOptions& o) {
                         {"objectives", objectives},
                         {"recommended", r.recommended},
                         {"budgets", budgets}});
+  if (o.pairs) {
+    JsonObject pairs = JsonObject::array();
+    for (const ObjectivePair& p : flip_pairs(r, o.settings))
+      pairs.push_back({{"a", p.a},
+                       {"b", p.b},
+                       {"scenes", p.rho.items},
+                       {"scenes_a_lower", p.rho.lower},
+                       {"mean_difference", p.rho.mean_difference},
+                       {"interval", {p.rho.low, p.rho.high}},
+                       {"sign_p", p.rho.sign_p}});
+    doc["flip_rho_pairs"] = pairs;
+  }
   return doc;
 }
 
@@ -204,6 +239,7 @@ void run_study(StudyOptions& o, std::ostream& out) {
   std::string text;
   for (const BudgetStudy& b : r.budgets) text += summary_table(r, b) + "\n";
   text += recommendation(r);
+  if (o.pairs) text += "\n" + pairs_table(r, o.settings);
   if (!o.table.empty()) write_output(o.table, "```\n" + text + "```\n", out);
   if (!o.csv.empty()) write_output(o.csv, correlations_csv(r), out);
   if (!o.html.empty())
@@ -227,6 +263,10 @@ Action add_study_command(CLI::App& app) {
   cmd->add_option("--compare", o->compare,
                   "instead of the study: every objective and rendered measure (mean over the "
                   "scenes) of these patterns, as a table");
+  cmd->add_option("--perceptual", o->settings.perceptual,
+                  "perceptual objectives to study beside E2's (specs: perceptual:key=value,...)");
+  cmd->add_flag("--pairs", o->pairs,
+                "every pair of objectives: the difference in rho with FLIP, paired over scenes");
   cmd->add_option("--filter", o->settings.filter, "the objectives' reference filter")
       ->capture_default_str();
   cmd->add_option("--acuity", o->settings.acuities, "the objectives' acuity tables")

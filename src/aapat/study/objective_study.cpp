@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <numeric>
+#include <optional>
 
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter_catalog.h"
@@ -21,6 +23,7 @@
 #include "aapat/render/image_flip.h"
 #include "aapat/render/renderer.h"
 #include "aapat/render/ssim.h"
+#include "aapat/study/perceptual_objective.h"
 #include "aapat/work/byte_codec.h"
 #include "aapat/work/work_items.h"
 
@@ -79,7 +82,11 @@ std::vector<StudyPattern> budget_patterns(const StudySettings& s,
   std::vector<Metric> metrics;
   metrics.reserve(objectives.size());  // the jobs point at them
   std::vector<MultiStartJob> jobs;
-  for (const StudyObjective& o : objectives) {
+  std::vector<size_t> searched;  // the E2 objectives: the perceptual ones have no optimizer here
+  for (size_t k = 0; k < objectives.size(); ++k) {
+    const StudyObjective& o = objectives[k];
+    if (!o.perceptual.empty()) continue;
+    searched.push_back(k);
     const Metric& metric =
         metrics.emplace_back(make_filter(o.filter), make_acuity(o.acuity), o.norm);
     OptimizerSettings settings;
@@ -89,8 +96,9 @@ std::vector<StudyPattern> budget_patterns(const StudySettings& s,
                     family_seeds(family, SeedKind::kJittered, s.seed, metric.filter()), settings});
   }
   const std::vector<MultiStartResult> searches = multistart_all(jobs);
-  for (size_t k = 0; k < objectives.size(); ++k) {
-    Pattern p = pattern_of(searches[k].best_problem);
+  for (size_t j = 0; j < searched.size(); ++j) {
+    const size_t k = searched[j];
+    Pattern p = pattern_of(searches[j].best_problem);
     p.name = fmt::format("opt-{}-{}", n, objectives[k].name());
     out.push_back({p.name, "optimized for " + objectives[k].name(), p, {}, {}, {}});
   }
@@ -143,6 +151,7 @@ StudyMeasures render_measures(const Pattern& p, const std::vector<Scene>& frames
 }  // namespace
 
 std::string StudyObjective::name() const {
+  if (!perceptual.empty()) return perceptual;
   return fmt::format("{} L{}", acuity, norm == Metric::kMaxNorm ? "inf" : format_norm(norm));
 }
 
@@ -167,12 +176,14 @@ void validate(const StudySettings& s) {
   make_filter(s.filter);
   for (const double p : s.norms) Metric(make_filter(s.filter), make_acuity(s.acuities[0]), p);
   for (const std::string& scene : s.scenes) frames_of(scene, 8, 8, 1);
+  for (const std::string& p : s.perceptual) parse_perceptual(p);
 }
 
 std::vector<StudyObjective> study_objectives(const StudySettings& s) {
   std::vector<StudyObjective> out;
   for (const std::string& a : s.acuities)
-    for (const double p : s.norms) out.push_back({s.filter, a, p});
+    for (const double p : s.norms) out.push_back({s.filter, a, p, ""});
+  for (const std::string& p : s.perceptual) out.push_back({"", "", 0, p});
   return out;
 }
 
@@ -217,9 +228,17 @@ SceneFrames scene_frames(const StudySettings& s, const ReferenceSource& referenc
 // in parallel, each result in its own slot) and per-degree profile.
 void measure(std::vector<StudyPattern>& patterns, const StudySettings& s,
              const std::vector<StudyObjective>& objectives, const SceneFrames& scenes) {
-  std::vector<Metric> metrics;
-  for (const StudyObjective& o : objectives)
-    metrics.emplace_back(make_filter(o.filter), make_acuity(o.acuity), o.norm);
+  // Per objective, its E2 metric or its perceptual objective (charts rendered once).
+  std::vector<std::optional<Metric>> metrics;
+  std::vector<std::unique_ptr<PerceptualObjective>> perceptual;
+  for (const StudyObjective& o : objectives) {
+    metrics.emplace_back();
+    perceptual.emplace_back();
+    if (o.perceptual.empty())
+      metrics.back().emplace(make_filter(o.filter), make_acuity(o.acuity), o.norm);
+    else
+      perceptual.back() = std::make_unique<PerceptualObjective>(parse_perceptual(o.perceptual));
+  }
   const Metric degree(make_filter(s.filter), make_acuity("uniform:step=1"));
   for (StudyPattern& p : patterns) p.measures.assign(s.scenes.size(), {});
   // Every (pattern, scene) is a work item (work/work_items.h).
@@ -250,7 +269,9 @@ void measure(std::vector<StudyPattern>& patterns, const StudySettings& s,
   tbb::parallel_for(size_t{0}, patterns.size(), [&](size_t i) {
     StudyPattern& p = patterns[i];
     p.objective.clear();
-    for (const Metric& m : metrics) p.objective.push_back(m.evaluate(p.pattern).e2);
+    for (size_t o = 0; o < metrics.size(); ++o)
+      p.objective.push_back(metrics[o] ? metrics[o]->evaluate(p.pattern).e2
+                                       : (*perceptual[o])(p.pattern));
     p.profile = degree.profile(make_kernel(p.pattern, 0));
   });
 }
@@ -291,7 +312,8 @@ StudyResult objective_study(const StudySettings& s, const ReferenceSource& refer
   StudyResult r;
   r.objectives = study_objectives(s);
   for (size_t o = 0; o < r.objectives.size(); ++o)
-    if (r.objectives[o].acuity == "laine-aila" && r.objectives[o].norm == Metric::kMaxNorm)
+    if (r.objectives[o].perceptual.empty() && r.objectives[o].acuity == "laine-aila" &&
+        r.objectives[o].norm == Metric::kMaxNorm)
       r.papers = static_cast<int>(o);
   r.scenes = s.scenes;
   const SceneFrames scenes = scene_frames(s, references, progress);
@@ -338,6 +360,41 @@ StudyResult objective_study(const StudySettings& s, const ReferenceSource& refer
   r.recommended = static_cast<int>(
       std::max_element(r.mean_spearman.begin(), r.mean_spearman.end()) - r.mean_spearman.begin());
   return r;
+}
+
+std::vector<ObjectivePair> objective_pairs(const StudyResult& r, int measure, int resamples,
+                                           uint64_t seed) {
+  // Per objective and scene, rho averaged over the budgets that have it.
+  const size_t scenes = r.scenes.size();
+  std::vector<std::vector<double>> rho(r.objectives.size(), std::vector<double>(scenes, 0.0));
+  std::vector<std::vector<int>> counted(r.objectives.size(), std::vector<int>(scenes, 0));
+  for (const BudgetStudy& b : r.budgets)
+    for (const StudyCorrelation& c : b.correlations)
+      if (c.measure == measure && !std::isnan(c.r.spearman.value)) {
+        rho[static_cast<size_t>(c.objective)][static_cast<size_t>(c.scene)] += c.r.spearman.value;
+        ++counted[static_cast<size_t>(c.objective)][static_cast<size_t>(c.scene)];
+      }
+  // Scenes where some objective has no rho (a constant measure) are left out.
+  std::vector<size_t> kept;
+  for (size_t sc = 0; sc < scenes; ++sc) {
+    bool all = true;
+    for (size_t o = 0; o < r.objectives.size(); ++o) all = all && counted[o][sc] > 0;
+    if (all) kept.push_back(sc);
+  }
+  std::vector<ObjectivePair> out;
+  if (kept.empty()) return out;
+  for (size_t a = 0; a < r.objectives.size(); ++a)
+    for (size_t b = 0; b < r.objectives.size(); ++b) {
+      if (a == b) continue;
+      std::vector<double> ours, theirs;
+      for (size_t sc : kept) {
+        ours.push_back(rho[a][sc] / counted[a][sc]);
+        theirs.push_back(rho[b][sc] / counted[b][sc]);
+      }
+      out.push_back({static_cast<int>(a), static_cast<int>(b),
+                     compare_paired(ours, theirs, resamples, 0.95, seed)});
+    }
+  return out;
 }
 
 MeasureSpearman measure_spearman(const BudgetStudy& b, int objective, int measure) {

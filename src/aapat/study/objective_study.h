@@ -29,8 +29,11 @@ namespace aapat {
 
 struct StudyObjective {
   std::string filter, acuity;
-  double norm;               // Metric::kMaxNorm for the maximum
-  std::string name() const;  // "laine-aila L_inf", "uniform:step=1 L_2", ...
+  double norm;  // Metric::kMaxNorm for the maximum
+  // A perceptual objective's spec as given (study/perceptual_objective.h);
+  // empty for an E2 objective (filter x acuity x norm).
+  std::string perceptual;
+  std::string name() const;  // "laine-aila L_inf", "uniform:step=1 L_2", the perceptual spec
 };
 
 // The rendered measures, each larger = worse.
@@ -45,6 +48,8 @@ struct StudySettings {
   std::string filter = "mitchell";
   std::vector<std::string> acuities{"laine-aila", "linear:step=1", "uniform:step=1"};
   std::vector<double> norms{std::numeric_limits<double>::infinity(), 2, 4};  // max, L2, L4
+  // Perceptual objectives to study beside the E2 ones (specs; none by default).
+  std::vector<std::string> perceptual;
   // triangle, circle (animations), halfplane (rotating through every edge
   // angle), and any render scene (spiral, circles, checkerboard, ...).
   std::vector<std::string> scenes{"triangle", "circle",  "halfplane",
@@ -116,5 +121,17 @@ std::vector<MeasureComparisons> compare_with_first(const std::vector<StudyPatter
                                                    const StudySettings& settings);
 StudyResult objective_study(const StudySettings& settings, const ReferenceSource& references,
                             const StudyProgress& progress = {});
+
+// Objective a against objective b in how well they predict one rendered
+// measure: per scene, Spearman's rho of each (averaged over the budgets),
+// paired over the scenes (analyze/paired_comparison.h; "lower" counts the
+// scenes where a's rho is below b's, the interval is the bootstrap over
+// scenes of the mean difference a - b). Positive: a predicts it better.
+struct ObjectivePair {
+  int a = 0, b = 0;
+  PairedComparison rho;  // ours: a's per-scene rho, theirs: b's
+};
+std::vector<ObjectivePair> objective_pairs(const StudyResult& result, int measure, int resamples,
+                                           uint64_t seed);
 
 }  // namespace aapat
