@@ -5,6 +5,7 @@
 
 #include "aapat/study/objective_study.h"
 #include "aapat/study/optimize_run.h"
+#include "aapat/study/perceptual_search.h"
 #include "aapat/study/study_json.h"
 #include "bindings.h"
 
@@ -50,6 +51,60 @@ void bind_studies(py::module_& m) {
 (default its six), per scene, and each pattern after the first against the
 first, paired over the scenes (scenes lower, mean difference with a bootstrap
 interval, sign test). The document of `aapat study --compare --json`.)doc");
+
+  m.def(
+      "perceptual_eval",
+      [](const py::object& patterns, const std::string& objective) {
+        const PerceptualSpec spec = parse_perceptual(objective);
+        std::vector<Pattern> list;
+        if (py::isinstance<py::list>(patterns) || py::isinstance<py::tuple>(patterns)) {
+          for (const py::handle& h : patterns) list.push_back(to_pattern(h));
+        } else {
+          list.push_back(to_pattern(patterns));
+        }
+        const auto errors = interruptible([&] {
+          const PerceptualObjective o(spec);
+          std::vector<PerceptualError> out;
+          for (const Pattern& p : list) out.push_back(o.evaluate(p));
+          return out;
+        });
+        return to_python(perceptual_eval_json(spec, list, errors));
+      },
+      py::arg("patterns"), py::kw_only(), py::arg("objective") = std::string(kPerceptualObjective),
+      R"doc(The perceptual objective (FLIP on edge, line and dot charts; docs/perceptual.md)
+of a pattern or a list of them (catalog names, files or aapat.Pattern; any
+family): the document of `aapat eval --objective SPEC --json`, each row with
+its family, n, value ("perceptual") and each kind's mean FLIP ("kinds").)doc");
+
+  m.def(
+      "refine",
+      [](const py::object& pattern, const std::string& objective, int max_tries, double step,
+         double min_step) {
+        const PerceptualSpec spec = parse_perceptual(objective);
+        const Pattern start = to_pattern(pattern);
+        PerceptualSearchSettings s;
+        s.max_tries = max_tries;
+        s.step = step;
+        s.min_step = min_step;
+        const PerceptualSearchResult r = interruptible([&] {
+          const PerceptualObjective o(spec);
+          return refine_perceptual(start, o, s);
+        });
+        py::dict out;
+        out["pattern"] = py::cast(r.pattern);
+        out["objective"] = spec.text();
+        out["before"] = r.start_value;
+        out["after"] = r.value;
+        out["tries"] = r.tries;
+        return out;
+      },
+      py::arg("pattern"), py::kw_only(), py::arg("objective") = std::string(kPerceptualObjective),
+      py::arg("max_tries") = PerceptualSearchSettings{}.max_tries,
+      py::arg("step") = PerceptualSearchSettings{}.step,
+      py::arg("min_step") = PerceptualSearchSettings{}.min_step,
+      R"doc(aapat refine: the pattern's positions and weights refined under the perceptual
+objective by a compass search, never worse than the start. Returns {pattern
+(an aapat.Pattern named START-perceptual), objective, before, after, tries}.)doc");
 
   m.def(
       "table3",

@@ -106,6 +106,10 @@ def calls(files):
         "sequence_search": (aapat.sequence_search, ["halton:frames=2"],
                             {"taa": "bevy", "random_scenes": 1, "shapes": 2, "size": (8, 8),
                              "frames": 2, "warmup": 1, "reference_samples": 4, "max_tries": 2}),
+        "perceptual_eval": (aapat.perceptual_eval, [["msaa-4", "rgss"]],
+                            {"objective": "perceptual:angles=1,patch=16,reference=16"}),
+        "refine": (aapat.refine, ["msaa-4"],
+                   {"objective": "perceptual:angles=1,patch=16,reference=16", "max_tries": 3}),
         "study_compare": (aapat.study_compare, [["msaa-4", "rgss"]],
                           {"scenes": ["halfplane"], "size": 8, "frames": 1,
                            "reference_samples": 4, "resamples": 20}),
@@ -149,7 +153,7 @@ def test_every_callable_has_a_bad_argument_case(files):
 @pytest.mark.parametrize("name", sorted(
     ["acuity", "AcuityTable", "filter", "Filter", "Filter.__call__", "diff", "discrepancy",
      "engine_taa", "enumerate", "eval", "eval_report", "export", "figure10", "generate", "hardware_table",
-     "load_pattern", "optimize", "optimize_sequence", "optimize_sequence_pan", "pattern", "Pattern", "Pattern.from_json",
+     "load_pattern", "optimize", "perceptual_eval", "refine", "optimize_sequence", "optimize_sequence_pan", "pattern", "Pattern", "Pattern.from_json",
      "Pattern.save", "profile", "read_points", "registry", "limits", "render", "save_pattern", "sequence",
      "Sequence.save", "sequence_compare", "sequence_eval", "sequence_pan", "sequence_search", "snap", "spectrum", "study_compare", "spectrum_1d", "table2", "table3",
      "write_points"]))

@@ -29,6 +29,23 @@ def test_eval_defaults_to_the_recommended_objective_on_both_faces(aapat_cli):
     assert round(papers["rows"][0]["e2"], 4) == 0.3643  # Laine-Aila Table 2
 
 
+def test_perceptual_eval_and_refine_are_the_cli_json(aapat_cli, tmp_path):
+    spec = "perceptual:angles=2,patch=16,reference=16"
+    cli = cli_json(aapat_cli, "eval", "msaa-4", "rgss", "--objective", spec)
+    py = aapat.perceptual_eval(["msaa-4", "rgss"], objective=spec)
+    py = {k: v for k, v in py.items() if k not in ("command", "schema")}
+    assert py == cli
+    refined = aapat.refine("msaa-4", objective=spec, max_tries=10)
+    cli = cli_json(aapat_cli, "--quiet", "refine", "msaa-4", "-O", spec, "--max-tries", "10")
+    assert (refined["before"], refined["after"], refined["tries"]) == (
+        cli["before"], cli["after"], cli["tries"])
+    assert refined["pattern"].name == "msaa-4-perceptual"
+    with pytest.raises(aapat.Error, match="ppd"):
+        aapat.perceptual_eval("msaa-4", objective="perceptual:ppd=0")
+    with pytest.raises(aapat.Error, match="no primitives"):
+        aapat.refine("msaa-4", objective="perceptual:edge=0,line=0,thin=0,dot=0")
+
+
 def test_eval_report_is_the_cli_json(aapat_cli):
     cli = cli_json(aapat_cli, "eval", "msaa-8", "flipquad", "--optimized-weights")
     py = aapat.eval_report(["msaa-8", "flipquad"], optimized_weights=True)

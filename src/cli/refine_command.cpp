@@ -18,7 +18,7 @@ Action add_refine_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "refine", "refine a pattern's positions and weights under the perceptual objective");
   struct Options {
-    std::string pattern, objective = std::string(kPerceptualObjective), output;
+    std::string pattern, objective = std::string(kPerceptualObjective), output, name;
     PerceptualSearchSettings search;
     bool json = false;
   };
@@ -32,6 +32,7 @@ Action add_refine_command(CLI::App& app) {
   cmd->add_option("--step", o->search.step, "the first step, pixels")->capture_default_str();
   cmd->add_option("--min-step", o->search.min_step, "the last step, pixels")->capture_default_str();
   cmd->add_option("-o,--output", o->output, "write the refined pattern (.json or .xyw)");
+  cmd->add_option("--name", o->name, "the refined pattern's name (default: START-perceptual)");
   cmd->add_flag("--json", o->json, "print JSON");
   return [o](std::ostream& out) {
     if (!o->output.empty() && !is_pattern_path(o->output))
@@ -49,6 +50,7 @@ Action add_refine_command(CLI::App& app) {
       Progress bar("refine");
       r = refine_perceptual(start, objective, o->search, bar.callback());
     }
+    if (!o->name.empty()) r.pattern.name = o->name;
     if (!o->output.empty()) save_pattern_file(r.pattern, o->output);
     JsonObject doc = json_report("refine");
     doc.update(JsonObject{{"objective", objective.spec().text()},
