@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <optional>
 #include <vector>
+
+#include "aapat/core/objective.h"
 
 #include "aapat/optimize/compass_search.h"
 #include "aapat/optimize/problem.h"
@@ -81,8 +84,14 @@ PerceptualSearchResult refine_perceptual(const Pattern& start, const PerceptualO
   // be read under its file's name, with a warning (io/catalog_clash.h).
   best.name = start.name + "-perceptual";
   best.description = start.description + ", refined under the perceptual objective";
+  // The provenance's E2 (the search's record, which `aapat list` shows) is
+  // the refined pattern's under the objective the start was designed for.
   best.provenance = start.provenance;
+  if (const std::optional<Objective> designed = design_objective(start))
+    for (auto& [key, value] : best.provenance)
+      if (key == "e2") value = fmt::format("{:.6f}", designed->metric().evaluate(best).e2);
   best.provenance.emplace_back("refined", objective.spec().text());
+  best.provenance.emplace_back("perceptual", fmt::format("{:.6f}", r.value));
   return {best, original, r.value, r.tries};
 }
 

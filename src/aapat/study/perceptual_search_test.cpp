@@ -2,21 +2,30 @@
 
 #include <gtest/gtest.h>
 
+#include "aapat/core/objective.h"
 #include "aapat/generate/catalog.h"
+#include "aapat/io/pattern_json.h"
 #include "testing/error_message.h"
 
 namespace aapat {
 namespace {
+
+// The start refined under a small objective (two directions, 16-pixel
+// charts) for at most `tries` evaluations.
+PerceptualSearchResult refined(const Pattern& start, int tries) {
+  const PerceptualObjective o(parse_perceptual("perceptual:angles=2,patch=16,reference=16"));
+  PerceptualSearchSettings s;
+  s.max_tries = tries;
+  return refine_perceptual(start, o, s);
+}
 
 // The search never returns a pattern worse than its start, keeps a
 // one-pixel pattern's samples strictly inside and its weights a
 // non-negative partition of 1, and records the objective it refined under.
 TEST(PerceptualSearch, NeverWorseAndOnTheConstraints) {
   const PerceptualObjective o(parse_perceptual("perceptual:angles=2,patch=16,reference=16"));
-  PerceptualSearchSettings s;
-  s.max_tries = 40;
   const Pattern start = catalog_pattern("msaa-4");
-  const PerceptualSearchResult r = refine_perceptual(start, o, s);
+  const PerceptualSearchResult r = refined(start, 40);
   EXPECT_EQ(r.start_value, o(start));
   EXPECT_LE(r.value, r.start_value);
   EXPECT_EQ(o(r.pattern), r.value);
@@ -31,7 +40,24 @@ TEST(PerceptualSearch, NeverWorseAndOnTheConstraints) {
     EXPECT_LT(std::abs(p.x), 0.5);
     EXPECT_LT(std::abs(p.y), 0.5);
   }
-  EXPECT_EQ(r.pattern.provenance.back().first, "refined");
+  const auto& why = r.pattern.provenance;
+  EXPECT_EQ(why[why.size() - 2].first, "refined");
+  EXPECT_EQ(why.back().first, "perceptual");
+  EXPECT_NEAR(std::stod(why.back().second), r.value, 1e-6);
+  EXPECT_EQ(r.pattern.name, "msaa-4-perceptual");
+}
+
+// A catalog pattern's recorded E2 (what `aapat list` shows) is re-measured
+// under the objective it was designed for once refined.
+TEST(PerceptualSearch, TheRecordedE2IsTheRefinedPatterns) {
+  const Pattern start = resolve_pattern("aapat-4");
+  const PerceptualSearchResult r = refined(start, 30);
+  ASSERT_LT(r.value, r.start_value);
+  std::string e2;
+  for (const auto& [key, value] : r.pattern.provenance)
+    if (key == "e2") e2 = value;
+  const double expected = design_objective(start)->metric().evaluate(r.pattern).e2;
+  EXPECT_NEAR(std::stod(e2), expected, 1e-6);
 }
 
 TEST(PerceptualSearch, BadSettingsAreRefused) {
