@@ -12,6 +12,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 
 #include "aapat/core/filter_catalog.h"
@@ -33,6 +34,7 @@
 #include "aapat/render/scene.h"
 #include "aapat/study/eval_study.h"
 #include "aapat/study/optimize_run.h"
+#include "aapat/study/perceptual_objective.h"
 #include "aapat/study/point_set_study.h"
 #include "aapat/study/render_study.h"
 #include "aapat/study/study_json.h"
@@ -183,6 +185,22 @@ std::string evaluate(const std::string& request) {
                       {"angles_deg", metric.acuity().angles_deg},
                       {"acuity_weights", metric.acuity().weights},
                       {"profile", evaluations[0].worst_profile}};
+  });
+}
+
+// The perceptual objective (study/perceptual_objective.h) of the pattern
+// under `objective` (a perceptual spec): the document of `aapat eval
+// --objective SPEC --json`. Each spec's charts and ideals are rendered once.
+std::string perceptual(const std::string& request) {
+  return answer([&] {
+    const Json r = parse_request(request);
+    const PerceptualSpec spec =
+        parse_perceptual(field<std::string>(r, "objective", std::string(kPerceptualObjective)));
+    const Pattern p = pattern_of(r);
+    static std::map<std::string, std::unique_ptr<PerceptualObjective>> kept;
+    auto& o = kept[spec.text()];
+    if (!o) o = std::make_unique<PerceptualObjective>(spec);
+    return perceptual_eval_json(spec, {p}, {o->evaluate(p)});
   });
 }
 
@@ -371,6 +389,7 @@ EMSCRIPTEN_BINDINGS(aapat_explorer) {
   emscripten::function("readLink", &read_link);
   emscripten::function("loadPattern", &load_pattern);
   emscripten::function("evaluate", &evaluate);
+  emscripten::function("perceptual", &perceptual);
   emscripten::function("moveSample", &move);
   emscripten::function("setWeight", &weight);
   emscripten::function("patternFile", &pattern_file);

@@ -61,6 +61,22 @@ for (const objective of ['recommended', 'laine-aila']) {
   check(worst <= 1e-12, `${names.length} catalog patterns, objective ${objective}: module E2 == CLI E2 (largest difference ${worst.toExponential(2)})`);
 }
 
+// The perceptual objective in the module and the CLI: the same charts, the
+// same FLIP to a millionth of the value (FLIP computes in float with each
+// platform's powf, expf and cbrtf: the module and the CLI differ in the
+// seventh digit; docs/perceptual.md).
+{
+  const objective = 'perceptual:angles=2,patch=16,reference=16';
+  for (const name of ['msaa-4', 'aapat-8', 'hasselgren-f']) {
+    const web = JSON.parse(module.perceptual(JSON.stringify({ pattern: name, objective }))).rows[0];
+    const native = cli('eval', name, '--objective', objective, '--json').rows[0];
+    check(near(web.perceptual, native.perceptual, 1e-6 * native.perceptual) && web.family === native.family,
+      `${name} under ${objective}: module ${web.perceptual} within a millionth of the CLI's ${native.perceptual}`);
+  }
+  const bad = JSON.parse(module.perceptual(JSON.stringify({ pattern: 'msaa-4', objective: 'perceptual:ppd=0' })));
+  check(typeof bad.error === 'string' && bad.error.includes('ppd'), `a bad perceptual spec is refused naming ppd: ${bad.error}`);
+}
+
 // Same seed, same output on every platform: each point generator, seeded, in
 // the module (libc++, emscripten's libm) and the CLI (libstdc++, glibc) gives
 // the same points to the last bit, and so does a seeded optimization.
