@@ -193,7 +193,7 @@ std::vector<std::string> metric_args(std::vector<std::string> args) {
 
 // A random command line of one of the commands, small enough to run fast.
 std::vector<std::string> random_command() {
-  const int which = uniform(0, 22);
+  const int which = uniform(0, 23);
   std::vector<std::string> a;
   switch (which) {
     case 0:
@@ -442,6 +442,19 @@ std::vector<std::string> random_command() {
       maybe(a, "--loss", {"0", "-1", "nan"});
       maybe(a, "--step", {"0.125", "0", "0.75"});
       maybe(a, "-o", {"s.json", "s.txt"});
+      maybe_flag(a, "--json");
+      break;
+    case 22:  // the perceptual objective, tiny charts: eval and refine
+      a = {coin() ? "eval" : "refine", *one_of(kPatterns), "--objective",
+           *one_of({"perceptual:angles=1,patch=16,reference=16",
+                    "perceptual:angles=1,patch=16,reference=16,box=1", "perceptual:ppd=0.5",
+                    "perceptual:ppd=1001", "perceptual:edge=0,line=0,thin=0,dot=0",
+                    "perceptual:background=nan", "perceptual:foreground=0,background=0",
+                    "perceptual:reference=20", "perceptual:nosuch=1", "perceptual:angles=0"})};
+      if (a[0] == "refine") {
+        a.insert(a.end(), {"--max-tries", *one_of({"3", "0", "-2"})});
+        maybe(a, "-o", {"refined.json", "refined.png", "folder"});
+      }
       maybe_flag(a, "--json");
       break;
   }
