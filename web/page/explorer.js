@@ -268,6 +268,8 @@
       return false;
     }
     state.evaluation = e;
+    $('perceptual').textContent = '—';  // on request: it renders its charts
+    $('perceptual').dataset.value = '';
     const row = e.eval.rows[0];
     $('e2').textContent = row.e2.toFixed(4);
     $('e2').dataset.value = String(row.e2);
@@ -715,6 +717,12 @@
     for (const b of document.querySelectorAll('.tab')) on(b, 'click', () => { selectTab(b.dataset.tab); writeHash(); });
     on($('catalog'), 'change', () => { if ($('catalog').value) loadByName($('catalog').value); });
     on($('lattice'), 'change', () => drawPattern());
+    on($('perceptual-button'), 'click', () => {
+      const p = call('perceptual', { pattern: state.pattern });
+      if (!p) return;
+      $('perceptual').textContent = p.rows[0].perceptual.toFixed(4);
+      $('perceptual').dataset.value = String(p.rows[0].perceptual);
+    });
     on($('objective'), 'change', () => {
       $('custom-objective').hidden = $('objective').value !== 'custom';
       update();

@@ -125,6 +125,13 @@ try {
   await open('#pattern=flipquad');
   const flipquad = cli('eval', 'flipquad', '--json').rows[0].e2;
   check(near(await e2Shown(), flipquad, 1e-12), `#pattern=flipquad shows the recommended objective's E2 ${flipquad.toFixed(4)}`);
+  // The perceptual objective on request, the module's value to a millionth of the CLI's.
+  await page.click('#perceptual-button');
+  await page.waitForFunction(() => document.querySelector('#perceptual').dataset.value !== '', { timeout: 60000 });
+  const shownPerceptual = await page.$eval('#perceptual', (e) => Number(e.dataset.value));
+  const nativePerceptual = cli('eval', 'flipquad', '--objective', 'perceptual', '--json').rows[0].perceptual;
+  check(near(shownPerceptual, nativePerceptual, 1e-6 * nativePerceptual),
+    `#pattern=flipquad, perceptual on request: ${shownPerceptual.toFixed(6)} (CLI ${nativePerceptual.toFixed(6)})`);
   await open('#pattern=flipquad&objective=laine-aila');
   const text = await page.$eval('#e2', (e) => e.textContent);
   const la = cli('eval', 'flipquad', '--objective', 'laine-aila', '--json').rows[0].e2;
