@@ -59,11 +59,12 @@ done
 # ends worse under the perceptual objective (docs/studies/perceptual-objective.md).
 # AAPAT_CATALOG_REFINE=0 skips it; AAPAT_CATALOG_REFINE_TRIES evaluations each.
 refine_tries=${AAPAT_CATALOG_REFINE_TRIES:-1500}
-# A refined pattern replaces the E2 optimum only where its mean FLIP on the
+# A refined pattern replaces the entry only where its mean FLIP on the
 # tuning mesh views (data/mesh-views, as the catalog table measures them) is
-# lower: on 2026-12-06 that kept aapat-3 and aapat-5 to -16 and aapat-shared-1.5,
-# -1.75, -2, -3 and -4, and left aapat-2, aapat-4 and aapat-shared-1.25 as E2
-# found them (docs/catalog.md).
+# lower: on 2026-12-06 that refined aapat-3, aapat-5 to -16, aapat-shared-2, -3
+# and -4 from E2's optima and aapat-shared-1.25, -1.5 and -1.75 from
+# Hasselgren's schemes A, B and E, and left aapat-2 and aapat-4 as E2 found
+# them (docs/catalog.md).
 mesh_flip() {  # pattern file: its mean FLIP on the tuning mesh views
   "$aapat" --quiet study --compare "$1" --size 128 --scenes "$root"/data/mesh-views/*.json \
     --json | python3 -c 'import json, sys
@@ -72,23 +73,42 @@ f = d["measures"].index("flip")
 m = d["patterns"][0]["measures"]
 print(sum(s[f] for s in m) / len(m))'
 }
-refine() {  # name
-  local name=$1 refined
+refine() {  # name [published starts of its family...]
+  local name=$1 refined start best
+  shift
   if [ -n "$only" ] && ! [[ $name =~ $only ]]; then return; fi
-  echo "== $name: refined under the perceptual objective"
-  refined=$(mktemp --suffix=.json)
-  "$aapat" --quiet refine "$out/$name.json" --max-tries "$refine_tries" --name "$name" \
-    -o "$refined" | tail -2 | head -1
-  if python3 -c 'import sys; sys.exit(0 if float(sys.argv[1]) < float(sys.argv[2]) else 1)' \
-    "$(mesh_flip "$refined")" "$(mesh_flip "$out/$name.json")"; then
-    mv "$refined" "$out/$name.json"
-  else
-    echo "   kept the E2 optimum: no lower FLIP on the tuning mesh views"
-    rm -f "$refined"
-  fi
+  best=$(mesh_flip "$out/$name.json")
+  # From the E2 optimum, then from each published pattern of the family:
+  # the lowest FLIP on the tuning meshes is the entry.
+  for start in "$out/$name.json" "$@"; do
+    echo "== $name: refined under the perceptual objective from ${start##*/}"
+    refined=$(mktemp --suffix=.json)
+    "$aapat" --quiet refine "$start" --max-tries "$refine_tries" --name "$name" \
+      -o "$refined" | tail -2 | head -1
+    local flip
+    flip=$(mesh_flip "$refined")
+    if python3 -c 'import sys; sys.exit(0 if float(sys.argv[1]) < float(sys.argv[2]) else 1)' \
+      "$flip" "$best"; then
+      mv "$refined" "$out/$name.json"
+      best=$flip
+    else
+      echo "   not kept: no lower FLIP on the tuning mesh views"
+      rm -f "$refined"
+    fi
+  done
 }
 if [ "${AAPAT_CATALOG_REFINE:-1}" = 1 ]; then
-  for n in $(seq 2 16); do refine "aapat-$n"; done
-  for n in 1.25 1.5 1.75 2 3 4; do refine "aapat-shared-$n"; done
+  for n in $(seq 2 16); do
+    case $n in
+      2 | 4 | 8 | 16) refine "aapat-$n" "msaa-$n" ;;
+      *) refine "aapat-$n" ;;
+    esac
+  done
+  refine aapat-shared-1.25 fliptri hasselgren-a
+  refine aapat-shared-1.5 hasselgren-b hasselgren-c
+  refine aapat-shared-1.75 hasselgren-d hasselgren-e
+  refine aapat-shared-2 flipquad hasselgren-f
+  refine aapat-shared-3
+  refine aapat-shared-4
 fi
 echo "catalog written under $out"

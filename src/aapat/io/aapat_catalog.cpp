@@ -27,8 +27,10 @@ std::vector<SpecInfo> aapat_catalog() {
     std::string summary = fmt::format("{}: E2 {} under the objective {}", family(p),
                                       why.value("e2", "?"), designed ? designed->text() : "?");
     if (why.contains("refined"))
-      summary += fmt::format(", refined to {} under the perceptual objective",
-                             why.value("perceptual", "?"));
+      summary += fmt::format(
+          ", refined{} to {} under the perceptual objective",
+          why.contains("refined_from") ? " from " + why.value("refined_from", "?") : std::string(),
+          why.value("perceptual", "?"));
     if (why.contains("api"))
       summary += fmt::format(", on {}'s lattice E2 {}", why.value("api", "?"),
                              why.value("lattice_e2", "?"));

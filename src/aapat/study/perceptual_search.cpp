@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "aapat/core/metric.h"
 #include "aapat/core/objective.h"
 
 #include "aapat/optimize/compass_search.h"
@@ -85,11 +86,21 @@ PerceptualSearchResult refine_perceptual(const Pattern& start, const PerceptualO
   best.name = start.name + "-perceptual";
   best.description = start.description + ", refined under the perceptual objective";
   // The provenance's E2 (the search's record, which `aapat list` shows) is
-  // the refined pattern's under the objective the start was designed for.
+  // the refined pattern's under the objective the start was designed for;
+  // a start designed for none (a published pattern) records where it came
+  // from and its E2 under the default objective, named in full.
   best.provenance = start.provenance;
-  if (const std::optional<Objective> designed = design_objective(start))
+  const std::optional<Objective> designed = design_objective(start);
+  const Objective recorded = designed ? *designed : named_objective(kDefaultObjective);
+  const std::string e2 = fmt::format("{:.6f}", recorded.metric().evaluate(best).e2);
+  if (designed) {
     for (auto& [key, value] : best.provenance)
-      if (key == "e2") value = fmt::format("{:.6f}", designed->metric().evaluate(best).e2);
+      if (key == "e2") value = e2;
+  } else {
+    best.provenance = {{"refined_from", start.name},   {"filter", recorded.filter},
+                       {"acuity", recorded.acuity},    {"norm", format_norm(recorded.norm)},
+                       {"objective", recorded.text()}, {"e2", e2}};
+  }
   best.provenance.emplace_back("refined", objective.spec().text());
   best.provenance.emplace_back("perceptual", fmt::format("{:.6f}", r.value));
   return {best, original, r.value, r.tries};

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "aapat/core/objective.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/io/pattern_json.h"
@@ -58,6 +60,15 @@ TEST(PerceptualSearch, TheRecordedE2IsTheRefinedPatterns) {
     if (key == "e2") e2 = value;
   const double expected = design_objective(start)->metric().evaluate(r.pattern).e2;
   EXPECT_NEAR(std::stod(e2), expected, 1e-6);
+  // A published start (no design objective) records where it came from and
+  // its E2 under the default objective, which then reads as its design.
+  const PerceptualSearchResult q = refined(catalog_pattern("hasselgren-b"), 20);
+  std::map<std::string, std::string> why(q.pattern.provenance.begin(), q.pattern.provenance.end());
+  EXPECT_EQ(why["refined_from"], "hasselgren-b");
+  EXPECT_EQ(why["objective"], "recommended");
+  EXPECT_NEAR(std::stod(why["e2"]),
+              named_objective(kDefaultObjective).metric().evaluate(q.pattern).e2, 1e-6);
+  EXPECT_EQ(design_objective(q.pattern)->text(), "recommended");
 }
 
 TEST(PerceptualSearch, BadSettingsAreRefused) {
