@@ -5,7 +5,6 @@
 #include <tbb/parallel_invoke.h>
 
 #include <exception>
-
 #include <memory>
 #include <ostream>
 
@@ -47,21 +46,17 @@ void run_diff(const DiffOptions& o, std::ostream& out) {
   // the reference is reported before one of the test, whichever came first.
   PngColor reference, test;
   std::exception_ptr reference_error, test_error;
+  const auto decode = [](const std::string& bytes, const std::string& path, const char* what,
+                         PngColor& image, std::exception_ptr& error) {
+    try {
+      image = decode_png_color(bytes, path, what);
+    } catch (...) {
+      error = std::current_exception();
+    }
+  };
   tbb::parallel_invoke(
-      [&] {
-        try {
-          reference = decode_png_color(reference_bytes, o.reference, "reference image");
-        } catch (...) {
-          reference_error = std::current_exception();
-        }
-      },
-      [&] {
-        try {
-          test = decode_png_color(test_bytes, o.test, "test image");
-        } catch (...) {
-          test_error = std::current_exception();
-        }
-      });
+      [&] { decode(reference_bytes, o.reference, "reference image", reference, reference_error); },
+      [&] { decode(test_bytes, o.test, "test image", test, test_error); });
   if (reference_error) std::rethrow_exception(reference_error);
   if (test_error) std::rethrow_exception(test_error);
   auto note_alpha = [](const PngColor& image, const std::string& path) {

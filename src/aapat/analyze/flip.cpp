@@ -283,6 +283,14 @@ void for_each_band(int h, Body body) {
   });
 }
 
+template <class Reference>
+void check_sizes(const Reference& reference, const ColorImage& test) {
+  if (reference.width != test.width || reference.height != test.height)
+    throw Error(
+        fmt::format("FLIP: the reference is {}x{} pixels and the test {}x{}; they must match",
+                    reference.width, reference.height, test.width, test.height));
+}
+
 void check_ppd(double ppd) {
   if (!(ppd >= kMinPixelsPerDegree && ppd <= kMaxPixelsPerDegree))
     throw ParameterError("ppd", fmt::format(" {}: expected {} to {} pixels per degree", ppd,
@@ -345,10 +353,7 @@ FlipReference prepare_flip_reference(const ColorImage& reference, double ppd) {
 }
 
 FlipResult flip(const FlipReference& reference, const ColorImage& test) {
-  if (reference.width != test.width || reference.height != test.height)
-    throw Error(
-        fmt::format("FLIP: the reference is {}x{} pixels and the test {}x{}; they must match",
-                    reference.width, reference.height, test.width, test.height));
+  check_sizes(reference, test);
   const int w = test.width, h = test.height;
   const Filters f{csf_filters(reference.ppd), feature_filters(reference.ppd)};
   const float cmax = max_color_distance(), knee = kPc * cmax;
@@ -381,10 +386,7 @@ FlipResult flip(const FlipReference& reference, const ColorImage& test) {
 
 FlipResult flip(const ColorImage& reference, const ColorImage& test, double ppd) {
   check_ppd(ppd);
-  if (reference.width != test.width || reference.height != test.height)
-    throw Error(
-        fmt::format("FLIP: the reference is {}x{} pixels and the test {}x{}; they must match",
-                    reference.width, reference.height, test.width, test.height));
+  check_sizes(reference, test);
   return flip(prepare_flip_reference(reference, ppd), test);
 }
 
