@@ -1,5 +1,7 @@
 #include "aapat/render/image_flip.h"
 
+#include <algorithm>
+
 #include "aapat/render/image_error.h"
 
 namespace aapat {
@@ -8,7 +10,11 @@ float stored_value(double v) {
   return static_cast<float>(grey_level(v)) / 255.0f;
 }
 
-ColorImage color_image(const Image& image) {
+ColorImage color_image(const Image& image, ColorLevels levels) {
+  const auto value = [levels](double v) {
+    return levels == ColorLevels::kStored ? stored_value(v)
+                                          : static_cast<float>(std::clamp(v, 0.0, 1.0));
+  };
   ColorImage c{image.width, image.height,
                std::vector<float>(static_cast<size_t>(image.width) * image.height * 3)};
   for (int j = 0; j < image.height; ++j)  // the renderer's row 0 is the bottom
@@ -16,7 +22,7 @@ ColorImage color_image(const Image& image) {
       const size_t k = (static_cast<size_t>(j) * image.width + i) * image.channels;
       float* out = &c.rgb[3 * (static_cast<size_t>(image.height - 1 - j) * image.width + i)];
       for (size_t ch = 0; ch < 3; ++ch)  // grey: R = G = B
-        out[ch] = stored_value(image.values[k + (image.channels == 3 ? ch : 0)]);
+        out[ch] = value(image.values[k + (image.channels == 3 ? ch : 0)]);
     }
   return c;
 }

@@ -21,8 +21,13 @@ float stored_value(double v);
 // at a hard edge). Python's diff refuses values further out.
 inline constexpr double kMaxOvershoot = 0.25;
 
+// How color_image takes the values: as a PNG stores them (stored_value), or
+// clamped to [0, 1] alone, so that a measure moves with every change of the
+// image (the perceptual objective, study/perceptual_objective.h).
+enum class ColorLevels { kStored, kExact };
+
 // The image's levels as a colour image (grey: R = G = B), rows from the top.
-ColorImage color_image(const Image& image);
+ColorImage color_image(const Image& image, ColorLevels levels = ColorLevels::kStored);
 
 // The mean FLIP; images must be the same size.
 double flip_mean(const Image& image, const Image& reference);

@@ -9,6 +9,7 @@
 #include "aapat/core/geometry.h"
 #include "aapat/core/portable_math.h"
 #include "aapat/io/json_report.h"
+#include "aapat/render/image_flip.h"
 #include "aapat/render/reference.h"
 #include "aapat/render/renderer.h"
 #include "aapat/render/thin_geometry.h"
@@ -116,20 +117,6 @@ Scene dots(const PerceptualSpec& s, double angle) {
   return Scene{std::move(scene)};
 }
 
-// The rendering as FLIP reads it: grey, R = G = B, rows from the top,
-// clamped to [0, 1] but not rounded to 8-bit levels, so that the objective
-// moves with every move of a sample.
-ColorImage grey_colour(const Image& image) {
-  ColorImage c{image.width, image.height, std::vector<float>(3 * image.pixels())};
-  for (int j = 0; j < image.height; ++j)
-    for (int i = 0; i < image.width; ++i) {
-      const auto v = static_cast<float>(std::clamp(image.at(i, j), 0.0, 1.0));
-      float* out = &c.rgb[3 * (static_cast<size_t>(image.height - 1 - j) * image.width + i)];
-      out[0] = out[1] = out[2] = v;
-    }
-  return c;
-}
-
 }  // namespace
 
 std::string PerceptualSpec::text() const {
@@ -174,30 +161,31 @@ PerceptualObjective::PerceptualObjective(PerceptualSpec spec) : spec_(std::move(
     const int k = add_kind("dots");
     for (const double a : kDotLatticeAngles) charts_.push_back({k, dots(spec_, a)});
   }
-  ideal_ = std::vector<FlipReference>(charts_.size());
+  ideal_ = render_ideals(0);
+}
+
+// Each chart's ideal image at `offset` (Image::offset), its FLIP half
+// prepared: the study's reference (or the box pixel) from spec.reference
+// samples per pixel, clamped to [0, 1] as the charts' renderings are.
+std::vector<FlipReference> PerceptualObjective::render_ideals(double offset) const {
+  ReferenceSettings reference;
+  reference.samples = spec_.reference;
+  reference.filter = spec_.box ? "box" : "mitchell";
+  std::vector<FlipReference> out(charts_.size());
   tbb::parallel_for(size_t{0}, charts_.size(), [&](size_t c) {
-    ideal_[c] =
-        prepare_flip_reference(grey_colour(render_reference(
-                                   charts_[c].scene, spec_.patch, spec_.patch,
-                                   {spec_.reference, spec_.box ? "box" : "mitchell", 1000004}, 0)),
-                               spec_.ppd);
+    out[c] = prepare_flip_reference(
+        color_image(render_reference(charts_[c].scene, spec_.patch, spec_.patch, reference, offset),
+                    ColorLevels::kExact),
+        spec_.ppd);
   });
+  return out;
 }
 
 const std::vector<FlipReference>& PerceptualObjective::ideals(double offset) const {
   if (offset == 0) return ideal_;
   // A 2x2 or 4x4 footprint reconstructs at the pixel corners: its ideal is
   // rendered there, once.
-  std::call_once(shifted_once_, [&] {
-    shifted_.resize(charts_.size());
-    tbb::parallel_for(size_t{0}, charts_.size(), [&](size_t c) {
-      shifted_[c] = prepare_flip_reference(
-          grey_colour(render_reference(charts_[c].scene, spec_.patch, spec_.patch,
-                                       {spec_.reference, spec_.box ? "box" : "mitchell", 1000004},
-                                       0.5)),
-          spec_.ppd);
-    });
-  });
+  std::call_once(shifted_once_, [&] { shifted_ = render_ideals(0.5); });
   return shifted_;
 }
 
@@ -207,7 +195,7 @@ PerceptualError PerceptualObjective::evaluate(const Pattern& pattern) const {
   sampling.pattern = pattern;
   tbb::parallel_for(size_t{0}, charts_.size(), [&](size_t c) {
     const Image image = render(charts_[c].scene, spec_.patch, spec_.patch, sampling, std::nullopt);
-    flips[c] = flip(ideals(image.offset)[c], grey_colour(image)).mean;
+    flips[c] = flip(ideals(image.offset)[c], color_image(image, ColorLevels::kExact)).mean;
   });
   PerceptualError e;
   std::vector<int> counts(kinds_.size());

@@ -97,6 +97,7 @@ class PerceptualObjective {
     Scene scene;
   };
   const std::vector<FlipReference>& ideals(double offset) const;
+  std::vector<FlipReference> render_ideals(double offset) const;
 
   PerceptualSpec spec_;
   std::vector<std::string> kinds_;
