@@ -106,12 +106,12 @@ std::vector<ObjectivePair> flip_pairs(const StudyResult& r, const StudySettings&
   return objective_pairs(r, static_cast<int>(flip - kStudyMeasures.begin()), s.resamples, s.seed);
 }
 
-std::string pairs_table(const StudyResult& r, const StudySettings& s) {
+std::string pairs_table(const StudyResult& r, const std::vector<ObjectivePair>& pairs) {
   std::string t =
       "Spearman's rho with FLIP, objective a against objective b, paired over the scenes "
       "(mean over the budgets per scene; 95% bootstrap interval of the mean difference over "
       "scenes):\n";
-  for (const ObjectivePair& p : flip_pairs(r, s))
+  for (const ObjectivePair& p : pairs)
     if (p.a < p.b)
       t += fmt::format(
           "  {} - {}: {:+.4f} [{:+.4f}, {:+.4f}], a higher in {} of {} scenes, sign p = {:.3g}\n",
@@ -120,7 +120,9 @@ std::string pairs_table(const StudyResult& r, const StudySettings& s) {
   return t;
 }
 
-JsonObject study_json(const StudyResult& r, const StudyOptions& o) {
+// pairs: flip_pairs(r, ...) with --pairs, else none.
+JsonObject study_json(const StudyResult& r, const StudyOptions& o,
+                      const std::vector<ObjectivePair>& pairs) {
   JsonObject doc = json_report("study");
   JsonObject objectives = JsonObject::array();
   for (size_t i = 0; i < r.objectives.size(); ++i)
@@ -166,16 +168,10 @@ JsonObject study_json(const StudyResult& r, const StudyOptions& o) {
                         {"recommended", r.recommended},
                         {"budgets", budgets}});
   if (o.pairs) {
-    JsonObject pairs = JsonObject::array();
-    for (const ObjectivePair& p : flip_pairs(r, o.settings))
-      pairs.push_back({{"a", p.a},
-                       {"b", p.b},
-                       {"scenes", p.rho.items},
-                       {"scenes_a_lower", p.rho.lower},
-                       {"mean_difference", p.rho.mean_difference},
-                       {"interval", {p.rho.low, p.rho.high}},
-                       {"sign_p", p.rho.sign_p}});
-    doc["flip_rho_pairs"] = pairs;
+    JsonObject rows = JsonObject::array();
+    for (const ObjectivePair& p : pairs)
+      rows.push_back({{"a", p.a}, {"b", p.b}, {"rho", paired_comparison_json(p.rho)}});
+    doc["flip_rho_pairs"] = rows;
   }
   return doc;
 }
@@ -239,12 +235,14 @@ void run_study(StudyOptions& o, std::ostream& out) {
   std::string text;
   for (const BudgetStudy& b : r.budgets) text += summary_table(r, b) + "\n";
   text += recommendation(r);
-  if (o.pairs) text += "\n" + pairs_table(r, o.settings);
+  const std::vector<ObjectivePair> pairs =
+      o.pairs ? flip_pairs(r, o.settings) : std::vector<ObjectivePair>{};
+  if (o.pairs) text += "\n" + pairs_table(r, pairs);
   if (!o.table.empty()) write_output(o.table, "```\n" + text + "```\n", out);
   if (!o.csv.empty()) write_output(o.csv, correlations_csv(r), out);
   if (!o.html.empty())
     write_output(o.html, study_report_html(r, o.settings, o.reference.source()), out);
-  out << (o.json ? json_text(study_json(r, o)) : text);
+  out << (o.json ? json_text(study_json(r, o, pairs)) : text);
 }
 
 }  // namespace

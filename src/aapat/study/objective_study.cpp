@@ -5,10 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 #include <numeric>
-#include <optional>
 
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter_catalog.h"
@@ -228,16 +228,18 @@ SceneFrames scene_frames(const StudySettings& s, const ReferenceSource& referenc
 // in parallel, each result in its own slot) and per-degree profile.
 void measure(std::vector<StudyPattern>& patterns, const StudySettings& s,
              const std::vector<StudyObjective>& objectives, const SceneFrames& scenes) {
-  // Per objective, its E2 metric or its perceptual objective (charts rendered once).
-  std::vector<std::optional<Metric>> metrics;
-  std::vector<std::unique_ptr<PerceptualObjective>> perceptual;
+  // Per objective, its value of a pattern: E2 under its metric, or the
+  // perceptual objective (its charts rendered once, here).
+  std::vector<std::function<double(const Pattern&)>> objective_of;
   for (const StudyObjective& o : objectives) {
-    metrics.emplace_back();
-    perceptual.emplace_back();
-    if (o.perceptual.empty())
-      metrics.back().emplace(make_filter(o.filter), make_acuity(o.acuity), o.norm);
-    else
-      perceptual.back() = std::make_unique<PerceptualObjective>(parse_perceptual(o.perceptual));
+    if (o.perceptual.empty()) {
+      const Metric metric(make_filter(o.filter), make_acuity(o.acuity), o.norm);
+      objective_of.emplace_back([metric](const Pattern& p) { return metric.evaluate(p).e2; });
+    } else {
+      const auto perceptual =
+          std::make_shared<const PerceptualObjective>(parse_perceptual(o.perceptual));
+      objective_of.emplace_back([perceptual](const Pattern& p) { return (*perceptual)(p); });
+    }
   }
   const Metric degree(make_filter(s.filter), make_acuity("uniform:step=1"));
   for (StudyPattern& p : patterns) p.measures.assign(s.scenes.size(), {});
@@ -269,9 +271,7 @@ void measure(std::vector<StudyPattern>& patterns, const StudySettings& s,
   tbb::parallel_for(size_t{0}, patterns.size(), [&](size_t i) {
     StudyPattern& p = patterns[i];
     p.objective.clear();
-    for (size_t o = 0; o < metrics.size(); ++o)
-      p.objective.push_back(metrics[o] ? metrics[o]->evaluate(p.pattern).e2
-                                       : (*perceptual[o])(p.pattern));
+    for (const auto& objective : objective_of) p.objective.push_back(objective(p.pattern));
     p.profile = degree.profile(make_kernel(p.pattern, 0));
   });
 }

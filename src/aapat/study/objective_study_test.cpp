@@ -110,3 +110,43 @@ TEST(ObjectiveStudy, SettingsOutOfRangeAreNamed) {
 
 }  // namespace
 }  // namespace aapat
+
+namespace aapat {
+namespace {
+
+// objective_pairs averages each objective's rho over the budgets per scene,
+// leaves out a scene where some objective has none, and compares the
+// objectives paired over the rest: here b's rho is a's minus 0.1 in every
+// kept scene, so a - b is +0.1 exactly with a zero-width interval.
+TEST(ObjectiveStudy, ObjectivePairsCompareRhoPairedOverScenes) {
+  StudyResult r;
+  r.objectives = {{"mitchell", "laine-aila", 2, ""}, {"", "", 0, "perceptual"}};
+  r.scenes = {"s0", "s1", "s2"};
+  const int flip = 4;
+  const double a_rho[2][3] = {{0.9, 0.5, 0.7}, {0.7, 0.3, 0.1}};  // per budget, per scene
+  for (int budget = 0; budget < 2; ++budget) {
+    BudgetStudy b;
+    for (int sc = 0; sc < 3; ++sc)
+      for (int o = 0; o < 2; ++o) {
+        RankCorrelation c;
+        c.spearman.value = sc == 2 && o == 1 ? NAN : a_rho[budget][sc] - 0.1 * o;
+        b.correlations.push_back({o, sc, flip, c});
+        b.correlations.push_back({o, sc, 0, RankCorrelation{}});  // another measure: ignored
+      }
+    r.budgets.push_back(b);
+  }
+  const std::vector<ObjectivePair> pairs = objective_pairs(r, flip, 200, 1);
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_EQ(pairs[0].a, 0);
+  EXPECT_EQ(pairs[0].b, 1);
+  EXPECT_EQ(pairs[0].rho.items, 2);  // scene 2 left out
+  EXPECT_NEAR(pairs[0].rho.mean_difference, 0.1, 1e-12);
+  EXPECT_NEAR(pairs[0].rho.low, 0.1, 1e-12);
+  EXPECT_NEAR(pairs[0].rho.high, 0.1, 1e-12);
+  EXPECT_EQ(pairs[0].rho.lower, 0);
+  EXPECT_NEAR(pairs[1].rho.mean_difference, -0.1, 1e-12);
+  EXPECT_EQ(pairs[1].rho.lower, 2);
+}
+
+}  // namespace
+}  // namespace aapat
