@@ -90,12 +90,8 @@ its family, n, value ("perceptual") and each kind's mean FLIP ("kinds").)doc");
           const PerceptualObjective o(spec);
           return refine_perceptual(start, o, s);
         });
-        py::dict out;
-        out["pattern"] = py::cast(r.pattern);
-        out["objective"] = spec.text();
-        out["before"] = r.start_value;
-        out["after"] = r.value;
-        out["tries"] = r.tries;
+        py::dict out = to_python(refine_json(spec, start, r));
+        out["refined"] = py::cast(r.pattern);
         return out;
       },
       py::arg("pattern"), py::kw_only(), py::arg("objective") = std::string(kPerceptualObjective),
@@ -103,8 +99,10 @@ its family, n, value ("perceptual") and each kind's mean FLIP ("kinds").)doc");
       py::arg("step") = PerceptualSearchSettings{}.step,
       py::arg("min_step") = PerceptualSearchSettings{}.min_step,
       R"doc(aapat refine: the pattern's positions and weights refined under the perceptual
-objective by a compass search, never worse than the start. Returns {pattern
-(an aapat.Pattern named START-perceptual), objective, before, after, tries}.)doc");
+objective by a compass search, never worse than the start. Returns the
+document of `aapat refine --json` ({objective, pattern: the start's name,
+family, before, after, tries}) with `refined`, the aapat.Pattern named
+START-perceptual.)doc");
 
   m.def(
       "table3",

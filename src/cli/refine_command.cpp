@@ -52,13 +52,7 @@ Action add_refine_command(CLI::App& app) {
     }
     if (!o->name.empty()) r.pattern.name = o->name;
     if (!o->output.empty()) save_pattern_file(r.pattern, o->output);
-    JsonObject doc = json_report("refine");
-    doc.update(JsonObject{{"objective", objective.spec().text()},
-                          {"pattern", start.name},
-                          {"family", family(start)},
-                          {"before", r.start_value},
-                          {"after", r.value},
-                          {"tries", r.tries}});
+    const JsonObject doc = refine_json(objective.spec(), start, r);
     if (o->json) {
       out << json_text(doc);
       return;

@@ -7,7 +7,7 @@
 
 #include "aapat/core/metric.h"
 #include "aapat/core/objective.h"
-
+#include "aapat/io/json_report.h"
 #include "aapat/optimize/compass_search.h"
 #include "aapat/optimize/problem.h"
 
@@ -104,6 +104,18 @@ PerceptualSearchResult refine_perceptual(const Pattern& start, const PerceptualO
   best.provenance.emplace_back("refined", objective.spec().text());
   best.provenance.emplace_back("perceptual", fmt::format("{:.6f}", r.value));
   return {best, original, r.value, r.tries};
+}
+
+nlohmann::ordered_json refine_json(const PerceptualSpec& spec, const Pattern& start,
+                                   const PerceptualSearchResult& result) {
+  JsonObject doc = json_report("refine");
+  doc.update(JsonObject{{"objective", spec.text()},
+                        {"pattern", start.name},
+                        {"family", family(start)},
+                        {"before", result.start_value},
+                        {"after", result.value},
+                        {"tries", result.tries}});
+  return doc;
 }
 
 }  // namespace aapat

@@ -9,6 +9,8 @@
 // result is named START-perceptual.
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include "aapat/core/pattern.h"
 #include "aapat/study/perceptual_objective.h"
 #include "aapat/work/work_items.h"
@@ -31,5 +33,11 @@ struct PerceptualSearchResult {
 PerceptualSearchResult refine_perceptual(const Pattern& start, const PerceptualObjective& objective,
                                          const PerceptualSearchSettings& settings,
                                          const ItemsProgress& progress = {});
+
+// `aapat refine --json` (and Python's refine, which adds the pattern): the
+// spec, the start's name and family, the objective before and after, the
+// evaluations.
+nlohmann::ordered_json refine_json(const PerceptualSpec& spec, const Pattern& start,
+                                   const PerceptualSearchResult& result);
 
 }  // namespace aapat
