@@ -32,15 +32,12 @@ rows=(
 )
 # The best of ours and the best rival by mean FLIP, then the two compared
 # paired over the views by the library (study --compare's against_first).
-best() {  # json names...: the name with the lowest mean FLIP
-  python3 - "$@" <<'PY'
-import json, sys
-doc = json.load(open(sys.argv[1]))
-flip = doc["measures"].index("flip")
-means = {p["pattern"]: sum(s[flip] for s in p["measures"]) / len(p["measures"])
-         for p in doc["patterns"]}
-print(min(sys.argv[2:], key=lambda n: means[n]))
-PY
+best() {  # json names...: the one of the names with the lowest mean FLIP
+  local json=$1
+  shift
+  "$root/scripts/mean-flip.py" "$json" | python3 -c 'import sys
+means = dict(line.rsplit(" ", 1) for line in sys.stdin.read().splitlines())
+print(min(sys.argv[1:], key=lambda n: float(means[n])))' "$@"
 }
 k=0
 for row in "${rows[@]}"; do

@@ -67,11 +67,7 @@ refine_tries=${AAPAT_CATALOG_REFINE_TRIES:-1500}
 # them (docs/catalog.md).
 mesh_flip() {  # pattern file: its mean FLIP on the tuning mesh views
   "$aapat" --quiet study --compare "$1" --size 128 --scenes "$root"/data/mesh-views/*.json \
-    --json | python3 -c 'import json, sys
-d = json.load(sys.stdin)
-f = d["measures"].index("flip")
-m = d["patterns"][0]["measures"]
-print(sum(s[f] for s in m) / len(m))'
+    --json | "$root/scripts/mean-flip.py" - | head -1 | cut -d' ' -f2
 }
 refine() {  # name [published starts of its family...]
   local name=$1 refined start best
