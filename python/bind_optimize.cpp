@@ -253,11 +253,7 @@ aapat.Pattern.)doc");
         int gw = 0, gh = 0;
         if (grid) {
           std::tie(gw, gh) = *grid;
-          if (!profile.grid_choice)
-            throw Error(fmt::format("grid: {} has a fixed grid", profile.name));
-          if (gw < 1 || gh < 1 || gw > profile.max_grid || gh > profile.max_grid)
-            throw Error(fmt::format("grid: {}x{}; {} takes 1 to {} a side", gw, gh, profile.name,
-                                    profile.max_grid));
+          check_export_grid(profile, gw, gh, "grid");
         }
         return export_pattern(
             to_pattern(pattern), profile, o,

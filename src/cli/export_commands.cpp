@@ -45,8 +45,7 @@ Action add_export_command(CLI::App& app) {
     int gw = 0, gh = 0;
     if (!o->grid.empty()) {
       std::tie(gw, gh) = parse_size(o->grid, "--grid", profile.max_grid);
-      if (!profile.grid_choice)
-        throw Error(fmt::format("--grid: {} has a fixed grid", profile.name));
+      check_export_grid(profile, gw, gh, "--grid");
     }
     const std::string text = export_pattern(
         original, profile, objective,

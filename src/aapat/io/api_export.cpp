@@ -335,6 +335,13 @@ HardwareLayout parse_export(std::string_view text, std::string_view source) {
   return L;
 }
 
+void check_export_grid(const ApiProfile& profile, int grid_w, int grid_h, std::string_view what) {
+  if (!profile.grid_choice) throw Error(fmt::format("{}: {} has a fixed grid", what, profile.name));
+  if (grid_w < 1 || grid_h < 1 || grid_w > profile.max_grid || grid_h > profile.max_grid)
+    throw Error(fmt::format("{}: {}x{}; {} takes 1 to {} a side", what, grid_w, grid_h,
+                            profile.name, profile.max_grid));
+}
+
 std::string export_pattern(const Pattern& pattern, const ApiProfile& profile,
                            const Objective& objective, ShaderLanguage shader, bool snap, int grid_w,
                            int grid_h) {

@@ -33,6 +33,12 @@ std::string export_pattern(const Pattern& pattern, const ApiProfile& profile,
                            const Objective& objective, ShaderLanguage shader, bool snap = false,
                            int grid_w = 0, int grid_h = 0);
 
+// Throws Error, naming `what` (the flag or argument), unless a grid_w x
+// grid_h pixel grid is one `profile` takes: a choice of grid (not a fixed
+// one) and 1 to max_grid pixels a side. The one check of the CLI's --grid
+// and Python's grid=.
+void check_export_grid(const ApiProfile& profile, int grid_w, int grid_h, std::string_view what);
+
 // The numbers of a C-like initializer: comments, identifiers (int3, the f of
 // 0.5f) and punctuation skipped.
 std::vector<double> numbers_in(std::string_view code);

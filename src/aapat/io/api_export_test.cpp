@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "aapat/core/hardware_layout.h"
 #include "aapat/core/lattice.h"
 #include "aapat/core/objective.h"
 #include "aapat/generate/catalog.h"
@@ -170,6 +171,22 @@ TEST(ApiExport, AHostileNameStaysInItsCommentInEveryLanguage) {
               std::string::npos)
         << e.what();
   }
+}
+
+// The grid check both faces call: a fixed grid refused, a chosen grid held
+// to 1 to max_grid pixels a side, naming what was given.
+TEST(ApiExport, GridsAreCheckedOnce) {
+  const ApiProfile& vulkan = api_profile("vulkan");
+  EXPECT_NO_THROW(check_export_grid(vulkan, 2, 2, "--grid"));
+  EXPECT_NO_THROW(check_export_grid(vulkan, vulkan.max_grid, 1, "--grid"));
+  EXPECT_EQ(
+      testing::error_message([] { check_export_grid(api_profile("d3d12-tier1"), 1, 1, "grid"); }),
+      "grid: d3d12-tier1 has a fixed grid");
+  EXPECT_NE(testing::error_message([&] {
+              check_export_grid(vulkan, 0, 2, "grid");
+            }).find("grid: 0x2; vulkan takes 1 to"),
+            std::string::npos);
+  EXPECT_THROW(check_export_grid(vulkan, vulkan.max_grid + 1, 1, "grid"), Error);
 }
 
 }  // namespace

@@ -17,8 +17,9 @@ bool is_grey(const ColorImage& c) {
 // The file's colours as a rendering holds them, so that RMSE and SSIM are
 // the renderer's: three channels (SSIM the mean of the channels'), or one
 // when both images are grey (R = G = B), as a grey rendering is, so that a
-// grey pair scores to the last digit what `render` scores. // Rows bottom-up, as the renderer's are
-// (a file's run from the top), so that every sum runs in the renderer's order.
+// grey pair scores to the last digit what `render` scores. Rows bottom-up,
+// as the renderer's are (a file's run from the top), so that every sum runs
+// in the renderer's order.
 Image image_of(const ColorImage& c, bool grey) {
   const int channels = grey ? 1 : 3;
   std::vector<double> v(static_cast<size_t>(c.width) * c.height * channels);
