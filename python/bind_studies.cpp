@@ -5,7 +5,7 @@
 
 #include "aapat/study/objective_study.h"
 #include "aapat/study/optimize_run.h"
-#include "aapat/study/perceptual_search.h"
+#include "aapat/study/refine_search.h"
 #include "aapat/study/study_json.h"
 #include "bindings.h"
 
@@ -78,31 +78,59 @@ its family, n, value ("perceptual") and each kind's mean FLIP ("kinds").)doc");
 
   m.def(
       "refine",
-      [](const py::object& pattern, const std::string& objective, int max_tries, double step,
+      [](const py::object& pattern, const std::string& objective,
+         const std::optional<std::vector<std::string>>& scenes,
+         const std::variant<int, std::pair<int, int>>& size, const std::string& measure,
+         int reference_samples, const std::string& api, int max_tries, double step,
          double min_step) {
-        const PerceptualSpec spec = parse_perceptual(objective);
         const Pattern start = to_pattern(pattern);
-        PerceptualSearchSettings s;
+        RefineSettings s;
         s.max_tries = max_tries;
         s.step = step;
         s.min_step = min_step;
-        const PerceptualSearchResult r = interruptible([&] {
-          const PerceptualObjective o(spec);
-          return refine_perceptual(start, o, s);
+        s.api = api;
+        std::optional<PerceptualSpec> spec;
+        StudySettings study;
+        if (scenes) {
+          study.scenes = *scenes;
+          if (const int* n = std::get_if<int>(&size))
+            study.width = study.height = *n;
+          else
+            std::tie(study.width, study.height) = std::get<std::pair<int, int>>(size);
+          study.reference.samples = reference_samples;
+        } else {
+          spec = parse_perceptual(objective);
+        }
+        const auto [doc, refined] = interruptible([&] {
+          std::optional<PerceptualObjective> perceptual;
+          std::optional<RenderedObjective> rendered;
+          RefineObjective o;
+          if (spec) {
+            o = refine_objective(perceptual.emplace(*spec));
+          } else {
+            rendered.emplace(study, ReferenceSource(render_reference), measure,
+                             start.footprint.size != 1);
+            o = {[&r = *rendered](const Pattern& p) { return r(p); }, rendered->text(), "rendered"};
+          }
+          const RefineResult r = refine_pattern(start, o, s);
+          return std::pair{refine_json(o, start, s, r), r.pattern};
         });
-        py::dict out = to_python(refine_json(spec, start, r));
-        out["refined"] = py::cast(r.pattern);
+        py::dict out = to_python(doc);
+        out["refined"] = py::cast(refined);
         return out;
       },
       py::arg("pattern"), py::kw_only(), py::arg("objective") = std::string(kPerceptualObjective),
-      py::arg("max_tries") = PerceptualSearchSettings{}.max_tries,
-      py::arg("step") = PerceptualSearchSettings{}.step,
-      py::arg("min_step") = PerceptualSearchSettings{}.min_step,
-      R"doc(aapat refine: the pattern's positions and weights refined under the perceptual
-objective by a compass search, never worse than the start. Returns the
-document of `aapat refine --json` ({objective, pattern: the start's name,
-family, before, after, tries}) with `refined`, the aapat.Pattern named
-START-perceptual.)doc");
+      py::arg("scenes") = py::none(), py::arg("size") = kRenderedObjectiveSize,
+      py::arg("measure") = "flip", py::arg("reference_samples") = StudySettings{}.reference.samples,
+      py::arg("api") = "", py::arg("max_tries") = RefineSettings{}.max_tries,
+      py::arg("step") = RefineSettings{}.step, py::arg("min_step") = RefineSettings{}.min_step,
+      R"doc(aapat refine: the pattern's positions and weights refined by a compass search,
+never worse than the start, under the perceptual objective or, with `scenes`,
+the mean rendered `measure` over them at `size` (as study_compare renders
+them); with `api`, on that API's lattice. Returns the document of `aapat
+refine --json` ({objective, pattern: the start's name, family, api when given,
+before, after, tries}) with `refined`, the aapat.Pattern named
+START-perceptual or START-rendered.)doc");
 
   m.def(
       "table3",

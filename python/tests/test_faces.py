@@ -45,6 +45,21 @@ def test_perceptual_eval_and_refine_are_the_cli_json(aapat_cli, tmp_path):
         aapat.refine("msaa-4", objective="perceptual:edge=0,line=0,thin=0,dot=0")
 
 
+def test_refine_on_scenes_and_a_lattice_is_the_cli_json(aapat_cli):
+    scenes = ["spiral", "checkerboard"]
+    py = aapat.refine("rgss", scenes=scenes, size=16, reference_samples=16, api="vulkan",
+                      max_tries=8)
+    cli = cli_json(aapat_cli, "--quiet", "refine", "rgss", "--scenes", *scenes, "--size", "16",
+                   "--reference-samples", "16", "--api", "vulkan", "--max-tries", "8")
+    assert {k: v for k, v in py.items() if k not in ("command", "schema", "refined")} == cli
+    assert cli["objective"] == "flip over 2 scenes at 16x16 (reference 16 spp mitchell)"
+    assert py["refined"].name == "rgss-rendered"
+    with pytest.raises(aapat.Error, match="measure"):
+        aapat.refine("rgss", scenes=scenes, size=16, measure="psnr")
+    with pytest.raises(aapat.Error, match="nosuch"):
+        aapat.refine("rgss", api="nosuch", max_tries=2)
+
+
 def test_eval_report_is_the_cli_json(aapat_cli):
     cli = cli_json(aapat_cli, "eval", "msaa-8", "flipquad", "--optimized-weights")
     py = aapat.eval_report(["msaa-8", "flipquad"], optimized_weights=True)

@@ -454,6 +454,12 @@ std::vector<std::string> random_command() {
       if (a[0] == "refine") {
         a.insert(a.end(), {"--max-tries", *one_of({"3", "0", "-2"})});
         maybe(a, "-o", {"refined.json", "refined.png", "folder"});
+        maybe(a, "--api", {"vulkan", "metal", "nosuch"});
+        if (coin()) {  // on scenes instead of the charts (the spec then clashes)
+          a.insert(a.end(), {"--scenes", *one_of({"spiral", "nosuch", "disc"}), "--size",
+                             *one_of({"8", "4", "9x8"}), "--reference-samples", "4"});
+          maybe(a, "--measure", {"rmse", "flip", "psnr"});
+        }
       }
       maybe_flag(a, "--json");
       break;

@@ -1,3 +1,4 @@
+#include "aapat/core/lattice.h"
 #include "aapat/generate/catalog.h"
 #include "aapat/io/pattern_json.h"
 #include "aapat/study/perceptual_objective.h"
@@ -135,6 +136,53 @@ TEST(CliPerceptual, EvalRefineAndBadSpecs) {
   fails({"eval", "msaa-4", "--objective", "perceptual", "--acuity", "laine-aila"}, "--acuity");
   fails({"optimize", "--family", "P(1,1,4)", "--objective", "perceptual"}, "aapat refine");
   fails({"refine", "msaa-4", "-O", "recommended"}, "perceptual");
+}
+
+// refine on scenes: the objective is the rendered FLIP that study --compare
+// reports for the same scenes (to the digit, before and after), on an API's
+// lattice when asked; bad scenes, measures and APIs end in exit 1 naming them.
+TEST(CliRefine, OnScenesAndOnALattice) {
+  const std::vector<std::string> scenes = {
+      "--scenes", "spiral", "checkerboard", "--size", "16", "--reference-samples", "16"};
+  const std::string out = testing::temp_path("refined-on-scenes.json");
+  std::vector<std::string> args = {"--quiet", "refine",      "rgss", "--max-tries", "12",
+                                   "--api",   "d3d12-tier1", "-o",   out,           "--json"};
+  args.insert(args.end(), scenes.begin(), scenes.end());
+  const testing::CliRun r = testing::run(args);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["api"], "d3d12-tier1");
+  EXPECT_LE(doc["after"].get<double>(), doc["before"].get<double>());
+  const Pattern refined = resolve_pattern(out);
+  EXPECT_EQ(refined.name, "rgss-rendered");
+  EXPECT_EQ(off_lattice_sample(refined, kLatticeSteps), "");
+  const auto mean_flip = [&](const std::string& pattern) {
+    std::vector<std::string> compare = {"--quiet", "study", "--compare", pattern, "--json"};
+    compare.insert(compare.end(), scenes.begin(), scenes.end());
+    const testing::CliRun c = testing::run(compare);
+    EXPECT_EQ(c.code, 0) << c.err;
+    const auto d = nlohmann::json::parse(c.out);
+    double sum = 0;
+    for (const auto& per_scene : d["patterns"][0]["measures"]) sum += per_scene[4].get<double>();
+    return sum / double(d["patterns"][0]["measures"].size());
+  };
+  EXPECT_NEAR(mean_flip("rgss"), doc["before"].get<double>(), 1e-15);
+  EXPECT_NEAR(mean_flip(out), doc["after"].get<double>(), 1e-15);
+  std::filesystem::remove(out);
+  const auto fails = [](std::vector<std::string> args, const std::string& says) {
+    const testing::CliRun bad = testing::run(args);
+    EXPECT_EQ(bad.code, 1) << args[1];
+    EXPECT_NE(bad.err.find(says), std::string::npos) << bad.err;
+  };
+  fails({"refine", "rgss", "--scenes", "nosuch-scene"}, "nosuch-scene");
+  fails({"refine", "rgss", "--scenes", "spiral", "--measure", "psnr"}, "measure");
+  fails({"refine", "rgss", "--scenes", "spiral", "--size", "4"}, "size");
+  fails({"refine", "rgss", "--api", "nosuch", "--max-tries", "2"}, "nosuch");
+  fails({"refine", "aapat-16", "--api", "metal", "--max-tries", "2"}, "metal");
+  const testing::CliRun both =
+      testing::run({"refine", "rgss", "--scenes", "spiral", "-O", "perceptual"});
+  EXPECT_EQ(both.code, 2);  // a usage error, as CLI11 reports them
+  EXPECT_NE(both.err.find("excludes"), std::string::npos) << both.err;
 }
 
 }  // namespace

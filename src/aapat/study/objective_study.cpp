@@ -1,6 +1,7 @@
 #include "aapat/study/objective_study.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -28,6 +29,13 @@
 #include "aapat/work/work_items.h"
 
 namespace aapat {
+
+struct SceneFrames {
+  std::vector<std::vector<Scene>> frames;
+  std::vector<std::vector<Image>> references, shifted;
+  std::vector<std::vector<FlipReference>> flip_references, flip_shifted;
+};
+
 namespace {
 
 // The deviations a rendering is judged by beyond its RMSE: the RMS of those
@@ -194,11 +202,6 @@ namespace {
 // renderer's Image::offset 1/2), so its references are rendered there too:
 // `shifted`, when any pattern needs them. FLIP's half of each reference is
 // prepared once, not once per pattern.
-struct SceneFrames {
-  std::vector<std::vector<Scene>> frames;
-  std::vector<std::vector<Image>> references, shifted;
-  std::vector<std::vector<FlipReference>> flip_references, flip_shifted;
-};
 SceneFrames scene_frames(const StudySettings& s, const ReferenceSource& references,
                          const StudyProgress& progress, bool shifted = false) {
   SceneFrames out;
@@ -286,6 +289,44 @@ std::vector<StudyPattern> measure_patterns(std::vector<StudyPattern> patterns,
   for (const StudyPattern& p : patterns) corner = corner || p.pattern.footprint.size != 1;
   measure(patterns, s, study_objectives(s), scene_frames(s, references, {}, corner));
   return patterns;
+}
+
+RenderedObjective::RenderedObjective(const StudySettings& settings,
+                                     const ReferenceSource& references, std::string measure,
+                                     bool corner)
+    : settings_(settings), measure_name_(std::move(measure)) {
+  validate(settings_);
+  const auto* it = std::find(kStudyMeasures.begin(), kStudyMeasures.end(), measure_name_);
+  if (it == kStudyMeasures.end())
+    throw ParameterError("measure", fmt::format(" '{}': expected one of {}", measure_name_,
+                                                fmt::join(kStudyMeasures, ", ")));
+  measure_ = static_cast<size_t>(it - kStudyMeasures.begin());
+  scenes_ = std::make_shared<const SceneFrames>(scene_frames(settings_, references, {}, corner));
+}
+
+double RenderedObjective::operator()(const Pattern& p) const {
+  const bool corner = p.footprint.size != 1;
+  if (corner && scenes_->shifted[0].empty())
+    throw Error(
+        fmt::format("refine: {} reconstructs at pixel corners; its references must be "
+                    "rendered there (corner)",
+                    p.name));
+  std::vector<double> per_scene(settings_.scenes.size());
+  tbb::parallel_for(size_t{0}, per_scene.size(), [&](size_t sc) {
+    per_scene[sc] = render_measures(
+        p, scenes_->frames[sc], corner ? scenes_->shifted[sc] : scenes_->references[sc],
+        corner ? scenes_->flip_shifted[sc] : scenes_->flip_references[sc], settings_.width,
+        settings_.height)[measure_];
+  });
+  double sum = 0;
+  for (const double v : per_scene) sum += v;
+  return sum / static_cast<double>(per_scene.size());
+}
+
+std::string RenderedObjective::text() const {
+  return fmt::format("{} over {} scenes at {}x{} (reference {} spp {})", measure_name_,
+                     settings_.scenes.size(), settings_.width, settings_.height,
+                     settings_.reference.samples, settings_.reference.filter);
 }
 
 std::vector<MeasureComparisons> compare_with_first(const std::vector<StudyPattern>& patterns,

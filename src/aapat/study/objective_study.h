@@ -16,6 +16,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -121,6 +122,31 @@ std::vector<MeasureComparisons> compare_with_first(const std::vector<StudyPatter
                                                    const StudySettings& settings);
 StudyResult objective_study(const StudySettings& settings, const ReferenceSource& references,
                             const StudyProgress& progress = {});
+
+// The mean over the settings' scenes of one rendered measure (kStudyMeasures)
+// of a pattern rendered with its own weights: an objective measured on
+// content instead of charts, for `aapat refine --scenes`. The references are
+// rendered (or read from the cache) and FLIP's half of each prepared once,
+// here; each call renders the pattern on every scene in parallel and sums
+// in scene order, so a value does not depend on the thread count. Throws
+// ParameterError for settings out of range or an unknown measure.
+struct SceneFrames;
+inline constexpr int kRenderedObjectiveSize = 128;  // pixels a side, the faces' default
+class RenderedObjective {
+ public:
+  RenderedObjective(const StudySettings& settings, const ReferenceSource& references,
+                    std::string measure = "flip", bool corner = false);
+  double operator()(const Pattern& pattern) const;
+  // "flip over 36 scenes at 128x128 (reference 256 spp)": provenance's record.
+  std::string text() const;
+  const StudySettings& settings() const { return settings_; }
+
+ private:
+  StudySettings settings_;
+  std::string measure_name_;
+  size_t measure_ = 0;
+  std::shared_ptr<const SceneFrames> scenes_;
+};
 
 // Objective a against objective b in how well they predict one rendered
 // measure: per scene, Spearman's rho of each (averaged over the budgets),

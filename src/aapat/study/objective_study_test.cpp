@@ -91,6 +91,34 @@ TEST(ObjectiveStudy, CornerKernelsAreMeasuredAgainstCornerReferences) {
     EXPECT_LT(measured[0].measures[scene][0], measured[1].measures[scene][0]) << s.scenes[scene];
 }
 
+// The rendered objective is the mean over the scenes of what study
+// --compare measures (here FLIP and RMSE; one pixel, shared corners, a 2x2
+// kernel reconstructed at the corners),
+// the same on one thread as on many; an unknown measure is named.
+TEST(ObjectiveStudy, RenderedObjectiveIsTheComparesMean) {
+  const StudySettings s = small();
+  for (const char* name : {"rgss", "quincunx", "aapat-2x2-2"}) {
+    const Pattern p = resolve_pattern(name);
+    const std::vector<StudyPattern> measured =
+        measure_patterns({{name, "", p, {}, {}, {}}}, s, render_reference);
+    for (const auto& [measure, index] : {std::pair{"flip", 4}, std::pair{"rmse", 0}}) {
+      double mean = 0;
+      for (const StudyMeasures& m : measured[0].measures) mean += m[size_t(index)];
+      mean /= double(measured[0].measures.size());
+      const RenderedObjective o(s, render_reference, measure, p.footprint.size != 1);
+      EXPECT_NEAR(o(p), mean, 1e-12 * mean) << name << " " << measure;
+      tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+      EXPECT_EQ(o(p), RenderedObjective(s, render_reference, measure, p.footprint.size != 1)(p));
+    }
+  }
+  EXPECT_EQ(testing::error_message([&] { RenderedObjective(s, render_reference, "psnr"); }),
+            "measure 'psnr': expected one of rmse, max_deviation, one_minus_ssim, tail_rms, flip");
+  EXPECT_NE(testing::error_message([&] {
+              RenderedObjective(s, render_reference)(resolve_pattern("aapat-2x2-2"));
+            }).find("pixel corners"),
+            std::string::npos);
+}
+
 TEST(ObjectiveStudy, SettingsOutOfRangeAreNamed) {
   auto parameter = [](StudySettings s) { return testing::error_parameter([&] { validate(s); }); };
   StudySettings s = small();

@@ -1,0 +1,163 @@
+#include "aapat/study/refine_search.h"
+
+#include <fmt/format.h>
+
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "aapat/core/geometry.h"
+#include "aapat/core/hardware_layout.h"
+#include "aapat/core/lattice.h"
+#include "aapat/core/metric.h"
+#include "aapat/core/objective.h"
+#include "aapat/io/json_report.h"
+#include "aapat/optimize/compass_search.h"
+#include "aapat/optimize/problem.h"
+
+namespace aapat {
+namespace {
+
+// Where each search coordinate goes: a generator's x or y, or a weight.
+struct Coordinate {
+  enum Kind { kX, kY, kWeight } kind;
+  int index;
+};
+
+std::vector<Coordinate> coordinates(const Problem& p) {
+  std::vector<Coordinate> out;
+  for (size_t g = 0; g < p.generators.size(); ++g) {
+    const Freedom f = p.generators[g].freedom;
+    if (f == Freedom::kFree || f == Freedom::kSlideX) out.push_back({Coordinate::kX, int(g)});
+    if (f == Freedom::kFree || f == Freedom::kSlideY) out.push_back({Coordinate::kY, int(g)});
+  }
+  for (const auto& group : p.weight_groups)
+    if (group.size() > 1)
+      for (int w : group) out.push_back({Coordinate::kWeight, w});
+  return out;
+}
+
+// The problem moved by x (displacements from the start), on its constraints.
+Problem moved(const Problem& start, const std::vector<Coordinate>& coords,
+              std::span<const double> x) {
+  Problem p = start;
+  for (size_t k = 0; k < coords.size(); ++k) {
+    const Coordinate& c = coords[k];
+    if (c.kind == Coordinate::kX) p.generators[c.index].pos.x += x[k];
+    if (c.kind == Coordinate::kY) p.generators[c.index].pos.y += x[k];
+    if (c.kind == Coordinate::kWeight) p.weights[c.index] += x[k];
+  }
+  project_to_constraints(p, true);
+  return p;
+}
+
+}  // namespace
+
+RefineObjective refine_objective(const PerceptualObjective& objective) {
+  return {[&objective](const Pattern& p) { return objective(p); }, objective.spec().text(),
+          "perceptual"};
+}
+
+RefineResult refine_pattern(const Pattern& original, const RefineObjective& objective,
+                            const RefineSettings& s, const ItemsProgress& progress) {
+  if (!(s.step > 0 && s.step <= 1))
+    throw ParameterError("step", fmt::format(" {}: expected (0, 1] pixels", s.step));
+  if (!(s.min_step > 0 && s.min_step <= s.step))
+    throw ParameterError("min-step", fmt::format(" {}: expected (0, step]", s.min_step));
+  if (s.max_tries < 1 || s.max_tries > 10'000'000)
+    throw ParameterError("max-tries", fmt::format(" {}: expected 1 to 10^7", s.max_tries));
+  const ApiProfile* profile = s.api.empty() ? nullptr : &api_profile(s.api);
+  // On an API's lattice every candidate is measured snapped: the search's
+  // positions move in continuous steps, but only a step that carries a
+  // sample to another lattice point changes the value.
+  const auto on_target = [&](const Pattern& p) {
+    return profile ? snap_to_lattice(p, kLatticeSteps, profile->y_down) : p;
+  };
+  const Pattern start = on_target(original);
+  if (profile) hardware_layout(start, *profile);  // names the rule the start breaks
+  Problem problem = problem_from_pattern(start);
+  // The catalog's one-pixel patterns keep their samples strictly inside (an
+  // MSAA sample on the border would be its neighbour's).
+  if (!start.footprint.plus) keep_strictly_inside(problem);
+  project_to_constraints(problem, true);
+  const std::vector<Coordinate> coords = coordinates(problem);
+  const auto candidate = [&](std::span<const double> x) {
+    return on_target(pattern_of(moved(problem, coords, x)));
+  };
+  // Two samples snapped onto one lattice point make no pattern: no candidate.
+  FunctionObjective f(
+      [&](std::span<const double> x) {
+        if (!profile) return objective.value(candidate(x));
+        Pattern p;
+        try {
+          p = candidate(x);
+        } catch (const Error&) {
+          return std::numeric_limits<double>::infinity();
+        }
+        return objective.value(p);
+      },
+      1);
+  CompassSettings cs;
+  cs.block_size = 1;
+  cs.step = s.step;
+  cs.min_step = s.min_step;
+  cs.lo = -1, cs.hi = 1;
+  cs.max_tries = s.max_tries;
+  const CompassResult r = compass_search(f, std::vector<double>(coords.size(), 0.0), cs, progress);
+  // The search starts from the start put on the constraints (weights made
+  // non-negative, samples inside); where that alone made it worse, the start
+  // itself is the answer.
+  const double first = objective.value(start);
+  if (first <= r.value) return {start, first, first, r.tries};
+  Pattern best = candidate(r.x);
+  // A new name: a file named like the catalog entry with other samples would
+  // be read under its file's name, with a warning (io/catalog_clash.h).
+  best.name = original.name + "-" + objective.key;
+  best.description = original.description + ", refined under the " +
+                     (objective.key == "perceptual" ? std::string("perceptual objective")
+                                                    : "mean " + objective.text);
+  // The provenance's E2 (the search's record, which `aapat list` shows) is
+  // the refined pattern's under the objective the start was designed for;
+  // a start designed for none (a published pattern) records where it came
+  // from and its E2 under the default objective, named in full.
+  best.provenance = original.provenance;
+  const std::optional<Objective> designed = design_objective(original);
+  const Objective recorded = designed ? *designed : named_objective(kDefaultObjective);
+  const std::string e2 = fmt::format("{:.6f}", recorded.metric().evaluate(best).e2);
+  if (designed) {
+    for (auto& [key, value] : best.provenance)
+      if (key == "e2" || key == "lattice_e2") value = e2;
+  } else {
+    best.provenance = {{"refined_from", original.name}, {"filter", recorded.filter},
+                       {"acuity", recorded.acuity},     {"norm", format_norm(recorded.norm)},
+                       {"objective", recorded.text()},  {"e2", e2}};
+  }
+  if (profile) {
+    bool noted = false;
+    for (const auto& [key, value] : best.provenance) noted = noted || key == "api";
+    if (!noted) {
+      best.provenance.emplace_back("lattice", fmt::format("1/{} pixel", kLatticeSteps));
+      best.provenance.emplace_back("api", profile->name);
+    }
+  }
+  // A pattern refined twice (the catalog's charts, then content) records the
+  // last objective; the first's value stays under its own key.
+  std::erase_if(best.provenance,
+                [&](const auto& kv) { return kv.first == "refined" || kv.first == objective.key; });
+  best.provenance.emplace_back("refined", objective.text);
+  best.provenance.emplace_back(objective.key, fmt::format("{:.6f}", r.value));
+  return {best, first, r.value, r.tries};
+}
+
+nlohmann::ordered_json refine_json(const RefineObjective& objective, const Pattern& start,
+                                   const RefineSettings& settings, const RefineResult& result) {
+  JsonObject doc = json_report("refine");
+  doc.update(JsonObject{
+      {"objective", objective.text}, {"pattern", start.name}, {"family", family(start)}});
+  if (!settings.api.empty()) doc["api"] = settings.api;
+  doc.update(
+      JsonObject{{"before", result.start_value}, {"after", result.value}, {"tries", result.tries}});
+  return doc;
+}
+
+}  // namespace aapat
