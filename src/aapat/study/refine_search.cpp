@@ -106,10 +106,11 @@ RefineResult refine_pattern(const Pattern& original, const RefineObjective& obje
   const CompassResult r = compass_search(f, std::vector<double>(coords.size(), 0.0), cs, progress);
   // The search starts from the start put on the constraints (weights made
   // non-negative, samples inside); where that alone made it worse, the start
-  // itself is the answer.
+  // itself is the answer. Either way the result records what was searched.
   const double first = objective.value(start);
-  if (first <= r.value) return {start, first, first, r.tries};
-  Pattern best = candidate(r.x);
+  const bool improved = r.value < first;
+  Pattern best = improved ? candidate(r.x) : start;
+  const double value = improved ? r.value : first;
   // A new name: a file named like the catalog entry with other samples would
   // be read under its file's name, with a warning (io/catalog_clash.h).
   best.name = original.name + "-" + objective.key;
@@ -145,8 +146,8 @@ RefineResult refine_pattern(const Pattern& original, const RefineObjective& obje
   std::erase_if(best.provenance,
                 [&](const auto& kv) { return kv.first == "refined" || kv.first == objective.key; });
   best.provenance.emplace_back("refined", objective.text);
-  best.provenance.emplace_back(objective.key, fmt::format("{:.6f}", r.value));
-  return {best, first, r.value, r.tries};
+  best.provenance.emplace_back(objective.key, fmt::format("{:.6f}", value));
+  return {best, first, value, r.tries};
 }
 
 nlohmann::ordered_json refine_json(const RefineObjective& objective, const Pattern& start,

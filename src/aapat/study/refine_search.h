@@ -30,7 +30,7 @@ struct RefineSettings {
 
 // What the search minimizes and how the result records it: `text` goes into
 // the provenance under "refined" and the value under `key`; the result is
-// named START-`key`.
+// named START-`key`, improved or not.
 struct RefineObjective {
   std::function<double(const Pattern&)> value;
   std::string text, key;
