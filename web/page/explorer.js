@@ -695,6 +695,11 @@
     $('version').textContent = `aapat ${state.info.version} · WebAssembly (${state.info.simd})`;
     const cat = $('catalog');
     cat.add(new Option('(edited)', ''));
+    // The library's one answer per cost first (its summary says the cost), then every pattern.
+    const best = document.createElement('optgroup');
+    best.label = 'best per cost';
+    for (const e of reg.best_patterns) best.appendChild(new Option(`${e.summary.split(':')[0]}: ${e.name}`, e.name));
+    cat.appendChild(best);
     const groups = [['patterns', 'published'], ['aapat_patterns', 'aapat catalog']];
     for (const [key, label] of groups) {
       const og = document.createElement('optgroup');

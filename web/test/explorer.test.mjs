@@ -137,6 +137,13 @@ try {
   const la = cli('eval', 'flipquad', '--objective', 'laine-aila', '--json').rows[0].e2;
   check(text === '0.3643' && near(await e2Shown(), la, 1e-12), `#pattern=flipquad&objective=laine-aila shows ${text} (Laine & Aila Table 2: 0.3643)`);
 
+  // The best pattern at 2 samples per pixel: the page's one answer is aapat list's.
+  const listedBest = cli('list', '--json').best_patterns.find((e) => e.summary.startsWith('cost 2:'));
+  const shownBest = await page.$eval('#catalog', (c) => [...c.querySelectorAll('optgroup[label="best per cost"] option')]
+    .filter((o) => o.textContent.startsWith('cost 2:')).map((o) => o.value));
+  check(listedBest && shownBest.length === 1 && shownBest[0] === listedBest.name,
+    `the best pattern at cost 2 is one answer on the page and in aapat list: ${shownBest.join(', ')}`);
+
   // Export opens on a profile that takes the pattern: FLIPQUAD's shared
   // samples need a 2x2 grid, so not the first profile (D3D12 tier 1).
   await open('#pattern=flipquad');

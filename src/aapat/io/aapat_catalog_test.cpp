@@ -64,6 +64,9 @@ TEST(AapatCatalog, EveryNameMatchesItsFamilyAndItsSamplesAreWhereItSays) {
     } else if (rest.starts_with("2x2-")) {
       rest = rest.substr(4);
       expected = "P(4,4,";
+    } else if (rest.starts_with("quincunx-")) {  // corners shared by four pixels
+      rest = rest.substr(9);
+      expected = "P(1,1+,";
     } else {
       expected = "P(1,1,";
       one_pixel = true;

@@ -49,6 +49,10 @@ std::vector<RegistrySection> registry_sections() {
                       "the aapat catalog (data/patterns: the best found per budget and API, "
                       "docs/catalog.md)",
                       aapat_catalog()},
+      RegistrySection{"best_patterns",
+                      "the best pattern per cost, any family (the lowest mean FLIP on the "
+                      "tuning views, docs/catalog.md)",
+                      best_per_cost_infos()},
       section("filters", "filters", filter_registry()),
       section("generators", "point generators (aapat generate, spectrum, discrepancy)",
               generator_registry()),

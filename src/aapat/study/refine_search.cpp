@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -71,7 +72,19 @@ RefineResult refine_pattern(const Pattern& original, const RefineObjective& obje
   // positions move in continuous steps, but only a step that carries a
   // sample to another lattice point changes the value.
   const auto on_target = [&](const Pattern& p) {
-    return profile ? snap_to_lattice(p, kLatticeSteps, profile->y_down) : p;
+    if (!profile) return p;
+    Pattern q = snap_to_lattice(p, kLatticeSteps, profile->y_down);
+    if (!q.footprint.plus) {
+      // A one-pixel pattern's samples stay strictly inside, at most 7/16 from
+      // the centre, as optimize's lattice search keeps them: the API's -8/16
+      // is on the border, where a sample reads as the neighbour's.
+      const double inside = (kLatticeSteps / 2 - 1.0) / kLatticeSteps;
+      for (auto& set : q.sets)
+        for (Vec2& v : set)
+          v = {std::clamp(v.x, -inside, inside), std::clamp(v.y, -inside, inside)};
+      validate(q);  // two samples clamped onto one point
+    }
+    return q;
   };
   const Pattern start = on_target(original);
   if (profile) hardware_layout(start, *profile);  // names the rule the start breaks
@@ -133,12 +146,14 @@ RefineResult refine_pattern(const Pattern& original, const RefineObjective& obje
                        {"acuity", recorded.acuity},     {"norm", format_norm(recorded.norm)},
                        {"objective", recorded.text()},  {"e2", e2}};
   }
-  if (profile) {
+  if (profile) {  // where the start was free, the lattice and its E2 as optimize records them
     bool noted = false;
     for (const auto& [key, value] : best.provenance) noted = noted || key == "api";
     if (!noted) {
+      std::erase_if(best.provenance, [](const auto& kv) { return kv.first == "lattice"; });
       best.provenance.emplace_back("lattice", fmt::format("1/{} pixel", kLatticeSteps));
       best.provenance.emplace_back("api", profile->name);
+      best.provenance.emplace_back("lattice_e2", e2);
     }
   }
   // A pattern refined twice (the catalog's charts, then content) records the

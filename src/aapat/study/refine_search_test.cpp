@@ -94,18 +94,28 @@ TEST(RefineSearch, AnApisLatticeIsKept) {
   RefineSettings s;
   s.max_tries = 40;
   s.api = "vulkan";
-  const Pattern start = resolve_pattern("aapat-4");  // off the lattice
+  // Off the lattice, one sample 0.49 from the centre (the snap's nearest is -8/16).
+  const Pattern start = single_pixel_pattern(
+      "near-border", {{-0.49, 0.1}, {0.21, -0.33}, {0.12, 0.31}, {-0.23, -0.19}},
+      {0.25, 0.25, 0.25, 0.25});
   const RefineResult r = refine_pattern(start, refine_objective(o), s);
+  Pattern snapped = snap_to_lattice(start, kLatticeSteps);
+  ASSERT_EQ(snapped.sets[0][0].x, -0.5);
+  snapped.sets[0][0].x = -7.0 / 16;  // kept strictly inside
+  EXPECT_EQ(r.start_value, o(snapped));
   EXPECT_EQ(off_lattice_sample(r.pattern, kLatticeSteps), "");
-  EXPECT_EQ(r.start_value, o(snap_to_lattice(start, kLatticeSteps)));
+  for (const Vec2& v : r.pattern.sets[0]) {  // strictly inside: never the API's -8/16
+    EXPECT_LE(std::abs(v.x), 7.0 / 16);
+    EXPECT_LE(std::abs(v.y), 7.0 / 16);
+  }
   EXPECT_LE(r.value, r.start_value);
   EXPECT_EQ(o(r.pattern), r.value);
   std::map<std::string, std::string> why(r.pattern.provenance.begin(), r.pattern.provenance.end());
   EXPECT_EQ(why["api"], "vulkan");
   s.api = "metal";
-  EXPECT_NE(testing::error_message(
-                [&] { refine_pattern(resolve_pattern("aapat-16"), refine_objective(o), s); })
-                .find("metal"),
+  EXPECT_NE(testing::error_message([&] {
+              refine_pattern(resolve_pattern("aapat-16"), refine_objective(o), s);
+            }).find("metal"),
             std::string::npos);
   s.api = "no-such-api";
   EXPECT_THROW(refine_pattern(start, refine_objective(o), s), Error);
