@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -28,6 +29,41 @@ TEST(SequenceGenerators, HaltonStartsAtIndexOneLikeTheUpscalers) {
   const Sequence zero = make_sequence("halton:frames=2,start=0");
   EXPECT_EQ(offset(zero, 0).x, -0.5);  // index 0: the pixel's corner
   EXPECT_DOUBLE_EQ(radical_inverse_of(11, 3), 2.0 / 3 + 0.0 / 9 + 1.0 / 27);  // 11 = 102 in base 3
+}
+
+// The resonances of docs/temporal.md ("What a jitter can deliver under
+// motion"): seen from a display pixel, frame n's sample sits at
+// delta_n = j_n - n v (mod 1) for a pan of v pixels per frame, so two frames
+// coincide where j_n - j_m = (n - m) v (mod 1). Halton base 2 pairs its
+// indices 2i, 2i+1 at 1/2 apart (phi(2i+1) = phi(2i) + 1/2): at 1/2 px per
+// frame in x each pair lands on one place; base 3 does it with triples at
+// 1/3 in y; R2 steps by its own alpha, so at v = alpha every frame lands on
+// one place in both axes.
+TEST(SequenceGenerators, ResonantVelocitiesCollapseTheSequences) {
+  const auto seen = [](const Sequence& s, int n, Vec2 v) {
+    const Vec2 j = offset(s, n);
+    const auto wrap = [](double t) { return t - std::floor(t); };
+    return Vec2{wrap(j.x - n * v.x), wrap(j.y - n * v.y)};
+  };
+  const auto same = [](double a, double b) {  // on the circle
+    const double d = std::abs(a - b);
+    return std::min(d, 1 - d) < 1e-12;
+  };
+  const Sequence halton = make_sequence("halton:frames=18");  // indices 1..18
+  for (int n = 1; n + 1 < 18; n += 2) {                       // frames 1, 2 hold indices 2, 3
+    EXPECT_TRUE(same(seen(halton, n, {0.5, 0}).x, seen(halton, n + 1, {0.5, 0}).x)) << n;
+    EXPECT_FALSE(same(seen(halton, n, {0.3, 0}).x, seen(halton, n + 1, {0.3, 0}).x)) << n;
+  }
+  for (int n = 2; n + 2 < 18; n += 3)  // frames 2, 3, 4 hold indices 3, 4, 5
+    for (int k = 1; k <= 2; ++k)
+      EXPECT_TRUE(same(seen(halton, n, {0, 1.0 / 3}).y, seen(halton, n + k, {0, 1.0 / 3}).y));
+  const Sequence r2 = make_sequence("r2:frames=16");
+  const double g = 1.32471795724474602596;  // the plastic number, x^3 = x + 1
+  const Vec2 alpha{1 / g, 1 / (g * g)};
+  for (int n = 1; n < 16; ++n) {
+    EXPECT_NEAR(std::remainder(seen(r2, n, alpha).x - seen(r2, 0, alpha).x, 1.0), 0, 1e-9) << n;
+    EXPECT_NEAR(std::remainder(seen(r2, n, alpha).y - seen(r2, 0, alpha).y, 1.0), 0, 1e-9) << n;
+  }
 }
 
 TEST(SequenceGenerators, R2IsThePlasticNumbersLattice) {
