@@ -103,6 +103,13 @@ TEST(CliEval, APatternFileNamedLikeACatalogEntryIsReadUnderItsOwnName) {
 namespace aapat {
 namespace {
 
+// The command ends in exit 1 with a message that says `says`.
+void fails(const std::vector<std::string>& args, const std::string& says) {
+  const testing::CliRun bad = testing::run(args);
+  EXPECT_EQ(bad.code, 1) << args[1];
+  EXPECT_NE(bad.err.find(says), std::string::npos) << bad.err;
+}
+
 // The perceptual objective on the command line: eval prints its value and
 // each kind's FLIP (the library's, to the digit), refine writes a pattern no
 // worse than its start, and a bad spec or an E2-only flag ends in exit 1
@@ -124,11 +131,6 @@ TEST(CliPerceptual, EvalRefineAndBadSpecs) {
   EXPECT_EQ(o(resolve_pattern(out)), refined["after"].get<double>());
   EXPECT_EQ(resolve_pattern(out).name, "msaa-4-perceptual");
   std::filesystem::remove(out);
-  const auto fails = [](std::vector<std::string> args, const std::string& says) {
-    const testing::CliRun bad = testing::run(args);
-    EXPECT_EQ(bad.code, 1) << args[1];
-    EXPECT_NE(bad.err.find(says), std::string::npos) << bad.err;
-  };
   fails({"eval", "msaa-4", "--objective", "perceptual:ppd=0.5"}, "ppd");
   fails({"eval", "msaa-4", "--objective", "perceptual:edge=0,line=0,thin=0,dot=0"},
         "no primitives");
@@ -169,11 +171,6 @@ TEST(CliRefine, OnScenesAndOnALattice) {
   EXPECT_NEAR(mean_flip("rgss"), doc["before"].get<double>(), 1e-15);
   EXPECT_NEAR(mean_flip(out), doc["after"].get<double>(), 1e-15);
   std::filesystem::remove(out);
-  const auto fails = [](std::vector<std::string> args, const std::string& says) {
-    const testing::CliRun bad = testing::run(args);
-    EXPECT_EQ(bad.code, 1) << args[1];
-    EXPECT_NE(bad.err.find(says), std::string::npos) << bad.err;
-  };
   fails({"refine", "rgss", "--scenes", "nosuch-scene"}, "nosuch-scene");
   fails({"refine", "rgss", "--scenes", "spiral", "--measure", "psnr"}, "measure");
   fails({"refine", "rgss", "--scenes", "spiral", "--size", "4"}, "size");
