@@ -89,6 +89,7 @@ its family, n, value ("perceptual") and each kind's mean FLIP ("kinds").)doc");
         s.step = step;
         s.min_step = min_step;
         s.api = api;
+        validate(s, start);  // before the objective's references are rendered
         std::optional<PerceptualSpec> spec;
         StudySettings study;
         if (scenes) {

@@ -145,9 +145,9 @@ TEST(CliPerceptual, EvalRefineAndBadSpecs) {
 // lattice when asked; bad scenes, measures and APIs end in exit 1 naming them.
 TEST(CliRefine, OnScenesAndOnALattice) {
   const std::vector<std::string> scenes = {
-      "--scenes", "spiral", "checkerboard", "--size", "16", "--reference-samples", "16"};
+      "--scenes", "spiral", "--size", "12", "--reference-samples", "16"};
   const std::string out = testing::temp_path("refined-on-scenes.json");
-  std::vector<std::string> args = {"--quiet", "refine",      "rgss", "--max-tries", "12",
+  std::vector<std::string> args = {"--quiet", "refine",      "rgss", "--max-tries", "8",
                                    "--api",   "d3d12-tier1", "-o",   out,           "--json"};
   args.insert(args.end(), scenes.begin(), scenes.end());
   const testing::CliRun r = testing::run(args);

@@ -61,6 +61,7 @@ Action add_refine_command(CLI::App& app) {
     if (!o->output.empty() && !is_pattern_path(o->output))
       throw Error(fmt::format("--output: '{}' must end in .json or .xyw", o->output));
     const Pattern start = resolve_pattern(o->pattern);
+    validate(o->search, start);  // before the objective's references are rendered
     std::optional<PerceptualObjective> perceptual;
     std::optional<RenderedObjective> rendered;
     RefineObjective objective;

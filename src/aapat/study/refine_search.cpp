@@ -59,14 +59,22 @@ RefineObjective refine_objective(const PerceptualObjective& objective) {
           "perceptual"};
 }
 
-RefineResult refine_pattern(const Pattern& original, const RefineObjective& objective,
-                            const RefineSettings& s, const ItemsProgress& progress) {
+void validate(const RefineSettings& s, const Pattern& start) {
   if (!(s.step > 0 && s.step <= 1))
     throw ParameterError("step", fmt::format(" {}: expected (0, 1] pixels", s.step));
   if (!(s.min_step > 0 && s.min_step <= s.step))
     throw ParameterError("min-step", fmt::format(" {}: expected (0, step]", s.min_step));
   if (s.max_tries < 1 || s.max_tries > 10'000'000)
     throw ParameterError("max-tries", fmt::format(" {}: expected 1 to 10^7", s.max_tries));
+  if (!s.api.empty()) {
+    const ApiProfile& profile = api_profile(s.api);
+    hardware_layout(snap_to_lattice(start, kLatticeSteps, profile.y_down), profile);
+  }
+}
+
+RefineResult refine_pattern(const Pattern& original, const RefineObjective& objective,
+                            const RefineSettings& s, const ItemsProgress& progress) {
+  validate(s, original);
   const ApiProfile* profile = s.api.empty() ? nullptr : &api_profile(s.api);
   // On an API's lattice every candidate is measured snapped: the search's
   // positions move in continuous steps, but only a step that carries a
@@ -87,7 +95,6 @@ RefineResult refine_pattern(const Pattern& original, const RefineObjective& obje
     return q;
   };
   const Pattern start = on_target(original);
-  if (profile) hardware_layout(start, *profile);  // names the rule the start breaks
   Problem problem = problem_from_pattern(start);
   // The catalog's one-pixel patterns keep their samples strictly inside (an
   // MSAA sample on the border would be its neighbour's).

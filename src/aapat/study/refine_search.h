@@ -45,7 +45,11 @@ struct RefineResult {
 
 // Throws ParameterError for settings out of range (steps in (0, 1], min_step
 // at most step, max_tries in 1..10^7, an unknown API) and Error naming the
-// rule where the start cannot fit the API.
+// rule where the start cannot fit the API: before any work, so that a face
+// can call it before it builds an expensive objective.
+void validate(const RefineSettings& settings, const Pattern& start);
+
+// validate(), then the search.
 RefineResult refine_pattern(const Pattern& start, const RefineObjective& objective,
                             const RefineSettings& settings, const ItemsProgress& progress = {});
 
