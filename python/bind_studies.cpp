@@ -111,7 +111,7 @@ its family, n, value ("perceptual") and each kind's mean FLIP ("kinds").)doc");
           } else {
             rendered.emplace(study, ReferenceSource(render_reference), measure,
                              start.footprint.size != 1);
-            o = {[&r = *rendered](const Pattern& p) { return r(p); }, rendered->text(), "rendered"};
+            o = refine_objective(*rendered);
           }
           const RefineResult r = refine_pattern(start, o, s);
           return std::pair{refine_json(o, start, s, r), r.pattern};
@@ -122,9 +122,10 @@ its family, n, value ("perceptual") and each kind's mean FLIP ("kinds").)doc");
       },
       py::arg("pattern"), py::kw_only(), py::arg("objective") = std::string(kPerceptualObjective),
       py::arg("scenes") = py::none(), py::arg("size") = kRenderedObjectiveSize,
-      py::arg("measure") = "flip", py::arg("reference_samples") = StudySettings{}.reference.samples,
-      py::arg("api") = "", py::arg("max_tries") = RefineSettings{}.max_tries,
-      py::arg("step") = RefineSettings{}.step, py::arg("min_step") = RefineSettings{}.min_step,
+      py::arg("measure") = kRenderedObjectiveMeasure,
+      py::arg("reference_samples") = StudySettings{}.reference.samples, py::arg("api") = "",
+      py::arg("max_tries") = RefineSettings{}.max_tries, py::arg("step") = RefineSettings{}.step,
+      py::arg("min_step") = RefineSettings{}.min_step,
       R"doc(aapat refine: the pattern's positions and weights refined by a compass search,
 never worse than the start, under the perceptual objective or, with `scenes`,
 the mean rendered `measure` over them at `size` (as study_compare renders

@@ -25,7 +25,8 @@ Action add_refine_command(CLI::App& app) {
       "refine a pattern's positions and weights under the perceptual objective or rendered FLIP");
   struct Options {
     std::string pattern, objective = std::string(kPerceptualObjective), output, name,
-                         size = std::to_string(kRenderedObjectiveSize), measure = "flip";
+                         size = std::to_string(kRenderedObjectiveSize),
+                         measure = kRenderedObjectiveMeasure;
     std::vector<std::string> scenes;
     RefineSettings search;
     ReferenceOptions reference;
@@ -72,8 +73,7 @@ Action add_refine_command(CLI::App& app) {
       s.reference.samples = o->reference.settings.samples;
       s.reference.filter = o->reference.settings.filter;
       rendered.emplace(s, o->reference.source(), o->measure, start.footprint.size != 1);
-      objective = {[&r = *rendered](const Pattern& p) { return r(p); }, rendered->text(),
-                   "rendered"};
+      objective = refine_objective(*rendered);
     } else {
       if (!is_perceptual(o->objective))
         throw ParameterError("objective",

@@ -21,6 +21,14 @@ constexpr int kLatticeSteps = 16;  // 1/16 pixel: 4 sub-pixel bits
 // |k| <= steps/2 - 1, and +-1/2 stays.
 double snap_coordinate(double v, int steps);
 
+// The largest |coordinate| of a sample kept strictly inside its pixel on the
+// lattice: (steps/2 - 1)/steps, 7/16 on the APIs' lattice. The API's -8/16
+// is on the border, where a sample reads as its neighbour's (optimize's
+// lattice search and refine's candidates keep to it).
+inline double strictly_inside_bound(int steps) {
+  return (steps / 2 - 1.0) / steps;
+}
+
 // A sample snapped. Shared borders: snap_coordinate on both axes. Without
 // sharing, the pixel's own addressable square: x in [-1/2, 1/2 - 1/steps],
 // and for the APIs whose y points down (Direct3D, Vulkan, Metal) y (up) in

@@ -26,7 +26,7 @@ constexpr size_t kWeighed = 4;  // moves tried with their weights optimized, per
 // The largest |coordinate| a free sample may take on the lattice: within its
 // limit, and never the border's -steps/2 (which the API's other side lacks).
 double lattice_bound(double limit, int steps) {
-  return std::min(std::floor(limit * steps + 1e-12), steps / 2 - 1.0) / steps;
+  return std::min(std::floor(limit * steps + 1e-12) / steps, strictly_inside_bound(steps));
 }
 
 bool can_take(double v, double limit, int steps) {

@@ -132,10 +132,11 @@ StudyResult objective_study(const StudySettings& settings, const ReferenceSource
 // ParameterError for settings out of range or an unknown measure.
 struct SceneFrames;
 inline constexpr int kRenderedObjectiveSize = 128;  // pixels a side, the faces' default
+inline constexpr const char* kRenderedObjectiveMeasure = "flip";  // the faces' default
 class RenderedObjective {
  public:
   RenderedObjective(const StudySettings& settings, const ReferenceSource& references,
-                    std::string measure = "flip", bool corner = false);
+                    std::string measure = kRenderedObjectiveMeasure, bool corner = false);
   double operator()(const Pattern& pattern) const;
   // "flip over 36 scenes at 128x128 (reference 256 spp)": provenance's record.
   std::string text() const;

@@ -59,6 +59,10 @@ RefineObjective refine_objective(const PerceptualObjective& objective) {
           "perceptual"};
 }
 
+RefineObjective refine_objective(const RenderedObjective& objective) {
+  return {[&objective](const Pattern& p) { return objective(p); }, objective.text(), "rendered"};
+}
+
 void validate(const RefineSettings& s, const Pattern& start) {
   if (!(s.step > 0 && s.step <= 1))
     throw ParameterError("step", fmt::format(" {}: expected (0, 1] pixels", s.step));
@@ -83,10 +87,9 @@ RefineResult refine_pattern(const Pattern& original, const RefineObjective& obje
     if (!profile) return p;
     Pattern q = snap_to_lattice(p, kLatticeSteps, profile->y_down);
     if (!q.footprint.plus) {
-      // A one-pixel pattern's samples stay strictly inside, at most 7/16 from
-      // the centre, as optimize's lattice search keeps them: the API's -8/16
-      // is on the border, where a sample reads as the neighbour's.
-      const double inside = (kLatticeSteps / 2 - 1.0) / kLatticeSteps;
+      // A one-pixel pattern's samples stay strictly inside, as optimize's
+      // lattice search keeps them.
+      const double inside = strictly_inside_bound(kLatticeSteps);
       for (auto& set : q.sets)
         for (Vec2& v : set)
           v = {std::clamp(v.x, -inside, inside), std::clamp(v.y, -inside, inside)};

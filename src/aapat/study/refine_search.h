@@ -17,6 +17,7 @@
 #include <string>
 
 #include "aapat/core/pattern.h"
+#include "aapat/study/objective_study.h"
 #include "aapat/study/perceptual_objective.h"
 #include "aapat/work/work_items.h"
 
@@ -35,7 +36,9 @@ struct RefineObjective {
   std::function<double(const Pattern&)> value;
   std::string text, key;
 };
+// The objectives as the search takes them (each must outlive the search).
 RefineObjective refine_objective(const PerceptualObjective& objective);  // key "perceptual"
+RefineObjective refine_objective(const RenderedObjective& objective);    // key "rendered"
 
 struct RefineResult {
   Pattern pattern;
