@@ -142,7 +142,7 @@ std::vector<uint8_t> grey_of(const std::vector<uint8_t>& levels, int channels) {
 // TAA. What each takes, and what to give instead of what it does not.
 OptionModes animate_option_modes() {
   const std::string add_sequence = "add --sequence S for temporal accumulation";
-  const std::string add_taa = "add --taa PRESET (ue4, fsr2, godot, bevy) for engine TAA";
+  const std::string add_taa = "add --taa PRESET (" + engine_preset_names() + ") for engine TAA";
   const std::string taa_set =
       "the preset's own setting is changed with --taa-set KEY=VALUE (aapat list: taa presets)";
   OptionModes t;
@@ -376,12 +376,12 @@ Action add_animate_command(CLI::App& app) {
                   "a scene's motion: pan:dx=DX,dy=DY (display pixels per frame; the default, "
                   "0.5 and 0.25), rotate:deg=D,cx=X,cy=Y, static");
   cmd->add_option("--taa", o->taa,
-                  "engine TAA: a preset, ue4, fsr2, godot or bevy (docs/temporal.md, Engine "
-                  "presets); the sequence defaults to the preset's own jitter");
-  cmd->add_option("--taa-set", o->taa_set,
-                  "override one engine TAA setting, KEY=VALUE (reconstruct, history, rectify, "
-                  "box, gamma, alpha, alpha_min, alpha_max, count_step, count_max, "
-                  "count_max_motion); repeatable");
+                  "engine TAA: a preset, " + engine_preset_names() +
+                      " (docs/temporal.md, Engine presets); the sequence defaults to the "
+                      "preset's own jitter");
+  cmd->add_option(
+      "--taa-set", o->taa_set,
+      "override one engine TAA setting, KEY=VALUE (" + engine_setting_names() + "); repeatable");
   auto* ratio = cmd->add_option("--ratio", o->ratio,
                                 "engine TAA render scale: display / render resolution (>= 1); a "
                                 "generator without frames= takes int(8 R^2) phases");

@@ -429,9 +429,10 @@ Action add_optimize_command(CLI::App& app) {
       ->capture_default_str();
 
   cmd->add_option("--taa", o->taa,
-                  "with --sequence: search under motion instead, for this engine preset (ue4, "
-                  "fsr2, godot, bevy): the pan model's steady mean E2 averaged over --velocity "
-                  "(docs/temporal.md, \"Under motion\")");
+                  "with --sequence: search under motion instead, for this engine preset (" +
+                      engine_preset_names() +
+                      "): the pan model's steady mean E2 averaged over --velocity "
+                      "(docs/temporal.md, \"Under motion\")");
   cmd->add_option("--taa-set", o->taa_set,
                   "with --taa: KEY=VALUE, override one of the preset's settings");
   cmd->add_option("--velocity", o->velocities,

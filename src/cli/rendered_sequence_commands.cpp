@@ -38,7 +38,7 @@ struct ComparisonOptions {
   CLI::Option* ratio_option = nullptr;
 
   void add_to(CLI::App* cmd) {
-    cmd->add_option("--taa", taa, "the engine preset (ue4, fsr2, godot, bevy)")->required();
+    cmd->add_option("--taa", taa, "the engine preset (" + engine_preset_names() + ")")->required();
     cmd->add_option("--taa-set", taa_set, "KEY=VALUE: override one of the preset's settings");
     ratio_option = cmd->add_option("--ratio", ratio, "display / render resolution (>= 1)")
                        ->capture_default_str();

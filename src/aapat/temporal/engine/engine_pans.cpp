@@ -35,8 +35,8 @@ PanTable evaluate_pans(const std::vector<Sequence>& sequences, const EngineTaa& 
     const size_t i = at / velocities.size(), k = at % velocities.size();
     const Vec2 v = velocities[k];
     const PanModel m = pan_model_of(taa, v);
-    table.rows[i].at[k] =
-        evaluate_pan(sequences[i], m, steady_alpha(taa, v.x != 0 || v.y != 0), metric);
+    table.rows[i].at[k] = evaluate_pan(engine_samples(sequences[i], taa), m,
+                                       steady_alpha(taa, v.x != 0 || v.y != 0), metric);
     if (!progress) return;
     const std::lock_guard lock(reporting);
     progress(++done, static_cast<int>(pairs),

@@ -11,6 +11,7 @@
 #include "aapat/render/color_render.h"
 #include "aapat/render/image_flip.h"
 #include "aapat/render/surface.h"
+#include "aapat/temporal/engine/fsr2_accumulate.h"
 #include "aapat/temporal/engine/rendered_flicker.h"
 
 namespace aapat {
@@ -163,6 +164,31 @@ void blend(const Plane& current, const Plane& history, const std::vector<int>& c
   });
 }
 
+// One frame of FSR 2.2 (fsr2_accumulate.h) over the display: `history`
+// (R, G, B, reactive per pixel) is null on a reset.
+void fsr2_frame(const RenderSamples& s, Vec2 jitter, double ratio, const Plane* history,
+                const Motion& motion, const Scene& now, const Scene& before, Plane& out,
+                Plane& out_history) {
+  const int w = out.width, h = out.height, ch = out.channels;
+  const Fsr2Frame frame{s.width, s.height, s.channels, s.values.data()};
+  tbb::parallel_for(0, h, [&](int y) {
+    for (int x = 0; x < w; ++x) {
+      const Fsr2Samples in = fsr2_gather(frame, x, y, jitter, ratio);
+      const Vec2 q = previous_point(motion, now, before, {double(x), double(y)});
+      const double velocity = std::hypot(q.x - x, q.y - y);
+      const bool valid = history && q.x >= -0.5 && q.x <= w - 0.5 && q.y >= -0.5 && q.y <= h - 0.5;
+      Fsr2Pixel previous;
+      if (valid) previous = fsr2_history_sample(*history, q);
+      const Fsr2Pixel p = fsr2_accumulate(in, valid ? &previous : nullptr, ratio, velocity);
+      const size_t at = static_cast<size_t>(y) * w + x;
+      for (size_t c = 0; c < 3; ++c) out_history.values[at * 4 + c] = p.rgb[c];
+      out_history.values[at * 4 + 3] = p.reactive;
+      for (int c = 0; c < ch; ++c)
+        out.values[at * ch + c] = std::clamp(p.rgb[static_cast<size_t>(c)], 0.0, 1.0);
+    }
+  });
+}
+
 Image as_image(const Plane& p) {
   Image img;
   img.width = p.width;
@@ -205,7 +231,17 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
   const ReferenceSource source = references ? references : render_reference;
   const int w = run.width, h = run.height, ch = scene_channels(run.scene);
   const int rw = render_side(w, taa.upscale.ratio), rh = render_side(h, taa.upscale.ratio);
-  const int period = s.period();
+  // Where the preset places each sample (engine_samples): the jitter's sign.
+  const Sequence placed = engine_samples(s, taa);
+  const bool fsr2 = taa.resolve == TaaResolve::fsr2_2;
+  if (fsr2)
+    for (const Pattern& f : placed.frames)
+      if (f.sets[0].size() != 1)
+        throw Error(
+            fmt::format("sequence {}: FSR 2.2 takes one sample per render pixel a frame, "
+                        "a frame here has {}",
+                        s.name, f.sets[0].size()));
+  const int period = placed.period();
   // Each phase's reconstruction weights: separable, the same for every frame of the phase.
   struct PhaseTaps {
     std::vector<Vec2> jitter;
@@ -214,7 +250,7 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
   std::vector<PhaseTaps> phases(static_cast<size_t>(period));
   for (int p = 0; p < period; ++p) {
     PhaseTaps& t = phases[static_cast<size_t>(p)];
-    t.jitter = s.frames[static_cast<size_t>(p)].sets[0];
+    t.jitter = placed.frames[static_cast<size_t>(p)].sets[0];
     std::vector<double> ox, oy;
     for (const Vec2 j : t.jitter) {
       ox.push_back(j.x);
@@ -227,6 +263,8 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
   r.render_width = rw;
   r.render_height = rh;
   Plane history, next{w, h, ch, std::vector<double>(static_cast<size_t>(w) * h * ch)};
+  // FSR 2.2's own history: R, G, B and the temporal reactive factor.
+  Plane fsr2_history, fsr2_next{w, h, 4, std::vector<double>(static_cast<size_t>(w) * h * 4)};
   std::vector<int> count(static_cast<size_t>(w) * h, 0), next_count = count;
   std::vector<int> previous_error;
   Image previous_reference;
@@ -239,12 +277,18 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
     const int phase = ((f % period) + period) % period;
     const PhaseTaps& t = phases[static_cast<size_t>(phase)];
     const RenderSamples samples = sample_frame(scene, t.jitter, taa.upscale.ratio, rw, rh, ch);
-    const Plane current = reconstruct(samples, t.x, t.y, w, h, taa.upscale.ratio);
-    if (history.values.empty()) {
+    if (fsr2) {
+      fsr2_frame(samples, t.jitter[0], taa.upscale.ratio,
+                 fsr2_history.values.empty() ? nullptr : &fsr2_history, run.motion, scene,
+                 previous_scene, next, fsr2_next);
+      fsr2_history = fsr2_next;
+    } else if (history.values.empty()) {
+      const Plane current = reconstruct(samples, t.x, t.y, w, h, taa.upscale.ratio);
       for (size_t i = 0; i < next.values.size(); ++i)
         next.values[i] = std::clamp(current.values[i], 0.0, 1.0);
-      std::fill(next_count.begin(), next_count.end(), 1);
+      std::fill(next_count.begin(), next_count.end(), taa.reset_count);
     } else {
+      const Plane current = reconstruct(samples, t.x, t.y, w, h, taa.upscale.ratio);
       blend(current, history, count, run.motion, scene, previous_scene, taa, next, next_count);
     }
     history = next;

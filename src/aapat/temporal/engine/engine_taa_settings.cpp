@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "aapat/core/filter_catalog.h"
@@ -12,36 +13,58 @@ namespace aapat {
 const std::vector<EnginePresetInfo>& engine_presets() {
   static const std::vector<EnginePresetInfo> kPresets{
       {"ue4",
-       "Unreal Engine 4 TAA: 8 Gaussian-warped Halton(2,3) jitters (sigma 0.47), a Gaussian "
-       "fit of Blackman-Harris over 3x3 render pixels, bilinear history, YCoCg clip to the "
-       "min/max box, current-frame weight 0.04",
-       "UE4 SceneVisibility.cpp (r.TemporalAASamples 8, Sigma = 0.47f * FilterSize), "
-       "PostProcessTemporalAA.cpp (r.TemporalAACurrentFrameWeight .04f, "
-       "r.TemporalAACatmullRom 0)"},
+       "Unreal Engine 4 TAA: 8 Gaussian-warped Halton(2,3) jitters (sigma 0.47), each sample "
+       "at the pixel centre minus the jitter, a Gaussian fit of Blackman-Harris over 3x3 render "
+       "pixels, bilinear history, YCoCg clip to the min/max box, current-frame weight 0.04",
+       "UE4 SceneVisibility.cpp (r.TemporalAASamples 8, Sigma = 0.47f * FilterSize, "
+       "HackAddTemporalAAProjectionJitter(SampleX * 2 / Width, SampleY * -2 / Height)), "
+       "SceneView.h (ProjectionMatrix.M[2][0] += X), PostProcessTemporalAA.cpp "
+       "(r.TemporalAACurrentFrameWeight .04f, r.TemporalAACatmullRom 0)"},
       {"fsr2",
-       "AMD FSR 2: Halton(2,3) from index 1, int(8 R^2) phases, Lanczos-2 upsampling and "
-       "history, YCoCg clamp to mean +- (1 + (R - 1)/2) sigma, accumulation 1/(n+1) with "
-       "n <= 16 (4 in motion)",
-       "FidelityFX-FSR2 ffx_fsr2.cpp (ffxFsr2GetJitterPhaseCount, ffxFsr2GetJitterOffset), "
-       "ffx_fsr2_accumulate.h (RectifyHistory fBoxScale, Accumulate), ffx_fsr2_common.h "
-       "(fUpsampleLanczosWeightScale 1/12, fAverageLanczosWeightPerFrame 0.74/12, "
-       "fAccumulationMaxOnMotion 3/12)"},
+       "AMD FSR 2.2: Halton(2,3) from index 1, int(8 R^2) phases, each sample at the pixel "
+       "centre minus the jitter; FSR 2.2's own per-pixel arithmetic: Lanczos-2 of the 3x3 "
+       "render samples at |offset| x min(1.99, R) with deringing, Lanczos-2 history with "
+       "deringing, YCoCg clamp to mean +- min(20, R^6) sigma within the min/max box, "
+       "alpha = w / (1 + w) at rest, 1/11 in motion, the accumulation dropped to 0.1 by a clamp",
+       "FidelityFX-FSR2 v2.2.1 ffx_fsr2.cpp (ffxFsr2GetJitterPhaseCount, "
+       "ffxFsr2GetJitterOffset), shaders/ffx_fsr2_upsample.h (ComputeUpsampledColorAndWeight), "
+       "ffx_fsr2_accumulate.h (RectifyHistory, ComputeBaseAccumulationWeight, Accumulate, "
+       "ComputeTemporalReactiveFactor), ffx_fsr2_sample.h (Lanczos2, deringing), "
+       "ffx_fsr2_common.h (RectificationBox, fUpsampleLanczosWeightScale 1/12)"},
       {"godot",
-       "Godot 4 TAA: 16 Halton(2,3) jitters from index 0, the pixel's own sample, 9-tap "
+       "Godot 4 TAA: 16 Halton(2,3) jitters from index 0, each sample at the pixel centre "
+       "minus the jitter, the pixel's own sample, 9-tap "
        "Catmull-Rom history, 3x3 YCoCg variance clip (gamma 1), alpha 1/(n+1), n <= 16",
        "godot servers/rendering/renderer_rd/shaders/effects/taa_resolve.glsl "
        "(sample_catmull_rom_9, clip_history_3x3, MAX_ACCUMULATED_SAMPLES 16), "
        "effects/taa.cpp (variance_dynamic clamped to [0.75, 1.0]), renderer_scene_cull.cpp "
-       "(jitter get_halton_value(i, 2), i from 0)"},
+       "(jitter get_halton_value(i, 2) = 2 h - 1, i from 0), core/math/projection.cpp "
+       "(add_jitter_offset: columns[3] += offset, left-multiplied onto the projection)"},
       {"bevy",
-       "Bevy TAA: 8 Halton(2,3) jitters from index 1, the pixel's own sample, 5-tap "
-       "Catmull-Rom history, 3x3 YCoCg variance clip (gamma 1), alpha = clamp(1 / "
-       "confidence, 0.015, 0.1), confidence + 10 per still frame, reset in motion",
-       "bevy crates/bevy_core_pipeline/src/taa/taa.wgsl (MIN_HISTORY_BLEND_RATE 0.015, "
-       "DEFAULT_HISTORY_BLEND_RATE 0.1, clip_towards_aabb_center), taa/mod.rs (halton_sequence, "
-       "'skipping i = 0')"},
+       "Bevy 0.17 TAA: 8 jitters, the pixel centre then Halton(2,3) from index 1, each sample "
+       "at the pixel centre plus the jitter, the pixel's own sample, 5-tap Catmull-Rom history, "
+       "3x3 YCoCg variance clip (gamma 1), alpha = clamp(1 / confidence, 0.015, 0.1), "
+       "confidence 1 / 0.015 after a reset, + 10 per still frame, 1 in motion",
+       "bevy v0.17.2 crates/bevy_anti_alias/src/taa/taa.wgsl (MIN_HISTORY_BLEND_RATE 0.015, "
+       "DEFAULT_HISTORY_BLEND_RATE 0.1, clip_towards_aabb_center, RESET confidence), "
+       "taa/mod.rs (halton_sequence, (0, 0) first), bevy_render camera.rs (jitter_projection)"},
+      {"bevy-0.16",
+       "Bevy 0.16 TAA: as bevy, with 8 Halton(2,3) jitters from index 1 (no centre frame)",
+       "bevy v0.16.0 crates/bevy_core_pipeline/src/taa/mod.rs (halton_sequence, 'skipping i = "
+       "0'), taa.wgsl"},
   };
   return kPresets;
+}
+
+std::string engine_preset_names() {
+  std::string names;
+  for (const EnginePresetInfo& p : engine_presets()) names += (names.empty() ? "" : ", ") + p.name;
+  return names;
+}
+
+std::string engine_setting_names() {
+  return "reconstruct, history, rectify, box, gamma, alpha, alpha_min, alpha_max, count_step, "
+         "count_max, count_max_motion, reset_count, jitter_sign, resolve";
 }
 
 namespace {
@@ -76,15 +99,45 @@ void apply(EngineTaa& t, const std::string& key, const std::string& value) {
     t.count_max = static_cast<int>(number(key, value, 0, 1e6));
   } else if (key == "count_max_motion") {
     t.count_max_motion = static_cast<int>(number(key, value, 0, 1e6));
+  } else if (key == "reset_count") {
+    t.reset_count = static_cast<int>(number(key, value, 1, 1e6));
+  } else if (key == "jitter_sign") {
+    const double sign = parse_number(value, key);
+    if (sign != 1 && sign != -1)
+      throw ParameterError(key, fmt::format(" {}: must be -1 (centre minus jitter) or 1", value));
+    t.jitter_sign = sign;
+  } else if (key == "resolve") {
+    t.resolve = parse_taa_resolve(value);
   } else {
-    throw Error(fmt::format(
-        "unknown TAA setting '{}': known are reconstruct, history, rectify, box, gamma, alpha, "
-        "alpha_min, alpha_max, count_step, count_max, count_max_motion",
-        key));
+    throw Error(fmt::format("unknown TAA setting '{}': known are {}", key, engine_setting_names()));
   }
 }
 
+// The settings only the generic resolve reads.
+bool generic_only(const std::string& key) {
+  return key != "jitter_sign" && key != "resolve";
+}
+
 }  // namespace
+
+TaaResolve parse_taa_resolve(std::string_view name) {
+  if (name == "generic") return TaaResolve::generic;
+  if (name == "fsr2-2.2") return TaaResolve::fsr2_2;
+  throw ParameterError("resolve", fmt::format(" '{}': known are generic, fsr2-2.2", name));
+}
+
+std::string_view taa_resolve_name(TaaResolve r) {
+  return r == TaaResolve::fsr2_2 ? "fsr2-2.2" : "generic";
+}
+
+Sequence engine_samples(const Sequence& s, const EngineTaa& t) {
+  if (t.jitter_sign == 1) return s;
+  Sequence mirrored = s;
+  for (Pattern& f : mirrored.frames)
+    for (auto& set : f.sets)
+      for (Vec2& p : set) p = {t.jitter_sign * p.x, t.jitter_sign * p.y};
+  return mirrored;
+}
 
 std::vector<std::pair<std::string, std::string>> parse_taa_overrides(
     const std::vector<std::string>& items) {
@@ -108,6 +161,7 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
   const int phases = upscaler_phase_count(ratio);
   if (preset == "ue4") {
     t.jitter = "ue4-halton:frames=8";
+    t.jitter_sign = -1;
     apply(t, "reconstruct", "gaussian:sigma=0.47,radius=1.5");
     t.history = HistorySampler::bilinear;
     t.rectify = Rectification::clip;
@@ -115,24 +169,33 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
     t.alpha_min = t.alpha_max = 0.04;
   } else if (preset == "fsr2") {
     t.jitter = fmt::format("halton:frames={},start=1", phases);
+    t.resolve = TaaResolve::fsr2_2;
+    t.jitter_sign = -1;
+    // The generic settings below are what the linear model of a pan
+    // (engine_pans.h) and resolve=generic take of FSR 2.2: its
+    // reconstruction and history filters, its box at rest (min(20, R^6)
+    // sigma, not intersected with the min/max box there), and its blend:
+    // w / (1 + w) at rest, w about 0.74 / 12 a frame (ffx_fsr2_common.h:52),
+    // n <= 16; 1/11 in motion (accumulation 10 w), n <= 10.
     apply(t, "reconstruct", std::string(kDefaultReconstruction));
     t.history = HistorySampler::lanczos2;
     t.rectify = Rectification::clamp;
     t.box = RectificationBox::variance;
-    t.gamma = 1 + 0.5 * (ratio - 1);
-    // 1 / (0.74 / 12) = 16.2 average frames at the weight cap 1; 3/12 in motion: 4.05.
+    t.gamma = std::min(20.0, std::pow(ratio, 6));
     t.count_max = 16;
-    t.count_max_motion = 4;
+    t.count_max_motion = 10;
   } else if (preset == "godot") {
     t.jitter = "halton:frames=16,start=0";
+    t.jitter_sign = -1;
     apply(t, "reconstruct", "box:width=1");
     t.history = HistorySampler::catmull_rom_9;
     t.rectify = Rectification::clip;
     t.box = RectificationBox::variance;
     t.gamma = 1;
     t.count_max = t.count_max_motion = 16;
-  } else if (preset == "bevy") {
-    t.jitter = "halton:frames=8,start=1";
+  } else if (preset == "bevy" || preset == "bevy-0.16") {
+    t.jitter = preset == "bevy" ? "bevy-halton:frames=8" : "halton:frames=8,start=1";
+    t.reset_count = 7;  // confidence 1 / 0.015 = 66.7 after a reset: alpha 0.015 from then on
     apply(t, "reconstruct", "box:width=1");
     t.history = HistorySampler::catmull_rom_5;
     t.rectify = Rectification::clip;
@@ -144,10 +207,9 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
     t.alpha_min = 0.015;
     t.alpha_max = 0.1;
   } else if (preset != "custom") {
-    throw Error(
-        fmt::format("unknown TAA preset '{}': known presets are ue4, fsr2, godot, bevy "
-                    "(or custom, every setting given)",
-                    preset));
+    throw Error(fmt::format(
+        "unknown TAA preset '{}': known presets are {} (or custom, every setting given)", preset,
+        engine_preset_names()));
   } else {
     t.jitter = fmt::format("halton:frames={},start=1", phases);
   }
@@ -155,6 +217,14 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
     apply(t, key, value);
     t.overrides.emplace_back(key, value);
   }
+  // No setting is taken and then ignored: FSR 2.2's arithmetic has none of the generic ones.
+  if (t.resolve == TaaResolve::fsr2_2)
+    for (const auto& [key, value] : overrides)
+      if (generic_only(key))
+        throw ParameterError(
+            "taa-set", fmt::format(" {}={}: resolve fsr2-2.2 (FSR 2.2's own arithmetic) has no "
+                                   "setting {}; give resolve=generic first to use the generic one",
+                                   key, value, key));
   if (t.alpha_min > t.alpha_max)
     throw ParameterError("alpha_min",
                          fmt::format(" {} exceeds alpha_max {}", t.alpha_min, t.alpha_max));
@@ -173,9 +243,13 @@ std::string engine_taa_text(const EngineTaa& t) {
           : fmt::format(
                 "{} to the {} box{}", rectification_name(t.rectify), rectification_box_name(t.box),
                 t.box == RectificationBox::variance ? fmt::format(" gamma {:g}", t.gamma) : "");
-  return fmt::format("{} at {:g}x ({} reconstruction, {} history, {}, {})", t.preset,
+  const std::string samples = t.jitter_sign < 0 ? "centre minus jitter" : "centre plus jitter";
+  if (t.resolve == TaaResolve::fsr2_2)
+    return fmt::format("{} at {:g}x (FSR 2.2's upsample, history, rectification and blend; {})",
+                       t.preset, t.upscale.ratio, samples);
+  return fmt::format("{} at {:g}x ({} reconstruction, {} history, {}, {}; {})", t.preset,
                      t.upscale.ratio, t.upscale.reconstruction.name(),
-                     history_sampler_name(t.history), rect, blend);
+                     history_sampler_name(t.history), rect, blend, samples);
 }
 
 }  // namespace aapat

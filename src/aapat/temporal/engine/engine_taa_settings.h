@@ -13,6 +13,13 @@
 //                      alpha_min, alpha_max), n the frames the pixel's history
 //                      holds, at most count_max (count_max_motion while the
 //                      scene moves); a pixel without history takes alpha 1.
+//   reset_count        n after a reset (the first frame, a cut): 1, or
+//                      Bevy's confidence 1 / 0.015 as frames (7)
+//   jitter_sign        -1: each sample at the render pixel's centre minus
+//                      the jitter, as FSR 2 and UE4 place it; 1: plus (Bevy)
+//   resolve            generic (the settings above) or fsr2-2.2 (FSR 2.2's
+//                      own arithmetic, fsr2_accumulate.h, which reads none
+//                      of the generic settings: setting one is refused)
 #pragma once
 
 #include <algorithm>
@@ -26,27 +33,37 @@
 #include "aapat/temporal/engine/rectification.h"
 #include "aapat/temporal/model/history_sampling.h"
 #include "aapat/temporal/sequence/render_scale.h"
+#include "aapat/temporal/sequence/sequence.h"
 
 namespace aapat {
 
+enum class TaaResolve { generic, fsr2_2 };
+TaaResolve parse_taa_resolve(std::string_view name);  // generic, fsr2-2.2
+std::string_view taa_resolve_name(TaaResolve r);
+
 struct EngineTaa {
   std::string preset = "custom";
-  Upscale upscale;     // the render scale and each frame's reconstruction filter
-  std::string jitter;  // the preset's own sequence spec (its phases for the ratio)
+  TaaResolve resolve = TaaResolve::generic;
+  double jitter_sign = 1;  // samples at the render pixel's centre + jitter_sign x jitter
+  Upscale upscale;         // the render scale and each frame's reconstruction filter
+  std::string jitter;      // the preset's own sequence spec (its phases for the ratio)
   HistorySampler history = HistorySampler::bilinear;
   Rectification rectify = Rectification::clip;
   RectificationBox box = RectificationBox::variance;
   double gamma = 1;
   double alpha_min = 0, alpha_max = 1, count_step = 1;
-  int count_max = 16, count_max_motion = 16;
+  int count_max = 16, count_max_motion = 16, reset_count = 1;
   std::vector<std::pair<std::string, std::string>> overrides;  // as given, for reports
 };
 
 struct EnginePresetInfo {
   std::string name, summary, source;
 };
-// ue4, fsr2, godot, bevy.
+// ue4, fsr2, godot, bevy, bevy-0.16.
 const std::vector<EnginePresetInfo>& engine_presets();
+// "ue4, fsr2, godot, bevy, bevy-0.16", and the settings `--taa-set` takes, for messages and help.
+std::string engine_preset_names();
+std::string engine_setting_names();
 
 // The blend's current-frame weight for a pixel whose history holds n frames:
 // clamp(1 / (1 + count_step n), alpha_min, alpha_max).
@@ -57,6 +74,9 @@ inline double blend_alpha(const EngineTaa& t, int n) {
 inline double steady_alpha(const EngineTaa& t, bool moving) {
   return blend_alpha(t, moving ? t.count_max_motion : t.count_max);
 }
+
+// The sequence as the preset places its samples: each offset times jitter_sign.
+Sequence engine_samples(const Sequence& s, const EngineTaa& t);
 
 // "KEY=VALUE" items (`--taa-set`) as make_engine_taa's overrides; throws
 // ParameterError naming taa-set for an item without a key and an '='.

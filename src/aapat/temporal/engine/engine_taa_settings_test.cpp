@@ -13,17 +13,36 @@ namespace {
 TEST(EngineTaaSettings, PresetsCarryTheirSourcesNumbers) {
   const EngineTaa fsr2 = make_engine_taa("fsr2", 1.5);
   EXPECT_EQ(fsr2.jitter, "halton:frames=18,start=1");  // int(8 * 1.5^2)
-  EXPECT_DOUBLE_EQ(fsr2.gamma, 1.25);                  // 1 + (R - 1) / 2
-  EXPECT_EQ(fsr2.history, HistorySampler::lanczos2);
-  EXPECT_EQ(fsr2.rectify, Rectification::clamp);
+  EXPECT_EQ(fsr2.resolve, TaaResolve::fsr2_2);         // FSR 2.2's own arithmetic
+  EXPECT_EQ(fsr2.jitter_sign, -1);                     // ffx_fsr2_upsample.h:102
+  EXPECT_EQ(fsr2.history, HistorySampler::lanczos2);   // what the linear pan model takes
   const EngineTaa ue4 = make_engine_taa("ue4", 1);
   EXPECT_EQ(ue4.alpha_min, 0.04);
   EXPECT_EQ(ue4.alpha_max, 0.04);
   EXPECT_EQ(ue4.jitter, "ue4-halton:frames=8");
+  EXPECT_EQ(ue4.jitter_sign, -1);
   const EngineTaa bevy = make_engine_taa("bevy", 1);
   EXPECT_EQ(bevy.alpha_min, 0.015);
   EXPECT_EQ(bevy.alpha_max, 0.1);
   EXPECT_EQ(bevy.history, HistorySampler::catmull_rom_5);
+  EXPECT_EQ(bevy.jitter_sign, 1);
+  // Bevy's confidence after a reset is 1 / 0.015: alpha 0.015 from the next frame on.
+  EXPECT_DOUBLE_EQ(blend_alpha(bevy, bevy.reset_count), 0.015);
+  EXPECT_NEAR(blend_alpha(bevy, 1), 1 / 11.0, 1e-15);  // confidence 11 after a frame of motion
+  // Bevy 0.17: the centre first, then Halton(2,3) from index 1; 0.16: from index 1.
+  const Sequence s17 = make_sequence(bevy.jitter),
+                 s16 = make_sequence(make_engine_taa("bevy-0.16", 1).jitter);
+  ASSERT_EQ(s17.period(), 8);
+  EXPECT_EQ(s17.frames[0].sets[0][0].x, 0);
+  EXPECT_EQ(s17.frames[0].sets[0][0].y, 0);
+  for (int i = 1; i < 8; ++i) {
+    EXPECT_EQ(s17.frames[static_cast<size_t>(i)].sets[0][0].x,
+              s16.frames[static_cast<size_t>(i - 1)].sets[0][0].x);
+    EXPECT_EQ(s17.frames[static_cast<size_t>(i)].sets[0][0].y,
+              s16.frames[static_cast<size_t>(i - 1)].sets[0][0].y);
+  }
+  EXPECT_NEAR(s16.frames[7].sets[0][0].x, -0.4375, 1e-15);  // Bevy 0.16's last entry
+  EXPECT_NEAR(s16.frames[7].sets[0][0].y, 0.3888889, 1e-7);
   const EngineTaa godot = make_engine_taa("godot", 1, {{"history", "bilinear"}, {"gamma", "1.5"}});
   EXPECT_EQ(godot.count_max, 16);
   EXPECT_EQ(godot.history, HistorySampler::bilinear);
@@ -34,6 +53,39 @@ TEST(EngineTaaSettings, PresetsCarryTheirSourcesNumbers) {
   EXPECT_THROW(make_engine_taa("fsr2", 1, {{"gamma", "-1"}}), Error);
   EXPECT_THROW(make_engine_taa("fsr2", 1, {{"colour", "1"}}), Error);
   EXPECT_THROW(make_engine_taa("fsr2", 1, {{"alpha_min", "0.5"}, {"alpha_max", "0.2"}}), Error);
+}
+
+// No setting is taken and then ignored: FSR 2.2's arithmetic reads none of
+// the generic ones, and the sign is one of two.
+TEST(EngineTaaSettings, SettingsAPresetDoesNotReadAreRefused) {
+  for (const auto& [key, value] :
+       std::vector<std::pair<std::string, std::string>>{{"reconstruct", "box:width=1"},
+                                                        {"history", "bilinear"},
+                                                        {"rectify", "clip"},
+                                                        {"box", "minmax"},
+                                                        {"gamma", "1.5"},
+                                                        {"alpha", "0.1"},
+                                                        {"count_max", "4"},
+                                                        {"reset_count", "2"}})
+    EXPECT_THROW(make_engine_taa("fsr2", 2, {{key, value}}), ParameterError) << key;
+  const EngineTaa generic = make_engine_taa("fsr2", 2, {{"resolve", "generic"}, {"gamma", "1.5"}});
+  EXPECT_EQ(generic.resolve, TaaResolve::generic);
+  EXPECT_EQ(generic.gamma, 1.5);
+  EXPECT_THROW(make_engine_taa("custom", 1, {{"gamma", "1.5"}, {"resolve", "fsr2-2.2"}}),
+               ParameterError);
+  EXPECT_THROW(make_engine_taa("fsr2", 1, {{"resolve", "fsr3"}}), ParameterError);
+  for (const char* sign : {"0", "2", "-0.5", "nan", "x"})
+    EXPECT_THROW(make_engine_taa("ue4", 1, {{"jitter_sign", sign}}), Error) << sign;
+  EXPECT_EQ(make_engine_taa("ue4", 1, {{"jitter_sign", "1"}}).jitter_sign, 1);
+  // engine_samples mirrors a sequence by the sign, and only then.
+  const Sequence s = make_sequence("r2:frames=3");
+  const Sequence minus = engine_samples(s, make_engine_taa("fsr2", 1.5));
+  const Sequence plus = engine_samples(s, make_engine_taa("bevy", 1));
+  for (size_t f = 0; f < 3; ++f) {
+    EXPECT_EQ(minus.frames[f].sets[0][0].x, -s.frames[f].sets[0][0].x);
+    EXPECT_EQ(minus.frames[f].sets[0][0].y, -s.frames[f].sets[0][0].y);
+    EXPECT_EQ(plus.frames[f].sets[0][0].x, s.frames[f].sets[0][0].x);
+  }
 }
 
 // Unreal Engine 4's warp keeps every jitter within the pixel, at angle 2 pi h3(i).

@@ -99,6 +99,45 @@ TEST(EngineTaa, RatioTwoSamplesTheCoarseGrid) {
     }
 }
 
+// A preset that places samples at minus the jitter renders a sequence as
+// the same preset with plus renders the mirrored sequence: the sign is the
+// only difference (here through FSR 2.2's arithmetic, moving).
+TEST(EngineTaa, TheSignMirrorsTheSequence) {
+  const Scene scene = make_scene("spiral", 18, 12);
+  EngineRun run{scene, make_motion("pan:dx=0.3,dy=0.2", 18, 12), 18, 12, 3, 4, {}};
+  const Sequence s = make_sequence("r2:frames=5");
+  Sequence mirrored = s;
+  for (Pattern& f : mirrored.frames) f.sets[0][0] = {-f.sets[0][0].x, -f.sets[0][0].y};
+  const std::vector<Image> minus = frames_of(run, s, make_engine_taa("fsr2", 1.5));
+  const std::vector<Image> plus =
+      frames_of(run, mirrored, make_engine_taa("fsr2", 1.5, {{"jitter_sign", "1"}}));
+  ASSERT_EQ(minus.size(), plus.size());
+  for (size_t f = 0; f < minus.size(); ++f) EXPECT_EQ(minus[f].values, plus[f].values);
+  const std::vector<Image> other = frames_of(run, mirrored, make_engine_taa("fsr2", 1.5));
+  EXPECT_NE(other.back().values, minus.back().values);
+}
+
+// FSR 2.2 on a still scene converges to a weighted mean of its samples:
+// the still steady state after a cut is within the samples' range and the
+// frames after it change less and less.
+TEST(EngineTaa, Fsr2SettlesOnAStillScene) {
+  const Scene scene = make_scene("circles", 24, 16);
+  EngineRun run{scene, make_motion("static", 24, 16), 24, 16, 36, 0, {}};
+  const std::vector<Image> frames =
+      frames_of(run, make_sequence("halton:frames=18,start=1"), make_engine_taa("fsr2", 1.5));
+  auto change = [&](size_t f) {
+    double sum = 0;
+    for (size_t i = 0; i < frames[f].values.size(); ++i)
+      sum += std::abs(frames[f].values[i] - frames[f - 1].values[i]);
+    return sum;
+  };
+  EXPECT_LT(change(35), change(2));
+  for (const double v : frames.back().values) {
+    EXPECT_GE(v, 0);
+    EXPECT_LE(v, 1);
+  }
+}
+
 TEST(EngineTaa, RefusesWhatItCannotRender) {
   const Scene scene = make_scene("spiral", 10, 10);
   EngineRun run{scene, make_motion("static", 10, 10), 10, 10, 2, 0, {}};
@@ -110,6 +149,10 @@ TEST(EngineTaa, RefusesWhatItCannotRender) {
   tiled.frames[0].weights.push_back(tiled.frames[0].weights[0]);
   tiled.frames[1].weights.push_back(tiled.frames[1].weights[0]);
   EXPECT_THROW(render_engine_taa(run, tiled, t, {}, kEngineCheapReference), Error);
+  // FSR 2.2 takes one sample per render pixel a frame.
+  EXPECT_THROW(render_engine_taa(run, make_sequence("msaa-alternating:samples=2,frames=2"), t, {},
+                                 kEngineCheapReference),
+               Error);
   run.frames = 0;
   EXPECT_THROW(render_engine_taa(run, make_sequence("r2"), t, {}, kEngineCheapReference), Error);
   run.frames = 2;

@@ -59,8 +59,13 @@ PanSequenceSearchResult search_sequence_under_pans(const PanSequenceSearch& sear
   // Inside the pixel ([-1/2, 1/2), as a sequence file holds it) and the bound.
   const double hi = std::min(search.jitter_bound, std::nextafter(0.5, 0.0)),
                lo = -search.jitter_bound;
+  // The objective sees the samples where the preset places them (centre
+  // plus jitter_sign x jitter): the search moves those, within the bounds
+  // mirrored with them.
+  const double sign = search.taa.jitter_sign;
   for (const Pattern& f : search.start.frames)
-    jitter.push_back({std::clamp(f.sets[0][0].x, lo, hi), std::clamp(f.sets[0][0].y, lo, hi)});
+    jitter.push_back(
+        {sign * std::clamp(f.sets[0][0].x, lo, hi), sign * std::clamp(f.sets[0][0].y, lo, hi)});
   // The pan objective under the generic compass search: a frame's x and y
   // are one block, moved incrementally (pan_objective.h).
   class Adapter final : public CompassObjective {
@@ -89,8 +94,8 @@ PanSequenceSearchResult search_sequence_under_pans(const PanSequenceSearch& sear
   CompassSettings settings;
   settings.step = search.step;
   settings.min_step = search.min_step;
-  settings.lo = lo;
-  settings.hi = hi;
+  settings.lo = sign > 0 ? lo : -hi;
+  settings.hi = sign > 0 ? hi : -lo;
   settings.max_sweeps = kMaxPanSweeps;
   const CompassResult found = compass_search(adapter, std::move(x), settings, progress);
   r.start_values = adapter.start_values;
@@ -101,7 +106,7 @@ PanSequenceSearchResult search_sequence_under_pans(const PanSequenceSearch& sear
   r.value = objective.value();
   r.best = search.start;
   for (size_t f = 0; f < r.best.frames.size(); ++f)
-    r.best.frames[f].sets[0][0] = objective.jitter()[f];
+    r.best.frames[f].sets[0][0] = {sign * objective.jitter()[f].x, sign * objective.jitter()[f].y};
   r.best.name = fmt::format("pan-search-{}", search.start.period());
   if (search.taa.upscale.ratio > 1) {
     std::string warning =

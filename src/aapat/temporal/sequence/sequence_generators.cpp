@@ -178,6 +178,18 @@ const SequenceRegistry& sequence_registry() {
                           radical_inverse_of(uint64_t(i), b2) - 0.5});
           return jitter_sequence(s.canonical(), "Halton jitter", at);
         }},
+       {{"bevy-halton",
+         "Bevy 0.17's jitter: the pixel centre, then Halton(2,3) - 1/2 from index 1",
+         "bevy v0.17.2 crates/bevy_anti_alias/src/taa/mod.rs:380-390 (vec2(0.0, 0.0) first)",
+         {{"frames", "8", "phases (the centre and frames - 1 Halton points)"}}},
+        [](const Spec& s, const std::optional<Pattern>&) {
+          const int frames = s.whole("frames", 1, kMaxSequenceFrames);
+          std::vector<Vec2> at{{0, 0}};
+          for (int i = 1; i < frames; ++i)
+            at.push_back({radical_inverse_of(uint64_t(i), 2) - 0.5,
+                          radical_inverse_of(uint64_t(i), 3) - 0.5});
+          return jitter_sequence(s.canonical(), "Bevy's Halton jitter", at);
+        }},
        {{"ue4-halton",
          "Unreal Engine 4's jitter: Halton(2,3) (u1, u2) warped to a Gaussian of deviation "
          "sigma windowed to radius 1/2 (Box-Muller: r = sigma sqrt(-2 ln((1 - u1) w + u1)), "

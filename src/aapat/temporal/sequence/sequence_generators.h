@@ -4,6 +4,8 @@
 //   halton:b1=2,b2=3,frames=8,start=1   Halton with any two bases; start = 1
 //                                       skips index 0 (the pixel corner), as
 //                                       FSR 2, DLSS and XeSS integrations do
+//   bevy-halton:frames=8                the pixel centre, then Halton(2,3)
+//                                       from index 1 (Bevy 0.17)
 //   r2:frames=16,start=1                Roberts' R2 (the plastic number g:
 //                                       n/g, n/g^2 mod 1, from 1/2)
 //   sobol:frames=16,seed=1              the first two Sobol dimensions,
