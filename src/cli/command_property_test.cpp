@@ -319,7 +319,7 @@ std::vector<std::string> random_command() {
       a = {"animate",
            *one_of({"checkerboard", "zoneplate", "circle", "good.json", "nosuch"}),
            "--taa",
-           *one_of({"ue4", "fsr2", "godot", "bevy", "nosuch"}),
+           *one_of({"ue4", "fsr2", "godot", "bevy", "bevy-0.16", "nosuch"}),
            "--size",
            *one_of({"8", "12"}),
            "--frames",
@@ -334,7 +334,9 @@ std::vector<std::string> random_command() {
              "rotate:deg=nan", "orbit"});
       maybe(a, "--taa-set",
             {"history=catmull-rom-5", "gamma=1.5", "alpha=0.1", "gamma=-1", "bogus=1", "history",
-             "reconstruct=gaussian:sigma=0.5,radius=1.5", "rectify=sideways"});
+             "reconstruct=gaussian:sigma=0.5,radius=1.5", "rectify=sideways", "jitter_sign=-1",
+             "jitter_sign=0", "resolve=generic", "resolve=fsr2-2.2", "resolve=fsr3",
+             "reset_count=7", "reset_count=0"});
       maybe(a, "--sequence", {"halton:frames=2", "r2", "aapat-taa-8", "msaa-alternating"});
       maybe(a, "--frames-dir", {"frames", "good.json"});
       maybe(a, "--csv", {"rows.csv"});
