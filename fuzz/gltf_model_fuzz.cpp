@@ -10,17 +10,34 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 
 #include "aapat/core/geometry.h"
 #include "aapat/io/mesh_file.h"
 #include "aapat/render/mesh.h"
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static const std::filesystem::path dir =
+namespace {
+
+// The folder the model's bytes are written to (a glTF is read from a file),
+// one per process, removed when the process exits: fuzzing left one behind
+// in the temporary folder per target and run.
+struct ScratchFolder {
+  std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("aapat-gltf-fuzz-" + std::to_string(::getpid()));
-  static const bool made = std::filesystem::create_directories(dir) || true;
-  (void)made;
-  const std::string path = (dir / "model.gltf").string();
+  ScratchFolder() { std::filesystem::create_directories(dir); }
+  ~ScratchFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  static const ScratchFolder scratch;
+  const std::string path = (scratch.dir / "model.gltf").string();
   {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
