@@ -309,7 +309,8 @@ Sequence or a spec; the first is the baseline) is rendered through the engine
 preset's full pipeline (settings: overrides by key) at ratio on the same
 scenes (a list of scene specs or files, or random_scenes generated
 random-shapes:count=shapes,seed=seed+i) under the same motion ("static",
-"cut", "random-pan": each scene its own pan within max_speed from seed, or a
+"cut": the frames after a cut, averaged over every phase it can fall on,
+"random-pan": each scene its own pan within max_speed from seed, or a
 motion spec). A dict with the keys of `aapat sequence compare --json`:
 scenes [{scene, motion, rows [{sequence, rmse, flicker, flip}]}] and
 against_first [{sequence, against, rmse|flicker|flip: {lower, ties, scenes,

@@ -51,7 +51,8 @@ struct ComparisonOptions {
     scene->excludes(random);
     cmd->add_option("--shapes", shapes, "--random-scenes: shapes a scene")->capture_default_str();
     cmd->add_option("--motion", motion,
-                    "static (steady state), cut (the frames after a cut), random-pan (each scene "
+                    "static (steady state), cut (the frames after a cut, averaged over every phase "
+                    "it can fall on), random-pan (each scene "
                     "its own pan from --seed, components within --max-speed), or a motion spec "
                     "for every scene")
         ->capture_default_str();

@@ -52,8 +52,18 @@ void validate(const EngineComparison& c, size_t sequences) {
   check_paired_settings(c.resamples, c.confidence);
 }
 
+Sequence started_at(const Sequence& s, int phase) {
+  Sequence out = s;
+  const int n = s.period();
+  for (int f = 0; f < n; ++f)
+    out.frames[static_cast<size_t>(f)] = s.frames[static_cast<size_t>((f + phase) % n)];
+  return out;
+}
+
 PreparedScenes::PreparedScenes(const EngineComparison& c, const ReferenceSource& references)
-    : source_(references ? references : ReferenceSource(render_reference)), memo_(c.scenes.size()) {
+    : cut_(c.motion == "cut"),
+      source_(references ? references : ReferenceSource(render_reference)),
+      memo_(c.scenes.size()) {
   motions_.assign(c.scenes.size(), c.motion == "cut" ? "static" : c.motion);
   if (c.motion == "random-pan") {
     const std::vector<Vec2> v =
@@ -82,8 +92,20 @@ ComparisonMeasures PreparedScenes::render(size_t scene, const Sequence& s, const
     if (it != memo.end()) return it->second;
     return memo.emplace(ref.seed, source_(sc, w, h, ref, offset)).first->second;
   };
-  const EngineResult e = render_engine_taa(runs_[scene], s, taa, {}, remembered);
-  return {e.total.rmse, e.flicker, e.mean_flip};
+  if (!cut_) {
+    const EngineResult e = render_engine_taa(runs_[scene], s, taa, {}, remembered);
+    return {e.total.rmse, e.flicker, e.mean_flip};
+  }
+  // A cut falls on any phase: every start, each measure's mean over them.
+  ComparisonMeasures mean{};
+  const int n = s.period();
+  for (int phase = 0; phase < n; ++phase) {
+    const EngineResult e =
+        render_engine_taa(runs_[scene], started_at(s, phase), taa, {}, remembered);
+    const ComparisonMeasures m{e.total.rmse, e.flicker, e.mean_flip};
+    for (size_t q = 0; q < m.size(); ++q) mean[q] += m[q] / n;
+  }
+  return mean;
 }
 
 EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequences,

@@ -37,7 +37,9 @@ struct EngineComparison {
   EngineTaa taa;
   std::vector<std::string> scenes;  // scene specs or files
   // "static": the still scene in steady state (after the warm-up); "cut":
-  // the still scene's first frames after a cut (no warm-up); "random-pan":
+  // the still scene's first frames after a cut (no warm-up), each measure
+  // the mean over every phase of the sequence the cut can fall on (the
+  // sequence started at each of its frames in turn); "random-pan":
   // each scene its own pan, random_pan_velocities(M, max_speed, seed); else
   // a motion spec (render/motion.h) for every scene.
   std::string motion = "static";
@@ -86,15 +88,20 @@ class PreparedScenes {
   PreparedScenes(const EngineComparison& comparison, const ReferenceSource& references);
   size_t size() const { return runs_.size(); }
   const std::string& motion(size_t scene) const { return motions_[scene]; }
-  // One sequence on scene i under the preset.
+  // One sequence on scene i under the preset (after a cut: the mean over
+  // its starting phases).
   ComparisonMeasures render(size_t scene, const Sequence& s, const EngineTaa& taa);
 
  private:
   std::vector<EngineRun> runs_;
   std::vector<std::string> motions_;
+  bool cut_ = false;
   ReferenceSource source_;
   std::vector<std::map<uint64_t, Image>> memo_;  // per scene, by frame seed
 };
+
+// The sequence started at frame `phase`: frames phase, phase + 1, ... in turn.
+Sequence started_at(const Sequence& s, int phase);
 
 // progress: (renders done, renders, "SEQUENCE on SCENE") after each render.
 EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequences,

@@ -26,6 +26,34 @@ EngineComparison small(const std::string& motion) {
   return c;
 }
 
+// After a cut, a measure is its mean over the phases the cut can fall on:
+// the sequence started at each of its frames, rendered from an empty history.
+TEST(EngineComparison, ACutIsTheMeanOverEveryStartingPhase) {
+  const Sequence s = make_sequence("r2:frames=3");
+  const EngineComparison c = small("cut");
+  const EngineComparisonResult r = compare_under_engine({s, s}, c, testing::centre_reference);
+  EngineRun run;
+  run.scene = resolve_scene(c.scenes[2], 16, 16);
+  run.motion = make_motion("static", 16, 16);
+  run.width = run.height = 16;
+  run.frames = 4;
+  run.warmup = 0;
+  run.reference = c.reference;
+  double rmse = 0, flicker = 0, flip = 0;
+  for (int phase = 0; phase < 3; ++phase) {
+    const Sequence started = started_at(s, phase);
+    EXPECT_EQ(started.frames[0].sets[0][0].x, s.frames[static_cast<size_t>(phase)].sets[0][0].x);
+    const EngineResult e = render_engine_taa(run, started, c.taa, {}, testing::centre_reference);
+    rmse += e.total.rmse / 3;
+    flicker += e.flicker / 3;
+    flip += e.mean_flip / 3;
+  }
+  EXPECT_DOUBLE_EQ(r.scenes[2].measures[0][0], rmse);
+  EXPECT_DOUBLE_EQ(r.scenes[2].measures[0][1], flicker);
+  EXPECT_DOUBLE_EQ(r.scenes[2].measures[0][2], flip);
+  EXPECT_EQ(r.scenes[2].measures[0], r.scenes[2].measures[1]);  // the same sequence twice
+}
+
 // Every scene's measures are the engine's own render of it, and every
 // comparison is compare_paired of those measures.
 TEST(EngineComparison, ItsMeasuresAreTheRendersAndItsComparisonsThePairedStatistics) {
