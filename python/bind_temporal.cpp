@@ -312,7 +312,8 @@ random-shapes:count=shapes,seed=seed+i) under the same motion ("static",
 "cut": the frames after a cut, averaged over every phase it can fall on,
 "random-pan": each scene its own pan within max_speed from seed, or a
 motion spec). A dict with the keys of `aapat sequence compare --json`:
-scenes [{scene, motion, rows [{sequence, rmse, flicker, flip}]}] and
+scenes [{scene, motion, rows [{sequence, rmse, flicker, flip, after a cut
+worst_phase {rmse, flicker, flip}}]}] and
 against_first [{sequence, against, rmse|flicker|flip: {lower, ties, scenes,
 mean_difference, low, high, mean_ratio, sign_p}}] (a paired bootstrap interval
 over the scenes and an exact sign test). progress: a callable f(done, total,

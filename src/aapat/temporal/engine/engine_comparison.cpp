@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "aapat/io/scene_json.h"
 #include "aapat/render/animation.h"
 #include "aapat/render/motion.h"
@@ -84,7 +86,8 @@ PreparedScenes::PreparedScenes(const EngineComparison& c, const ReferenceSource&
   }
 }
 
-ComparisonMeasures PreparedScenes::render(size_t scene, const Sequence& s, const EngineTaa& taa) {
+ComparisonMeasures PreparedScenes::render(size_t scene, const Sequence& s, const EngineTaa& taa,
+                                          ComparisonMeasures* worst_phase) {
   std::map<uint64_t, Image>& memo = memo_[scene];
   const ReferenceSource remembered = [&](const Scene& sc, int w, int h,
                                          const ReferenceSettings& ref, double offset) {
@@ -94,17 +97,24 @@ ComparisonMeasures PreparedScenes::render(size_t scene, const Sequence& s, const
   };
   if (!cut_) {
     const EngineResult e = render_engine_taa(runs_[scene], s, taa, {}, remembered);
-    return {e.total.rmse, e.flicker, e.mean_flip};
+    const ComparisonMeasures m{e.total.rmse, e.flicker, e.mean_flip};
+    if (worst_phase) *worst_phase = m;
+    return m;
   }
-  // A cut falls on any phase: every start, each measure's mean over them.
-  ComparisonMeasures mean{};
+  // A cut falls on any phase: every start, each measure's mean over them
+  // and its largest.
+  ComparisonMeasures mean{}, worst{};
   const int n = s.period();
   for (int phase = 0; phase < n; ++phase) {
     const EngineResult e =
         render_engine_taa(runs_[scene], started_at(s, phase), taa, {}, remembered);
     const ComparisonMeasures m{e.total.rmse, e.flicker, e.mean_flip};
-    for (size_t q = 0; q < m.size(); ++q) mean[q] += m[q] / n;
+    for (size_t q = 0; q < m.size(); ++q) {
+      mean[q] += m[q] / n;
+      worst[q] = phase == 0 ? m[q] : std::max(worst[q], m[q]);
+    }
   }
+  if (worst_phase) *worst_phase = worst;
   return mean;
 }
 
@@ -119,9 +129,11 @@ EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequenc
   const int renders = static_cast<int>(sequences.size() * c.scenes.size());
   int done = 0;
   for (size_t m = 0; m < c.scenes.size(); ++m) {
-    ComparedScene scene{c.scenes[m], prepared.motion(m), {}};
+    ComparedScene scene{c.scenes[m], prepared.motion(m), {}, {}};
     for (const Sequence& s : sequences) {
-      scene.measures.push_back(prepared.render(m, s, c.taa));
+      ComparisonMeasures worst{};
+      scene.measures.push_back(prepared.render(m, s, c.taa, &worst));
+      if (prepared.cut()) scene.worst_phase.push_back(worst);
       if (progress) progress(++done, renders, fmt::format("{} on {}", s.name, c.scenes[m]));
     }
     r.scenes.push_back(std::move(scene));
@@ -163,6 +175,12 @@ JsonObject engine_comparison_json(const EngineComparison& c, const EngineCompari
       JsonObject row{{"sequence", r.sequences[k]}};
       for (size_t q = 0; q < kComparisonMeasures.size(); ++q)
         row[kComparisonMeasures[q]] = s.measures[k][q];
+      if (!s.worst_phase.empty()) {
+        JsonObject worst;
+        for (size_t q = 0; q < kComparisonMeasures.size(); ++q)
+          worst[kComparisonMeasures[q]] = s.worst_phase[k][q];
+        row["worst_phase"] = worst;
+      }
       rows.push_back(row);
     }
     scenes.push_back(JsonObject{{"scene", s.scene}, {"motion", s.motion}, {"rows", rows}});

@@ -55,6 +55,8 @@ struct EngineComparison {
 struct ComparedScene {
   std::string scene, motion;
   std::vector<ComparisonMeasures> measures;  // per sequence
+  // After a cut, per sequence: each measure at its worst starting phase.
+  std::vector<ComparisonMeasures> worst_phase;
 };
 
 struct EngineComparisonResult {
@@ -89,8 +91,10 @@ class PreparedScenes {
   size_t size() const { return runs_.size(); }
   const std::string& motion(size_t scene) const { return motions_[scene]; }
   // One sequence on scene i under the preset (after a cut: the mean over
-  // its starting phases).
-  ComparisonMeasures render(size_t scene, const Sequence& s, const EngineTaa& taa);
+  // its starting phases, and each measure's largest into `worst_phase`).
+  ComparisonMeasures render(size_t scene, const Sequence& s, const EngineTaa& taa,
+                            ComparisonMeasures* worst_phase = nullptr);
+  bool cut() const { return cut_; }
 
  private:
   std::vector<EngineRun> runs_;
@@ -112,7 +116,8 @@ EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequenc
 // `aapat sequence compare --json` and Python's sequence_compare: the settings
 // (taa, taa_settings, ratio, motion, size, frames, warmup, reference,
 // resamples, confidence), measures, sequences, scenes [{scene, motion,
-// rows [{sequence, rmse, flicker, flip}]}], and against_first [{sequence,
+// rows [{sequence, rmse, flicker, flip, after a cut worst_phase {rmse,
+// flicker, flip}}]}], and against_first [{sequence,
 // against, MEASURE: {lower, ties, scenes, mean_difference, low, high,
 // mean_ratio, sign_p}}].
 JsonObject engine_comparison_json(const EngineComparison& c, const EngineComparisonResult& r);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "aapat/io/scene_json.h"
@@ -39,7 +40,7 @@ TEST(EngineComparison, ACutIsTheMeanOverEveryStartingPhase) {
   run.frames = 4;
   run.warmup = 0;
   run.reference = c.reference;
-  double rmse = 0, flicker = 0, flip = 0;
+  double rmse = 0, flicker = 0, flip = 0, worst_rmse = 0, worst_flip = 0;
   for (int phase = 0; phase < 3; ++phase) {
     const Sequence started = started_at(s, phase);
     EXPECT_EQ(started.frames[0].sets[0][0].x, s.frames[static_cast<size_t>(phase)].sets[0][0].x);
@@ -47,10 +48,22 @@ TEST(EngineComparison, ACutIsTheMeanOverEveryStartingPhase) {
     rmse += e.total.rmse / 3;
     flicker += e.flicker / 3;
     flip += e.mean_flip / 3;
+    worst_rmse = std::max(worst_rmse, e.total.rmse);
+    worst_flip = std::max(worst_flip, e.mean_flip);
   }
   EXPECT_DOUBLE_EQ(r.scenes[2].measures[0][0], rmse);
   EXPECT_DOUBLE_EQ(r.scenes[2].measures[0][1], flicker);
   EXPECT_DOUBLE_EQ(r.scenes[2].measures[0][2], flip);
+  ASSERT_EQ(r.scenes[2].worst_phase.size(), 2u);
+  EXPECT_EQ(r.scenes[2].worst_phase[0][0], worst_rmse);
+  EXPECT_EQ(r.scenes[2].worst_phase[0][2], worst_flip);
+  EXPECT_GE(worst_rmse, rmse);
+  const JsonObject json = engine_comparison_json(c, r);
+  EXPECT_EQ(json["scenes"][2]["rows"][0]["worst_phase"]["rmse"].get<double>(), worst_rmse);
+  // Other motions have no phases to be worst at.
+  const EngineComparisonResult still =
+      compare_under_engine({s, s}, small("static"), testing::centre_reference);
+  EXPECT_TRUE(still.scenes[0].worst_phase.empty());
   EXPECT_EQ(r.scenes[2].measures[0], r.scenes[2].measures[1]);  // the same sequence twice
 }
 
