@@ -123,7 +123,7 @@ bool generic_only(const std::string& key) {
 TaaResolve parse_taa_resolve(std::string_view name) {
   if (name == "generic") return TaaResolve::generic;
   if (name == "fsr2-2.2") return TaaResolve::fsr2_2;
-  throw ParameterError("resolve", fmt::format(" '{}': known are generic, fsr2-2.2", name));
+  throw ParameterError("resolve", fmt::format(" {}: known are generic, fsr2-2.2", name));
 }
 
 std::string_view taa_resolve_name(TaaResolve r) {
@@ -214,7 +214,18 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
     t.jitter = fmt::format("halton:frames={},start=1", phases);
   }
   for (const auto& [key, value] : overrides) {
-    apply(t, key, value);
+    // A value out of range names the override as given (--taa-set KEY=VALUE), not a flag.
+    try {
+      apply(t, key, value);
+    } catch (const ParameterError& e) {
+      // The detail repeats the value first (" VALUE: ..."): said once.
+      const std::string repeated = " " + value;
+      const std::string_view detail = e.detail();
+      throw ParameterError(
+          "taa-set",
+          fmt::format(" {}={}{}", key, value,
+                      detail.starts_with(repeated) ? detail.substr(repeated.size()) : detail));
+    }
     t.overrides.emplace_back(key, value);
   }
   // No setting is taken and then ignored: FSR 2.2's arithmetic has none of the generic ones.

@@ -77,6 +77,14 @@ TEST(EngineTaaSettings, SettingsAPresetDoesNotReadAreRefused) {
   for (const char* sign : {"0", "2", "-0.5", "nan", "x"})
     EXPECT_THROW(make_engine_taa("ue4", 1, {{"jitter_sign", sign}}), Error) << sign;
   EXPECT_EQ(make_engine_taa("ue4", 1, {{"jitter_sign", "1"}}).jitter_sign, 1);
+  // A value out of range is named as the override it came in, not as a flag.
+  try {
+    make_engine_taa("godot", 1, {{"gamma", "-1"}});
+    ADD_FAILURE() << "gamma=-1 was taken";
+  } catch (const ParameterError& e) {
+    EXPECT_EQ(e.parameter(), "taa-set");
+    EXPECT_EQ(e.detail(), " gamma=-1: must lie in [0, 16]");
+  }
   // engine_samples mirrors a sequence by the sign, and only then.
   const Sequence s = make_sequence("r2:frames=3");
   const Sequence minus = engine_samples(s, make_engine_taa("fsr2", 1.5));
