@@ -55,5 +55,11 @@ Vec2 previous_point(const Motion& motion, Vec2 p);
 // (the background, which is uniform, stays), and gives NaN where that point
 // was hidden or behind the camera then (a disocclusion: no history).
 Vec2 previous_point(const Motion& motion, const Scene& now, const Scene& before, Vec2 p);
+// Whether a point from previous_point lies on a width x height image (pixel
+// centres at integers, edges at -1/2 and side - 1/2): where a history exists.
+// False for NaN (a disocclusion).
+inline bool on_image(Vec2 q, int width, int height) {
+  return q.x >= -0.5 && q.x <= width - 0.5 && q.y >= -0.5 && q.y <= height - 0.5;
+}
 
 }  // namespace aapat

@@ -95,16 +95,10 @@ ComparisonMeasures PreparedScenes::render(size_t scene, const Sequence& s, const
     if (it != memo.end()) return it->second;
     return memo.emplace(ref.seed, source_(sc, w, h, ref, offset)).first->second;
   };
-  if (!cut_) {
-    const EngineResult e = render_engine_taa(runs_[scene], s, taa, {}, remembered);
-    const ComparisonMeasures m{e.total.rmse, e.flicker, e.mean_flip};
-    if (worst_phase) *worst_phase = m;
-    return m;
-  }
   // A cut falls on any phase: every start, each measure's mean over them
-  // and its largest.
+  // and its largest; otherwise the sequence as it is (one start).
   ComparisonMeasures mean{}, worst{};
-  const int n = s.period();
+  const int n = cut_ ? s.period() : 1;
   for (int phase = 0; phase < n; ++phase) {
     const EngineResult e =
         render_engine_taa(runs_[scene], started_at(s, phase), taa, {}, remembered);

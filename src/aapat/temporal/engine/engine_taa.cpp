@@ -130,7 +130,7 @@ void blend(const Plane& current, const Plane& history, const std::vector<int>& c
       const double* c = &current.values[at * ch];
       double* o = &out.values[at * ch];
       const Vec2 q = previous_point(motion, now, before, {double(x), double(y)});
-      const bool valid = q.x >= -0.5 && q.x <= w - 0.5 && q.y >= -0.5 && q.y <= h - 0.5;
+      const bool valid = on_image(q, w, h);
       if (!valid) {
         for (int k = 0; k < ch; ++k) o[k] = std::clamp(c[k], 0.0, 1.0);
         out_count[at] = std::min(1, std::max(cap, 1));
@@ -176,7 +176,7 @@ void fsr2_frame(const RenderSamples& s, Vec2 jitter, double ratio, const Plane* 
       const Fsr2Samples in = fsr2_gather(frame, x, y, jitter, ratio);
       const Vec2 q = previous_point(motion, now, before, {double(x), double(y)});
       const double velocity = std::hypot(q.x - x, q.y - y);
-      const bool valid = history && q.x >= -0.5 && q.x <= w - 0.5 && q.y >= -0.5 && q.y <= h - 0.5;
+      const bool valid = history && on_image(q, w, h);
       Fsr2Pixel previous;
       if (valid) previous = fsr2_history_sample(*history, q);
       const Fsr2Pixel p = fsr2_accumulate(in, valid ? &previous : nullptr, ratio, velocity);
@@ -282,14 +282,15 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
                  fsr2_history.values.empty() ? nullptr : &fsr2_history, run.motion, scene,
                  previous_scene, next, fsr2_next);
       fsr2_history = fsr2_next;
-    } else if (history.values.empty()) {
-      const Plane current = reconstruct(samples, t.x, t.y, w, h, taa.upscale.ratio);
-      for (size_t i = 0; i < next.values.size(); ++i)
-        next.values[i] = std::clamp(current.values[i], 0.0, 1.0);
-      std::fill(next_count.begin(), next_count.end(), taa.reset_count);
     } else {
       const Plane current = reconstruct(samples, t.x, t.y, w, h, taa.upscale.ratio);
-      blend(current, history, count, run.motion, scene, previous_scene, taa, next, next_count);
+      if (history.values.empty()) {
+        for (size_t i = 0; i < next.values.size(); ++i)
+          next.values[i] = std::clamp(current.values[i], 0.0, 1.0);
+        std::fill(next_count.begin(), next_count.end(), taa.reset_count);
+      } else {
+        blend(current, history, count, run.motion, scene, previous_scene, taa, next, next_count);
+      }
     }
     history = next;
     count = next_count;

@@ -126,10 +126,6 @@ TaaResolve parse_taa_resolve(std::string_view name) {
   throw ParameterError("resolve", fmt::format(" {}: known are generic, fsr2-2.2", name));
 }
 
-std::string_view taa_resolve_name(TaaResolve r) {
-  return r == TaaResolve::fsr2_2 ? "fsr2-2.2" : "generic";
-}
-
 Sequence engine_samples(const Sequence& s, const EngineTaa& t) {
   if (t.jitter_sign == 1) return s;
   Sequence mirrored = s;

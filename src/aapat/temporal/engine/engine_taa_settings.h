@@ -39,7 +39,6 @@ namespace aapat {
 
 enum class TaaResolve { generic, fsr2_2 };
 TaaResolve parse_taa_resolve(std::string_view name);  // generic, fsr2-2.2
-std::string_view taa_resolve_name(TaaResolve r);
 
 struct EngineTaa {
   std::string preset = "custom";

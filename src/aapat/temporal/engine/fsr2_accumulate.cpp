@@ -124,12 +124,11 @@ Fsr2Pixel fsr2_history_sample(const Plane& history, Vec2 p) {
   const double px = std::clamp(p.x, 0.0, static_cast<double>(w)),
                py = std::clamp(p.y, 0.0, static_cast<double>(h));
   const int i = static_cast<int>(std::floor(px)), j = static_cast<int>(std::floor(py));
-  // ClampCoord: an offset clamps toward its own side only.
+  // ClampCoord: an offset clamps toward its own side only (offset 0 past
+  // the last texel only at p = size, off the image: kept on it).
   auto coord = [](int base, int offset, int size) {
     const int r = base + offset;
-    if (offset < 0) return std::max(r, 0);
-    if (offset > 0) return std::min(r, size - 1);
-    return std::min(r, size - 1);  // past the last texel only at p = size, off the image
+    return offset < 0 ? std::max(r, 0) : std::min(r, size - 1);
   };
   const std::array<double, 4> wx = fsr_lanczos2_row(px - i), wy = fsr_lanczos2_row(py - j);
   double out[4] = {0, 0, 0, 0}, lo[4], hi[4];
@@ -177,8 +176,8 @@ Fsr2Pixel fsr2_accumulate(const Fsr2Samples& s, const Fsr2Pixel* history, double
     Fsr2Colour colour;
     rgb_to_ycocg(history->rgb.data(), colour.data());
     // RectifyHistory: the variance box scaled by min(20, R^6) at rest, 1 at 20 px/frame.
-    const double scale = fsr_lerp(std::min(20.0, std::pow(ratio * ratio, 3.0)), 1.0,
-                                  std::max(0.0, fsr_saturate(velocity / 20)));
+    const double scale =
+        fsr_lerp(std::min(20.0, std::pow(ratio * ratio, 3.0)), 1.0, fsr_saturate(velocity / 20));
     Fsr2Colour lo, hi;
     bool outside = false;
     for (size_t c = 0; c < 3; ++c) {

@@ -25,7 +25,7 @@ double rendered_flicker(const std::vector<int>& error, const std::vector<int>& p
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const Vec2 q = previous_point(motion, now, before, {double(x), double(y)});
-      if (!(q.x >= -0.5 && q.x <= width - 0.5 && q.y >= -0.5 && q.y <= height - 0.5)) continue;
+      if (!on_image(q, width, height)) continue;
       const double fx = std::floor(q.x), fy = std::floor(q.y), tx = q.x - fx, ty = q.y - fy;
       const int i = static_cast<int>(fx), j = static_cast<int>(fy);
       for (int c = 0; c < channels; ++c) {

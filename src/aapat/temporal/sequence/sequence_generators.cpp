@@ -158,6 +158,15 @@ double radical_inverse_of(uint64_t i, int base) {
   return r;
 }
 
+namespace {
+
+// Halton point i in bases b1, b2 as a jitter about the pixel centre.
+Vec2 halton_jitter(uint64_t i, int b1, int b2) {
+  return {radical_inverse_of(i, b1) - 0.5, radical_inverse_of(i, b2) - 0.5};
+}
+
+}  // namespace
+
 const SequenceRegistry& sequence_registry() {
   static const SequenceRegistry kRegistry(
       "sequence",
@@ -174,8 +183,7 @@ const SequenceRegistry& sequence_registry() {
                     start = s.whole("start", 0, 1 << 30);
           std::vector<Vec2> at;
           for (int i = start; i < start + frames; ++i)
-            at.push_back({radical_inverse_of(uint64_t(i), b1) - 0.5,
-                          radical_inverse_of(uint64_t(i), b2) - 0.5});
+            at.push_back(halton_jitter(uint64_t(i), b1, b2));
           return jitter_sequence(s.canonical(), "Halton jitter", at);
         }},
        {{"bevy-halton",
@@ -185,9 +193,7 @@ const SequenceRegistry& sequence_registry() {
         [](const Spec& s, const std::optional<Pattern>&) {
           const int frames = s.whole("frames", 1, kMaxSequenceFrames);
           std::vector<Vec2> at{{0, 0}};
-          for (int i = 1; i < frames; ++i)
-            at.push_back({radical_inverse_of(uint64_t(i), 2) - 0.5,
-                          radical_inverse_of(uint64_t(i), 3) - 0.5});
+          for (int i = 1; i < frames; ++i) at.push_back(halton_jitter(uint64_t(i), 2, 3));
           return jitter_sequence(s.canonical(), "Bevy's Halton jitter", at);
         }},
        {{"ue4-halton",
