@@ -276,6 +276,24 @@ lowest_change, highest_change}. progress: a
 callable f(done, total, note) called as each sequence and velocity finishes,
 or None.)doc"));
 
+  // The motions' texts are the library's (kComparisonMotions).
+  static const std::string compare_doc =
+      R"doc(aapat sequence compare: the rendered comparison study. Each sequence (a
+Sequence or a spec; the first is the baseline) is rendered through the engine
+preset's full pipeline (settings: overrides by key) at ratio on the same
+scenes (a list of scene specs or files, or random_scenes generated
+random-shapes:count=shapes,seed=seed+i) under the same motion: )doc" +
+      comparison_motion_help() +
+      R"doc(. A dict with the keys of `aapat sequence compare --json`:
+scenes [{scene, motion, rows [{sequence, rmse, flicker, flip, after a cut
+worst_phase {rmse, flicker, flip} and worst_phase_at, resonant
+worst_velocity, worst_velocity_at and per_velocity}]}], velocities (resonant,
+render px/frame) and against_first (after a cut or resonant also
+against_first_worst, on each scene's worst) [{sequence, against,
+rmse|flicker|flip: {lower, ties, scenes, mean_difference, low, high,
+mean_ratio, sign_p}}] (a paired bootstrap interval over the scenes and an
+exact sign test). progress: a callable f(done, total, note) called after each
+render, or None.)doc";
   m.def(
       "sequence_compare",
       [](const std::vector<py::object>& sequences, const std::string& taa, double ratio,
@@ -304,20 +322,7 @@ or None.)doc"));
       py::arg("reference_samples") = EngineComparison{}.reference.samples,
       py::arg("reference_filter") = EngineComparison{}.reference.filter,
       py::arg("resamples") = EngineComparison{}.resamples, py::arg("progress") = py::none(),
-      R"doc(aapat sequence compare: the rendered comparison study. Each sequence (a
-Sequence or a spec; the first is the baseline) is rendered through the engine
-preset's full pipeline (settings: overrides by key) at ratio on the same
-scenes (a list of scene specs or files, or random_scenes generated
-random-shapes:count=shapes,seed=seed+i) under the same motion ("static",
-"cut": the frames after a cut, averaged over every phase it can fall on,
-"random-pan": each scene its own pan within max_speed from seed, or a
-motion spec). A dict with the keys of `aapat sequence compare --json`:
-scenes [{scene, motion, rows [{sequence, rmse, flicker, flip, after a cut
-worst_phase {rmse, flicker, flip}}]}] and
-against_first [{sequence, against, rmse|flicker|flip: {lower, ties, scenes,
-mean_difference, low, high, mean_ratio, sign_p}}] (a paired bootstrap interval
-over the scenes and an exact sign test). progress: a callable f(done, total,
-note) called after each render, or None.)doc");
+      compare_doc.c_str());
 
   m.def(
       "sequence_search",

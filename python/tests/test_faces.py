@@ -523,6 +523,27 @@ def test_sequence_compare_is_the_cli_study(aapat_cli):
         aapat.sequence_compare(["r2", "halton"], taa="bevy")
 
 
+def test_sequence_compare_at_the_resonances_is_the_cli_study(aapat_cli):
+    """At the resonant velocities both faces give the same grid, the same
+    worst per scene and the same comparison of the worst."""
+    args = ["halton:frames=4", "r2:frames=4", "--taa", "fsr2", "--ratio", "1.5",
+            "--random-scenes", "2", "--shapes", "3", "--motion", "resonant", "--size", "10",
+            "--frames", "2", "--warmup", "1", "--reference-samples", "1", "--resamples", "50"]
+    cli = cli_json(aapat_cli, "sequence", "compare", *args)
+    py = aapat.sequence_compare(["halton:frames=4", "r2:frames=4"], taa="fsr2", ratio=1.5,
+                                random_scenes=2, shapes=3, motion="resonant", size=(10, 10),
+                                frames=2, warmup=1, reference_samples=1, resamples=50)
+    for key in ("velocities", "scenes", "against_first", "against_first_worst"):
+        assert py[key] == cli[key], key
+    assert len(cli["velocities"]) == 38 and [0.5, 1 / 3] in cli["velocities"]
+    row = cli["scenes"][0]["rows"][1]
+    assert row["worst_velocity"]["flip"] == max(v["flip"] for v in row["per_velocity"])
+    worst = cli["against_first_worst"][0]["rmse"]
+    lower = sum(s["rows"][1]["worst_velocity"]["rmse"] < s["rows"][0]["worst_velocity"]["rmse"]
+                for s in cli["scenes"])
+    assert worst["lower"] == lower
+
+
 def test_sequence_search_is_the_cli_search(aapat_cli, tmp_path):
     """The rendered search on both faces: the same tries, the same sequence."""
     out = str(tmp_path / "s.json")

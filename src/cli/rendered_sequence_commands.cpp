@@ -50,12 +50,7 @@ struct ComparisonOptions {
                     kMaxComparisonScenes));
     scene->excludes(random);
     cmd->add_option("--shapes", shapes, "--random-scenes: shapes a scene")->capture_default_str();
-    cmd->add_option("--motion", motion,
-                    "static (steady state), cut (the frames after a cut, averaged over every phase "
-                    "it can fall on), random-pan (each scene "
-                    "its own pan from --seed, components within --max-speed), or a motion spec "
-                    "for every scene")
-        ->capture_default_str();
+    cmd->add_option("--motion", motion, comparison_motion_help())->capture_default_str();
     cmd->add_option("--max-speed", max_speed, "random-pan: the largest component, px/frame")
         ->capture_default_str();
     add_seed_option(cmd, seed, "the random scenes' first seed, the pans' and the bootstrap's")
@@ -153,15 +148,22 @@ void add_sequence_compare(CLI::App* parent, std::function<void(std::ostream&)>& 
       }
       out << "\n";
     }
-    for (size_t k = 1; k < r.sequences.size(); ++k)
-      for (size_t q = 0; q < kComparisonMeasures.size(); ++q) {
-        const PairedComparison& p = r.against_first[k - 1][q];
-        out << fmt::format(
-            "{} against {}, {}: lower in {} of {} scenes ({} ties), mean difference {:+.5f} "
-            "[{:+.5f}, {:+.5f}] ({:g} % interval), ratio {:.4f}, sign test p = {:.3g}\n",
-            r.sequences[k], r.sequences[0], kComparisonMeasures[q], p.lower, p.items, p.ties,
-            p.mean_difference, p.low, p.high, 100 * c.confidence, p.mean_ratio, p.sign_p);
-      }
+    // The means, then (after a cut or at the resonances) each scene's worst.
+    const auto against = [&](const std::vector<SequencePairs>& comparisons,
+                             const char* what) {
+      for (size_t k = 1; k <= comparisons.size(); ++k)
+        for (size_t q = 0; q < kComparisonMeasures.size(); ++q) {
+          const PairedComparison& p = comparisons[k - 1][q];
+          out << fmt::format(
+              "{} against {}, {}{}: lower in {} of {} scenes ({} ties), mean difference {:+.5f} "
+              "[{:+.5f}, {:+.5f}] ({:g} % interval), ratio {:.4f}, sign test p = {:.3g}\n",
+              r.sequences[k], r.sequences[0], what, kComparisonMeasures[q], p.lower, p.items,
+              p.ties, p.mean_difference, p.low, p.high, 100 * c.confidence, p.mean_ratio,
+              p.sign_p);
+        }
+    };
+    against(r.against_first, "");
+    against(r.against_first_worst, c.motion == "cut" ? "worst phase's " : "worst velocity's ");
   };
 }
 

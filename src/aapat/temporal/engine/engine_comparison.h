@@ -33,15 +33,38 @@ inline constexpr std::array<const char*, 3> kComparisonMeasures = {"rmse", "flic
 using ComparisonMeasures = std::array<double, kComparisonMeasures.size()>;
 inline constexpr int kMaxComparisonScenes = 1024;
 
+// The motions a comparison takes by name, each with what it measures (the
+// faces' help is comparison_motion_help()):
+//  - static: the still scene in steady state (after the warm-up);
+//  - cut: the still scene's first frames after a cut (no warm-up), each
+//    measure the mean over every phase of the sequence the cut can fall on
+//    (the sequence started at each of its frames in turn), and its worst;
+//  - random-pan: each scene its own pan, random_pan_velocities(M,
+//    max_speed, seed);
+//  - resonant: each scene panned at every velocity of resonant_velocities()
+//    (render pixels per frame, times the ratio on the display), in steady
+//    state, each measure the mean over them and its worst.
+struct ComparisonMotion {
+  const char* name;
+  const char* summary;
+};
+inline constexpr std::array<ComparisonMotion, 4> kComparisonMotions = {{
+    {"static", "the still scene in steady state"},
+    {"cut", "the frames after a cut, averaged over every phase it can fall on, and at the worst"},
+    {"random-pan", "each scene its own pan from the seed, components within the max speed"},
+    {"resonant",
+     "every scene panned at each resonant velocity (0, 1/4, 1/3, 1/2 render px/frame per axis, "
+     "both signs, and R2's step), averaged over them, and at the worst"},
+}};
+// "static (...), cut (...), random-pan (...), resonant (...), or a motion
+// spec for every scene".
+std::string comparison_motion_help();
+
 struct EngineComparison {
   EngineTaa taa;
   std::vector<std::string> scenes;  // scene specs or files
-  // "static": the still scene in steady state (after the warm-up); "cut":
-  // the still scene's first frames after a cut (no warm-up), each measure
-  // the mean over every phase of the sequence the cut can fall on (the
-  // sequence started at each of its frames in turn); "random-pan":
-  // each scene its own pan, random_pan_velocities(M, max_speed, seed); else
-  // a motion spec (render/motion.h) for every scene.
+  // A name of kComparisonMotions or a motion spec (render/motion.h) for
+  // every scene.
   std::string motion = "static";
   int width = 64, height = 64;
   int frames = 16, warmup = 64;
@@ -52,18 +75,31 @@ struct EngineComparison {
   double confidence = 0.95;
 };
 
+// One sequence on one scene rendered several ways (after a cut: from every
+// starting phase; resonant: at every velocity): each way's measures, and
+// per measure the largest and which way gave it.
+struct MeasureSpread {
+  std::vector<ComparisonMeasures> each;
+  ComparisonMeasures worst{};
+  std::array<int, kComparisonMeasures.size()> worst_at{};
+};
+
 struct ComparedScene {
   std::string scene, motion;
-  std::vector<ComparisonMeasures> measures;  // per sequence
-  // After a cut, per sequence: each measure at its worst starting phase.
-  std::vector<ComparisonMeasures> worst_phase;
+  std::vector<ComparisonMeasures> measures;  // per sequence (the mean over the ways)
+  // After a cut or at the resonances, per sequence: every phase or velocity.
+  std::vector<MeasureSpread> spread;
 };
+
+using SequencePairs = std::array<PairedComparison, kComparisonMeasures.size()>;
 
 struct EngineComparisonResult {
   std::vector<std::string> sequences;
+  std::vector<Vec2> velocities;  // resonant: render pixels per frame
   std::vector<ComparedScene> scenes;
-  // Each sequence after the first against the first, per measure.
-  std::vector<std::array<PairedComparison, kComparisonMeasures.size()>> against_first;
+  // Each sequence after the first against the first, per measure: the
+  // means, and (after a cut or at the resonances) each scene's worst.
+  std::vector<SequencePairs> against_first, against_first_worst;
 };
 
 // "random-shapes:count=SHAPES,seed=SEED+i" for i = 0 .. count-1. Throws
@@ -88,20 +124,27 @@ void validate(const EngineComparison& c, size_t sequences);
 class PreparedScenes {
  public:
   PreparedScenes(const EngineComparison& comparison, const ReferenceSource& references);
-  size_t size() const { return runs_.size(); }
+  size_t size() const { return scenes_.size(); }
   const std::string& motion(size_t scene) const { return motions_[scene]; }
-  // One sequence on scene i under the preset (after a cut: the mean over
-  // its starting phases, and each measure's largest into `worst_phase`).
+  // One sequence on scene i under the preset: the mean over the ways it is
+  // rendered (after a cut: its starting phases; resonant: the velocities;
+  // else one), and every way's measures into `spread`.
   ComparisonMeasures render(size_t scene, const Sequence& s, const EngineTaa& taa,
-                            ComparisonMeasures* worst_phase = nullptr);
-  bool cut() const { return cut_; }
+                            MeasureSpread* spread = nullptr);
+  // Whether a scene is rendered several ways (a cut, the resonances).
+  bool spread() const { return cut_ || resonant_; }
+  // Drops scene i's references (a comparison done with it).
+  void forget(size_t scene);
 
  private:
-  std::vector<EngineRun> runs_;
+  struct Way {
+    EngineRun run;
+    std::map<uint64_t, Image> memo;  // references by frame seed
+  };
+  std::vector<std::vector<Way>> scenes_;  // per scene, per velocity
   std::vector<std::string> motions_;
-  bool cut_ = false;
+  bool cut_ = false, resonant_ = false;
   ReferenceSource source_;
-  std::vector<std::map<uint64_t, Image>> memo_;  // per scene, by frame seed
 };
 
 // The sequence started at frame `phase`: frames phase, phase + 1, ... in turn.
@@ -115,11 +158,14 @@ EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequenc
 
 // `aapat sequence compare --json` and Python's sequence_compare: the settings
 // (taa, taa_settings, ratio, motion, size, frames, warmup, reference,
-// resamples, confidence), measures, sequences, scenes [{scene, motion,
-// rows [{sequence, rmse, flicker, flip, after a cut worst_phase {rmse,
-// flicker, flip}}]}], and against_first [{sequence,
-// against, MEASURE: {lower, ties, scenes, mean_difference, low, high,
-// mean_ratio, sign_p}}].
+// resamples, confidence), measures, sequences, resonant: velocities [[x,
+// y]] (render px/frame), scenes [{scene, motion, rows [{sequence, rmse,
+// flicker, flip, after a cut: worst_phase {rmse, flicker, flip} and
+// worst_phase_at {MEASURE: phase}, resonant: worst_velocity {...} and
+// worst_velocity_at {MEASURE: [x, y]}, per_velocity [{rmse, flicker,
+// flip}]}]}], and against_first (and after a cut or resonant,
+// against_first_worst: each scene's worst) [{sequence, against, MEASURE:
+// {lower, ties, scenes, mean_difference, low, high, mean_ratio, sign_p}}].
 JsonObject engine_comparison_json(const EngineComparison& c, const EngineComparisonResult& r);
 
 // The settings every rendered comparison reports: taa, taa_settings, ratio,

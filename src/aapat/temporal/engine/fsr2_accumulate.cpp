@@ -21,20 +21,19 @@ double fsr_saturate(double x) {
   return std::clamp(x, 0.0, 1.0);
 }
 
-// ffx_fsr2_sample.h Lanczos2 (the reference form, which the history fetch uses).
-double fsr_lanczos2(double x) {
-  x = std::min(std::abs(x), 2.0);
-  if (x < kEpsilon) return 1;
-  const double a = kPi * x;
-  return (std::sin(a) / a) * (std::sin(0.5 * a) / (0.5 * a));
-}
-
-// ffx_fsr2_sample.h Lanczos2(c0, c1, c2, c3, t): four texels, normalized.
+// ffx_fsr2_sample.h Lanczos2(c0, c1, c2, c3, t): the reference form
+// sin(pi x) / (pi x) * sin(pi x / 2) / (pi x / 2) (1 within kEpsilon of 0)
+// at the four texels x = -1 - t, -t, 1 - t, 2 - t (t in [0, 1]),
+// normalized. The texels are a pixel apart, so sin(pi x) is +-sin(pi t)
+// and sin(pi x / 2) is +-sin or +-cos of pi t / 2: two trig calls, not eight.
 std::array<double, 4> fsr_lanczos2_row(double t) {
-  std::array<double, 4> w{fsr_lanczos2(-1 - t), fsr_lanczos2(-t), fsr_lanczos2(1 - t),
-                          fsr_lanczos2(2 - t)};
-  const double sum = w[0] + w[1] + w[2] + w[3];
-  for (double& x : w) x /= sum;
+  const double s = std::sin(0.5 * kPi * t), c = std::cos(0.5 * kPi * t), sp = 2 * s * c;
+  const std::array<double, 4> x{-1 - t, -t, 1 - t, 2 - t}, sines{-sp * c, sp * s, sp * c, -sp * s};
+  std::array<double, 4> w{};
+  double sum = 0;
+  for (size_t k = 0; k < 4; ++k)
+    sum += w[k] = std::abs(x[k]) < kEpsilon ? 1 : 2 * sines[k] / (kPi * kPi * x[k] * x[k]);
+  for (double& v : w) v /= sum;
   return w;
 }
 

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "aapat/generate/unit_random.h"
+#include "aapat/temporal/sequence/sequence_generators.h"
 
 namespace aapat {
 
@@ -27,6 +28,17 @@ std::vector<Vec2> random_pan_velocities(int count, double max_speed, uint64_t se
     const double x = draw();
     v = {x, draw()};
   }
+  return out;
+}
+
+std::vector<Vec2> resonant_velocities() {
+  const double axis[] = {0, 0.25, -0.25, 1.0 / 3, -1.0 / 3, 0.5};
+  std::vector<Vec2> out;
+  for (const double x : axis)
+    for (const double y : axis) out.push_back({x, y});
+  const Vec2 r2{1 / kPlasticNumber, 1 / (kPlasticNumber * kPlasticNumber)};
+  out.push_back(r2);
+  out.push_back({-r2.x, -r2.y});
   return out;
 }
 

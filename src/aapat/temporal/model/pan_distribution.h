@@ -22,6 +22,15 @@ inline constexpr double kDefaultRandomPanSpeed = 1.5;
 // ParameterError naming "random-velocities" or "max-speed".
 std::vector<Vec2> random_pan_velocities(int count, double max_speed, uint64_t seed);
 
+// The velocities at which the common jitters collapse (docs/temporal.md,
+// "What a jitter can deliver"), in render pixels per frame: every pair of
+// components from {0, 1/4, -1/4, 1/3, -1/3, 1/2} (Halton's base 2 pairs its
+// samples at 1/2, base 3 groups them in threes at 1/3, base-2 nets such as
+// Sobol's partly at 1/4; both signs, since which one lines the samples up
+// depends on the jitter's sign and the pan's direction), x before y, then
+// R2's own step (1/g, 1/g^2) and its negative. 38 velocities.
+std::vector<Vec2> resonant_velocities();
+
 // What `sequence pan` and Python's sequence_pan evaluate: the velocities
 // given (none given: default_pan_velocities(), unless random ones are
 // asked for), then `random_count` random ones (0: none).

@@ -228,7 +228,7 @@ const SequenceRegistry& sequence_registry() {
         [](const Spec& s, const std::optional<Pattern>&) {
           const int frames = s.whole("frames", 1, kMaxSequenceFrames),
                     start = s.whole("start", 0, 1 << 30);
-          const double g = 1.32471795724474602596;  // the real root of x^3 = x + 1
+          const double g = kPlasticNumber;
           std::vector<Vec2> at;
           for (int n = start; n < start + frames; ++n) {
             const double x = 0.5 + n / g, y = 0.5 + n / (g * g);

@@ -36,6 +36,9 @@
 
 namespace aapat {
 
+// The plastic number g, the real root of x^3 = x + 1: R2 steps by (1/g, 1/g^2).
+inline constexpr double kPlasticNumber = 1.32471795724474602596;
+
 // The radical inverse of i in base b (the Halton coordinate), in [0, 1).
 double radical_inverse_of(uint64_t i, int base);
 

@@ -58,7 +58,7 @@ TEST(SequenceGenerators, ResonantVelocitiesCollapseTheSequences) {
     for (int k = 1; k <= 2; ++k)
       EXPECT_TRUE(same(seen(halton, n, {0, 1.0 / 3}).y, seen(halton, n + k, {0, 1.0 / 3}).y));
   const Sequence r2 = make_sequence("r2:frames=16");
-  const double g = 1.32471795724474602596;  // the plastic number, x^3 = x + 1
+  const double g = kPlasticNumber;
   const Vec2 alpha{1 / g, 1 / (g * g)};
   for (int n = 1; n < 16; ++n) {
     EXPECT_NEAR(std::remainder(seen(r2, n, alpha).x - seen(r2, 0, alpha).x, 1.0), 0, 1e-9) << n;
@@ -67,7 +67,7 @@ TEST(SequenceGenerators, ResonantVelocitiesCollapseTheSequences) {
 }
 
 TEST(SequenceGenerators, R2IsThePlasticNumbersLattice) {
-  const double g = 1.32471795724474602596;
+  const double g = kPlasticNumber;
   EXPECT_NEAR(g * g * g, g + 1, 1e-15);
   const Sequence s = make_sequence("r2:frames=3");
   EXPECT_NEAR(offset(s, 0).x, std::fmod(0.5 + 1 / g, 1.0) - 0.5, 1e-15);
