@@ -149,8 +149,7 @@ void add_sequence_compare(CLI::App* parent, std::function<void(std::ostream&)>& 
       out << "\n";
     }
     // The means, then (after a cut or at the resonances) each scene's worst.
-    const auto against = [&](const std::vector<SequencePairs>& comparisons,
-                             const char* what) {
+    const auto against = [&](const std::vector<SequencePairs>& comparisons, const char* what) {
       for (size_t k = 1; k <= comparisons.size(); ++k)
         for (size_t q = 0; q < kComparisonMeasures.size(); ++q) {
           const PairedComparison& p = comparisons[k - 1][q];
@@ -158,8 +157,7 @@ void add_sequence_compare(CLI::App* parent, std::function<void(std::ostream&)>& 
               "{} against {}, {}{}: lower in {} of {} scenes ({} ties), mean difference {:+.5f} "
               "[{:+.5f}, {:+.5f}] ({:g} % interval), ratio {:.4f}, sign test p = {:.3g}\n",
               r.sequences[k], r.sequences[0], what, kComparisonMeasures[q], p.lower, p.items,
-              p.ties, p.mean_difference, p.low, p.high, 100 * c.confidence, p.mean_ratio,
-              p.sign_p);
+              p.ties, p.mean_difference, p.low, p.high, 100 * c.confidence, p.mean_ratio, p.sign_p);
         }
     };
     against(r.against_first, "");
