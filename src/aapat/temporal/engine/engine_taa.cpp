@@ -147,12 +147,15 @@ void blend(const Plane& current, const Plane& history, const std::vector<int>& c
           else
             nb[m] = v[0];
         }
+      // The pixel's motion in screen units (Godot's velocity is in uv).
+      const double gamma =
+          box_gamma(t, std::hypot((x - q.x) / w, (y - q.y) / static_cast<double>(h)));
       if (ch == 3) {
         rgb_to_ycocg(hist, tmp);
-        rectify(t.rectify, t.box, t.gamma, nb, 3, tmp);
+        rectify(t.rectify, t.box, gamma, nb, 3, tmp);
         ycocg_to_rgb(tmp, hist);
       } else {
-        rectify(t.rectify, t.box, t.gamma, nb, 1, hist);
+        rectify(t.rectify, t.box, gamma, nb, 1, hist);
       }
       const int qi = std::clamp(static_cast<int>(std::lround(q.x)), 0, w - 1),
                 qj = std::clamp(static_cast<int>(std::lround(q.y)), 0, h - 1);

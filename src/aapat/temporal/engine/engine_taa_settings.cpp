@@ -32,11 +32,14 @@ const std::vector<EnginePresetInfo>& engine_presets() {
        "ComputeTemporalReactiveFactor), ffx_fsr2_sample.h (Lanczos2, deringing), "
        "ffx_fsr2_common.h (RectificationBox, fUpsampleLanczosWeightScale 1/12)"},
       {"godot",
-       "Godot 4 TAA: 16 Halton(2,3) jitters from index 0, each sample at the pixel centre "
-       "minus the jitter, the pixel's own sample, 9-tap "
-       "Catmull-Rom history, 3x3 YCoCg variance clip (gamma 1), alpha 1/(n+1), n <= 16",
-       "godot servers/rendering/renderer_rd/shaders/effects/taa_resolve.glsl "
-       "(sample_catmull_rom_9, clip_history_3x3, MAX_ACCUMULATED_SAMPLES 16), "
+       "Godot 4.6 TAA: 16 Halton(2,3) jitters from index 0, each sample at the pixel centre "
+       "minus the jitter, the pixel's own sample, 9-tap Catmull-Rom history, 3x3 YCoCg "
+       "variance clip (gamma 1, narrowed with speed to 0.4 at 128/1080 of the screen a frame), "
+       "alpha 1/(n+1), n <= 16",
+       "godot servers/rendering/renderer_rd/shaders/effects/taa_resolve.glsl as changed "
+       "2025-11-05 ('dynamic variance'; sample_catmull_rom_9, clip_history_3x3, "
+       "MIN_VARIANCE_BOX_SIZE_MULTIPLIER 0.4, VELOCITY_CONFIDENCE_DISTANCE 128/1080, "
+       "MAX_ACCUMULATED_SAMPLES 16), "
        "effects/taa.cpp (variance_dynamic clamped to [0.75, 1.0]), renderer_scene_cull.cpp "
        "(jitter get_halton_value(i, 2) = 2 h - 1, i from 0), core/math/projection.cpp "
        "(add_jitter_offset: columns[3] += offset, left-multiplied onto the projection)"},
@@ -63,8 +66,8 @@ std::string engine_preset_names() {
 }
 
 std::string engine_setting_names() {
-  return "reconstruct, history, rectify, box, gamma, alpha, alpha_min, alpha_max, count_step, "
-         "count_max, count_max_motion, reset_count, jitter_sign, resolve";
+  return "reconstruct, history, rectify, box, gamma, gamma_moving, gamma_speed, alpha, alpha_min, "
+         "alpha_max, count_step, count_max, count_max_motion, reset_count, jitter_sign, resolve";
 }
 
 namespace {
@@ -87,6 +90,10 @@ void apply(EngineTaa& t, const std::string& key, const std::string& value) {
     t.box = parse_rectification_box(value);
   } else if (key == "gamma") {
     t.gamma = number(key, value, 0, 16);
+  } else if (key == "gamma_moving") {
+    t.gamma_moving = number(key, value, 0, 1);
+  } else if (key == "gamma_speed") {
+    t.gamma_speed = number(key, value, 0, 1);
   } else if (key == "alpha") {
     t.alpha_min = t.alpha_max = number(key, value, 1e-4, 1);
   } else if (key == "alpha_min") {
@@ -188,6 +195,8 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
     t.rectify = Rectification::clip;
     t.box = RectificationBox::variance;
     t.gamma = 1;
+    t.gamma_moving = 0.4;            // MIN_VARIANCE_BOX_SIZE_MULTIPLIER
+    t.gamma_speed = 128.0 / 1080.0;  // VELOCITY_CONFIDENCE_DISTANCE
     t.count_max = t.count_max_motion = 16;
   } else if (preset == "bevy" || preset == "bevy-0.16") {
     t.jitter = preset == "bevy" ? "bevy-halton:frames=8" : "halton:frames=8,start=1";
@@ -238,6 +247,12 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
   return t;
 }
 
+double box_gamma(const EngineTaa& t, double speed) {
+  if (t.gamma_speed <= 0) return t.gamma;
+  const double c = std::clamp(1 - speed / t.gamma_speed, 0.0, 1.0);
+  return t.gamma * (t.gamma_moving + (1 - t.gamma_moving) * c * c);
+}
+
 std::string engine_taa_text(const EngineTaa& t) {
   const std::string blend =
       t.alpha_min == t.alpha_max
@@ -249,7 +264,10 @@ std::string engine_taa_text(const EngineTaa& t) {
           ? "no rectification"
           : fmt::format(
                 "{} to the {} box{}", rectification_name(t.rectify), rectification_box_name(t.box),
-                t.box == RectificationBox::variance ? fmt::format(" gamma {:g}", t.gamma) : "");
+                t.box != RectificationBox::variance ? ""
+                : t.gamma_speed > 0 ? fmt::format(" gamma {:g}, x {:g} at {:g} screens/frame",
+                                                  t.gamma, t.gamma_moving, t.gamma_speed)
+                                    : fmt::format(" gamma {:g}", t.gamma));
   const std::string samples = t.jitter_sign < 0 ? "centre minus jitter" : "centre plus jitter";
   if (t.resolve == TaaResolve::fsr2_2)
     return fmt::format("{} at {:g}x (FSR 2.2's upsample, history, rectification and blend; {})",

@@ -50,6 +50,10 @@ struct EngineTaa {
   Rectification rectify = Rectification::clip;
   RectificationBox box = RectificationBox::variance;
   double gamma = 1;
+  // The variance box narrowed with speed (Godot 4.6): gamma x mix(gamma_moving,
+  // 1, c^2), c = clamp(1 - |v| / gamma_speed, 0, 1), |v| the pixel's motion
+  // in screen units (pixels over the image's width and height). 0: off.
+  double gamma_moving = 1, gamma_speed = 0;
   double alpha_min = 0, alpha_max = 1, count_step = 1;
   int count_max = 16, count_max_motion = 16, reset_count = 1;
   std::vector<std::pair<std::string, std::string>> overrides;  // as given, for reports
@@ -73,6 +77,8 @@ inline double blend_alpha(const EngineTaa& t, int n) {
 inline double steady_alpha(const EngineTaa& t, bool moving) {
   return blend_alpha(t, moving ? t.count_max_motion : t.count_max);
 }
+// The variance box's scale for a pixel moving `speed` screen units a frame.
+double box_gamma(const EngineTaa& t, double speed);
 
 // The sequence as the preset places its samples: each offset times jitter_sign.
 Sequence engine_samples(const Sequence& s, const EngineTaa& t);

@@ -55,6 +55,24 @@ TEST(EngineTaaSettings, PresetsCarryTheirSourcesNumbers) {
   EXPECT_THROW(make_engine_taa("fsr2", 1, {{"alpha_min", "0.5"}, {"alpha_max", "0.2"}}), Error);
 }
 
+// Godot 4.6's variance box narrows with the pixel's speed in screen units
+// (taa_resolve.glsl, clip_history_3x3): mix(0.4, 1, c^2) x the variance scale,
+// c = clamp(1 - |v| / (128 / 1080), 0, 1); the other presets keep theirs.
+TEST(EngineTaaSettings, GodotsBoxNarrowsWithSpeed) {
+  const EngineTaa godot = make_engine_taa("godot", 1);
+  const double d = 128.0 / 1080.0;
+  EXPECT_EQ(box_gamma(godot, 0), 1.0);
+  EXPECT_NEAR(box_gamma(godot, 0.5 * d), 0.4 + 0.6 * 0.25, 1e-15);
+  EXPECT_NEAR(box_gamma(godot, d), 0.4, 1e-15);
+  EXPECT_NEAR(box_gamma(godot, 3 * d), 0.4, 1e-15);
+  const EngineTaa scaled = make_engine_taa("godot", 1, {{"gamma", "0.75"}});  // variance_dynamic
+  EXPECT_NEAR(box_gamma(scaled, d), 0.75 * 0.4, 1e-15);
+  for (const char* other : {"ue4", "bevy", "bevy-0.16"})
+    EXPECT_EQ(box_gamma(make_engine_taa(other, 1), 0.5), make_engine_taa(other, 1).gamma) << other;
+  EXPECT_EQ(box_gamma(make_engine_taa("godot", 1, {{"gamma_speed", "0"}}), d), 1.0);  // off
+  EXPECT_THROW(make_engine_taa("godot", 1, {{"gamma_moving", "1.5"}}), ParameterError);
+}
+
 // No setting is taken and then ignored: FSR 2.2's arithmetic reads none of
 // the generic ones, and the sign is one of two.
 TEST(EngineTaaSettings, SettingsAPresetDoesNotReadAreRefused) {

@@ -75,6 +75,19 @@ TEST(EngineTaa, AWholePixelPanReprojectsExactly) {
       ASSERT_NEAR(frames[3].at(i, j), expected.at(i, j), 1e-12) << i << "," << j;
 }
 
+// Godot's box narrows only where the image moves: still, its frames are
+// those of a fixed gamma; panning, they differ from them.
+TEST(EngineTaa, GodotsMovingBoxActsOnlyInMotion) {
+  const Scene scene = make_scene("circles", 16, 12);
+  const Sequence s = make_sequence("halton:frames=4");
+  const EngineTaa godot = make_engine_taa("godot", 1),
+                  fixed = make_engine_taa("godot", 1, {{"gamma_speed", "0"}});
+  EngineRun still{scene, make_motion("static", 16, 12), 16, 12, 3, 4, {}};
+  EXPECT_EQ(frames_of(still, s, godot)[2].values, frames_of(still, s, fixed)[2].values);
+  EngineRun pan{scene, make_motion("pan:dx=0.6,dy=0.3", 16, 12), 16, 12, 3, 4, {}};
+  EXPECT_NE(frames_of(pan, s, godot)[2].values, frames_of(pan, s, fixed)[2].values);
+}
+
 // At ratio 2 the render grid has half the pixels a side, and a display pixel
 // reads its render pixel's sample (box of one render pixel).
 TEST(EngineTaa, RatioTwoSamplesTheCoarseGrid) {
