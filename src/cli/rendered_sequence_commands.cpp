@@ -177,7 +177,7 @@ void add_sequence_search(CLI::App* parent, std::function<void(std::ostream&)>& a
     double step = RenderedSearch{}.step, min_step = RenderedSearch{}.min_step,
            loss = RenderedSearch{}.loss, jitter_bound = RenderedSearch{}.jitter_bound;
     int max_tries = 0;
-    bool json = false;
+    bool worst = false, json = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("start", o->start,
@@ -194,6 +194,9 @@ void add_sequence_search(CLI::App* parent, std::function<void(std::ostream&)>& a
       ->capture_default_str();
   cmd->add_option("--max-tries", o->max_tries, "end after this many tries (0: no limit)")
       ->capture_default_str();
+  cmd->add_flag("--worst", o->worst,
+                "search on each scene's worst phase (--motion cut) or resonant velocity "
+                "(--motion resonant), not the mean over them");
   cmd->add_option("-o,--output", o->output, "write the sequence found (.json)");
   cmd->add_flag("--json", o->json, "print JSON");
   action = [o, cmd](std::ostream& out) {
@@ -209,6 +212,7 @@ void add_sequence_search(CLI::App* parent, std::function<void(std::ostream&)>& a
     s.loss = o->loss;
     s.jitter_bound = o->jitter_bound;
     s.max_tries = o->max_tries;
+    s.worst = o->worst;
     validate(s);  // before any render
     RenderedSearchResult r;
     {

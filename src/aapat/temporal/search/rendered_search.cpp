@@ -14,6 +14,12 @@ namespace aapat {
 
 namespace {
 
+// Whether a frame's jitter is exactly the pixel centre.
+bool has_null_jitter(const Sequence& s) {
+  return std::any_of(s.frames.begin(), s.frames.end(),
+                     [](const Pattern& f) { return f.sets[0][0].x == 0 && f.sets[0][0].y == 0; });
+}
+
 void check_jitter(const Sequence& s, const char* what) {
   validate(s);
   for (const Pattern& f : s.frames)
@@ -38,6 +44,15 @@ void validate(const RenderedSearch& s) {
   if (!(s.jitter_bound >= kMinJitterBound && s.jitter_bound <= 0.5))
     throw ParameterError("jitter-bound", fmt::format(" {}: expected {} to 0.5 pixels",
                                                      s.jitter_bound, kMinJitterBound));
+  if (s.worst && s.comparison.motion != "cut" && s.comparison.motion != "resonant")
+    throw ParameterError("worst", fmt::format(": the motion {} renders each scene one way; "
+                                              "a worst is taken after a cut or at the "
+                                              "resonances",
+                                              s.comparison.motion));
+  if (s.comparison.taa.resolve == TaaResolve::fsr2_2 && has_null_jitter(s.start))
+    throw ParameterError("start", fmt::format(" {}: a frame's jitter is (0, 0), which FSR 2 "
+                                              "never takes (its sequence starts at index 1)",
+                                              s.start.name));
   if (s.max_tries < 0)
     throw ParameterError("max-tries",
                          fmt::format(" {}: expected 0 (no limit) or more", s.max_tries));
@@ -47,25 +62,35 @@ RenderedSearchResult search_rendered(const RenderedSearch& s, const ReferenceSou
                                      const ItemsProgress& progress) {
   validate(s);
   PreparedScenes scenes(s.comparison, references);
+  // A sequence's measures on scene m: the mean over its ways, or the worst.
+  const auto measures = [&](size_t m, const Sequence& q) {
+    MeasureSpread spread;
+    const ComparisonMeasures mean = scenes.render(m, q, s.comparison.taa, &spread);
+    return s.worst ? spread.worst : mean;
+  };
   std::vector<ComparisonMeasures> base;
   for (size_t m = 0; m < scenes.size(); ++m) {
-    base.push_back(scenes.render(m, s.baseline, s.comparison.taa));
-    if (!(base.back()[0] > 0 && base.back()[1] > 0))
+    base.push_back(measures(m, s.baseline));
+    if (!(base.back()[0] > 0 && base.back()[1] > 0 && base.back()[2] > 0))
       throw Error(fmt::format(
-          "the baseline {} has rmse {} and flicker {} on {} ({}): a ratio cannot be taken; "
-          "choose a motion or scenes where it errs and flickers",
-          s.baseline.name, base.back()[0], base.back()[1], s.comparison.scenes[m],
+          "the baseline {} has rmse {}, flicker {} and flip {} on {} ({}): a ratio cannot be "
+          "taken; choose a motion or scenes where it errs and flickers",
+          s.baseline.name, base.back()[0], base.back()[1], base.back()[2], s.comparison.scenes[m],
           scenes.motion(m)));
   }
   Sequence trial = s.start;
+  const bool null_refused = s.comparison.taa.resolve == TaaResolve::fsr2_2;
   const auto objective = [&](std::span<const double> x) {
     for (size_t f = 0; f < trial.frames.size(); ++f)
       trial.frames[f].sets[0][0] = {x[2 * f], x[2 * f + 1]};
+    if (null_refused && has_null_jitter(trial)) return HUGE_VAL;  // never a null vector
     double sum = 0;
     for (size_t m = 0; m < scenes.size(); ++m) {
-      const ComparisonMeasures v = scenes.render(m, trial, s.comparison.taa);
-      const double a = std::log(v[0] / base[m][0]), b = std::log(v[1] / base[m][1]);
-      sum += a + b + s.loss * (std::max(0.0, a) + std::max(0.0, b));
+      const ComparisonMeasures v = measures(m, trial);
+      const double a = std::log(v[0] / base[m][0]), b = std::log(v[1] / base[m][1]),
+                   c = std::log(v[2] / base[m][2]);
+      sum +=
+          a + c + s.loss * (std::max(0.0, a) + std::max(0.0, c)) + (1 + s.loss) * std::max(0.0, b);
     }
     return sum / static_cast<double>(scenes.size());
   };
@@ -95,9 +120,9 @@ RenderedSearchResult search_rendered(const RenderedSearch& s, const ReferenceSou
   r.best.name = fmt::format("rendered-search-{}", r.best.period());
   r.best.description = fmt::format(
       "{} frames of 1 sample searched on rendered error under {} at {:g}x against {}: the mean "
-      "log ratio of rmse and flicker over {} scenes ({}), losses weighted {}",
+      "log ratio of rmse and flip, flicker not above, over {} scenes ({}{}), losses weighted {}",
       r.best.period(), s.comparison.taa.preset, s.comparison.taa.upscale.ratio, s.baseline.name,
-      scenes.size(), s.comparison.motion, 1 + s.loss);
+      scenes.size(), s.comparison.motion, s.worst ? ", each scene's worst" : "", 1 + s.loss);
   r.best.provenance = {{"optimizer", "aapat sequence search (compass search on rendered error)"},
                        {"taa", s.comparison.taa.preset},
                        {"taa_settings", engine_taa_text(s.comparison.taa)},
@@ -108,6 +133,7 @@ RenderedSearchResult search_rendered(const RenderedSearch& s, const ReferenceSou
                        {"motion", s.comparison.motion},
                        {"seed", std::to_string(s.comparison.seed)},
                        {"loss", fmt::format("{:g}", s.loss)},
+                       {"worst", s.worst ? "1" : "0"},
                        {"start_value", fmt::format("{:.6f}", r.start_value)},
                        {"value", fmt::format("{:.6f}", r.value)}};
   if (s.comparison.taa.upscale.ratio > 1) {
@@ -128,6 +154,7 @@ JsonObject rendered_search_json(const RenderedSearch& s, const RenderedSearchRes
                         {"step", s.step},
                         {"min_step", s.min_step},
                         {"loss", s.loss},
+                        {"worst", s.worst},
                         {"jitter_bound", s.jitter_bound},
                         {"start_value", r.start_value},
                         {"value", r.value},

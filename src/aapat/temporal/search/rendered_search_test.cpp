@@ -41,14 +41,52 @@ TEST(RenderedSearch, NeverEndsAboveItsStartAndItsValueIsTheDefinition) {
   double sum = 0;
   for (const ComparedScene& scene : c.scenes) {
     const double a = std::log(scene.measures[1][0] / scene.measures[0][0]),
-                 b = std::log(scene.measures[1][1] / scene.measures[0][1]);
-    sum += a + b + s.loss * (std::max(0.0, a) + std::max(0.0, b));
+                 b = std::log(scene.measures[1][1] / scene.measures[0][1]),
+                 e = std::log(scene.measures[1][2] / scene.measures[0][2]);
+    // The errors (rmse, flip) rewarded both ways, flicker only penalized.
+    sum += a + e + s.loss * (std::max(0.0, a) + std::max(0.0, e)) + (1 + s.loss) * std::max(0.0, b);
   }
   EXPECT_NEAR(r.value, sum / 2, 1e-12);
   for (const Pattern& f : r.best.frames) {
     EXPECT_LE(std::abs(f.sets[0][0].x), 0.5);
     EXPECT_LE(std::abs(f.sets[0][0].y), 0.5);
   }
+}
+
+// With `worst` after a cut, each scene's measures are its worst phase's.
+TEST(RenderedSearch, TheWorstIsEachScenesWorstPhase) {
+  RenderedSearch s = tiny();
+  s.comparison.motion = "cut";
+  s.worst = true;
+  s.max_tries = 6;
+  const RenderedSearchResult r = search_rendered(s, testing::centre_reference);
+  EXPECT_LE(r.value, 0.0);
+  const EngineComparisonResult c =
+      compare_under_engine({s.baseline, r.best}, s.comparison, testing::centre_reference);
+  double sum = 0;
+  for (const ComparedScene& scene : c.scenes) {
+    const ComparisonMeasures &ours = scene.spread[1].worst, &theirs = scene.spread[0].worst;
+    const double a = std::log(ours[0] / theirs[0]), b = std::log(ours[1] / theirs[1]),
+                 e = std::log(ours[2] / theirs[2]);
+    sum += a + e + s.loss * (std::max(0.0, a) + std::max(0.0, e)) + (1 + s.loss) * std::max(0.0, b);
+  }
+  EXPECT_NEAR(r.value, sum / 2, 1e-12);
+  s.comparison.motion = "random-pan";  // one way per scene: no worst to take
+  EXPECT_EQ(testing::error_parameter([&] { validate(s); }), "worst");
+}
+
+// Under FSR 2 no frame's jitter is the pixel centre: a start with one is
+// refused, and the search never moves a frame onto it.
+TEST(RenderedSearch, Fsr2NeverTakesANullVector) {
+  RenderedSearch s = tiny();
+  s.comparison.taa = make_engine_taa("fsr2", 1.5, {});
+  s.start = make_sequence("bevy-halton:frames=8");  // the centre first
+  EXPECT_EQ(testing::error_parameter([&] { validate(s); }), "start");
+  s.start = s.baseline = make_sequence("halton:frames=4");
+  s.step = 1.0 / 6;  // frame 0 is (0, -1/6): one step up in y is the null vector
+  s.min_step = 1.0 / 12;
+  const RenderedSearchResult r = search_rendered(s, testing::centre_reference);
+  for (const Pattern& f : r.best.frames) EXPECT_FALSE(f.sets[0][0].x == 0 && f.sets[0][0].y == 0);
 }
 
 // Settings out of range, and a baseline with nothing to take a ratio of,
