@@ -156,7 +156,7 @@ TEST(SequenceCli, TheSearchUnderMotionLowersThePanModelsError) {
   const std::string path = temp_path("pan.json");
   const std::vector<std::string> common = {
       "--taa", "fsr2",       "--ratio",   "1.5",      "--velocity",
-      "0,0",   "--velocity", "0.37,0.21", "--acuity", "uniform:step=30"};
+      "0,0",   "--velocity", "0.37,0.21", "--acuity", "uniform:step=60"};
   std::vector<std::string> args = {"optimize",   "--sequence", "4",  "--step", "0.125",
                                    "--min-step", "0.0625",     "-o", path,     "--json"};
   args.insert(args.end(), common.begin(), common.end());

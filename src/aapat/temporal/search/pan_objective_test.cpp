@@ -29,7 +29,7 @@ Sequence sequence_of(const std::vector<Vec2>& jitter) {
 // bins; only the order of the sums differs), after set() and after moves,
 // and moving a frame back restores the value.
 TEST(PanObjective, IsEvaluatePansMeanE2AfterEveryMove) {
-  const Metric metric(make_filter("mitchell"), make_acuity("uniform:step=30"), 2);
+  const Metric metric(make_filter("mitchell"), make_acuity("uniform:step=60"), 2);
   for (const double ratio : {1.0, 1.5}) {
     const EngineTaa taa = make_engine_taa(ratio == 1 ? "ue4" : "fsr2", ratio, {});
     const std::vector<Vec2> velocities = {{0, 0}, {-1.3, 0.6}};
