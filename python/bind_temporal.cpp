@@ -331,7 +331,8 @@ render, or None.)doc";
          int random_scenes, int shapes, const std::string& motion, uint64_t seed, double max_speed,
          std::pair<int, int> size, int frames, int warmup, int reference_samples,
          const std::string& reference_filter, double step, double min_step, double loss,
-         double jitter_bound, int max_tries, bool worst, const py::object& progress) {
+         double jitter_bound, int max_tries, bool worst,
+         const std::vector<std::string>& also_motions, const py::object& progress) {
         RenderedSearch s;
         s.comparison =
             comparison_of(taa, ratio, settings, scenes, random_scenes, shapes, motion, seed,
@@ -345,6 +346,7 @@ render, or None.)doc";
         s.jitter_bound = jitter_bound;
         s.max_tries = max_tries;
         s.worst = worst;
+        s.also_motions = also_motions;
         validate(s);
         const auto report = progress_of(progress);
         const auto r = interruptible([&] { return search_rendered(s, {}, report); });
@@ -364,7 +366,8 @@ render, or None.)doc";
       py::arg("step") = RenderedSearch{}.step, py::arg("min_step") = RenderedSearch{}.min_step,
       py::arg("loss") = RenderedSearch{}.loss,
       py::arg("jitter_bound") = RenderedSearch{}.jitter_bound, py::arg("max_tries") = 0,
-      py::arg("worst") = RenderedSearch{}.worst, py::arg("progress") = py::none(),
+      py::arg("worst") = RenderedSearch{}.worst,
+      py::arg("also_motions") = std::vector<std::string>{}, py::arg("progress") = py::none(),
       R"doc(aapat sequence search: a jitter searched on rendered error. A compass search
 from `start` (a Sequence or spec) whose objective renders the sequence through
 the engine preset's full pipeline on the scenes (as sequence_compare takes
@@ -372,7 +375,9 @@ them) against `against` (default: the preset's own jitter): the mean over the
 scenes of log(rmse ratio) + log(flip ratio) + loss (their positive parts) +
 (1 + loss) (the positive part of log(flicker ratio)), so a scene lost weighs
 1 + loss and flicker counts only where it rises; worst=True takes each
-scene's worst phase (motion "cut") or resonant velocity ("resonant"). A dict with the keys of `aapat sequence search
+scene's worst phase (motion "cut") or resonant velocity ("resonant");
+also_motions: further motions searched at once (the objective is the mean over
+the motions). A dict with the keys of `aapat sequence search
 --json` (start_value, value, tries, kept, ...), its "result" the
 aapat.Sequence found. progress: a callable f(done, total, note) as each step
 size finishes, or None.)doc");

@@ -555,7 +555,7 @@ def test_sequence_search_is_the_cli_search(aapat_cli, tmp_path):
     py = aapat.sequence_search("halton:frames=4", taa="bevy", random_scenes=2, shapes=3,
                                motion="random-pan", size=(12, 12), frames=3, warmup=2,
                                reference_samples=4, max_tries=6, step=0.125, min_step=0.0625)
-    for key in ("start_value", "value", "tries", "kept", "against", "scenes", "worst"):
+    for key in ("start_value", "value", "tries", "kept", "against", "scenes", "worst", "motions"):
         assert py[key] == cli[key], key
     assert py["result"].to_json() == aapat.sequence(out).to_json()
     assert cli["value"] <= cli["start_value"]

@@ -173,6 +173,7 @@ void add_sequence_search(CLI::App* parent, std::function<void(std::ostream&)>& a
       "flicker, losses weighted by 1 + --loss)");
   struct Options {
     std::string start, against, output;
+    std::vector<std::string> also_motions;
     ComparisonOptions comparison;
     double step = RenderedSearch{}.step, min_step = RenderedSearch{}.min_step,
            loss = RenderedSearch{}.loss, jitter_bound = RenderedSearch{}.jitter_bound;
@@ -194,6 +195,10 @@ void add_sequence_search(CLI::App* parent, std::function<void(std::ostream&)>& a
       ->capture_default_str();
   cmd->add_option("--max-tries", o->max_tries, "end after this many tries (0: no limit)")
       ->capture_default_str();
+  cmd->add_option("--also-motion", o->also_motions,
+                  "search under this motion too (repeatable; the objective is the mean over the "
+                  "motions): " +
+                      comparison_motion_help());
   cmd->add_flag("--worst", o->worst,
                 "search on each scene's worst phase (--motion cut) or resonant velocity "
                 "(--motion resonant), not the mean over them");
@@ -213,6 +218,7 @@ void add_sequence_search(CLI::App* parent, std::function<void(std::ostream&)>& a
     s.jitter_bound = o->jitter_bound;
     s.max_tries = o->max_tries;
     s.worst = o->worst;
+    s.also_motions = o->also_motions;
     validate(s);  // before any render
     RenderedSearchResult r;
     {

@@ -1,6 +1,7 @@
 #include "aapat/temporal/search/rendered_search.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +14,13 @@
 namespace aapat {
 
 namespace {
+
+// The comparison's motion, then the further ones.
+std::vector<std::string> searched_motions(const RenderedSearch& s) {
+  std::vector<std::string> out{s.comparison.motion};
+  out.insert(out.end(), s.also_motions.begin(), s.also_motions.end());
+  return out;
+}
 
 // Whether a frame's jitter is exactly the pixel centre.
 bool has_null_jitter(const Sequence& s) {
@@ -44,7 +52,14 @@ void validate(const RenderedSearch& s) {
   if (!(s.jitter_bound >= kMinJitterBound && s.jitter_bound <= 0.5))
     throw ParameterError("jitter-bound", fmt::format(" {}: expected {} to 0.5 pixels",
                                                      s.jitter_bound, kMinJitterBound));
-  if (s.worst && s.comparison.motion != "cut" && s.comparison.motion != "resonant")
+  const std::vector<std::string> motions = searched_motions(s);
+  for (size_t i = 1; i < motions.size(); ++i) {
+    EngineComparison c = s.comparison;
+    c.motion = motions[i];
+    validate(c, 2);
+  }
+  if (s.worst && std::none_of(motions.begin(), motions.end(),
+                              [](const std::string& m) { return m == "cut" || m == "resonant"; }))
     throw ParameterError("worst", fmt::format(": the motion {} renders each scene one way; "
                                               "a worst is taken after a cut or at the "
                                               "resonances",
@@ -61,38 +76,52 @@ void validate(const RenderedSearch& s) {
 RenderedSearchResult search_rendered(const RenderedSearch& s, const ReferenceSource& references,
                                      const ItemsProgress& progress) {
   validate(s);
-  PreparedScenes scenes(s.comparison, references);
+  // One set of prepared scenes per motion searched, the baseline on each.
+  struct Searched {
+    PreparedScenes scenes;
+    std::vector<ComparisonMeasures> base;
+  };
+  std::vector<Searched> searched;
+  for (const std::string& motion : searched_motions(s)) {
+    EngineComparison c = s.comparison;
+    c.motion = motion;
+    searched.push_back({PreparedScenes(c, references), {}});
+  }
   // A sequence's measures on scene m: the mean over its ways, or the worst.
-  const auto measures = [&](size_t m, const Sequence& q) {
+  const auto measures = [&](PreparedScenes& scenes, size_t m, const Sequence& q) {
     MeasureSpread spread;
     const ComparisonMeasures mean = scenes.render(m, q, s.comparison.taa, &spread);
-    return s.worst ? spread.worst : mean;
+    return s.worst && scenes.spread() ? spread.worst : mean;
   };
-  std::vector<ComparisonMeasures> base;
-  for (size_t m = 0; m < scenes.size(); ++m) {
-    base.push_back(measures(m, s.baseline));
-    if (!(base.back()[0] > 0 && base.back()[1] > 0 && base.back()[2] > 0))
-      throw Error(fmt::format(
-          "the baseline {} has rmse {}, flicker {} and flip {} on {} ({}): a ratio cannot be "
-          "taken; choose a motion or scenes where it errs and flickers",
-          s.baseline.name, base.back()[0], base.back()[1], base.back()[2], s.comparison.scenes[m],
-          scenes.motion(m)));
-  }
+  for (Searched& one : searched)
+    for (size_t m = 0; m < one.scenes.size(); ++m) {
+      const ComparisonMeasures b = one.base.emplace_back(measures(one.scenes, m, s.baseline));
+      if (!(b[0] > 0 && b[1] > 0 && b[2] > 0))
+        throw Error(fmt::format(
+            "the baseline {} has rmse {}, flicker {} and flip {} on {} ({}): a ratio cannot be "
+            "taken; choose a motion or scenes where it errs and flickers",
+            s.baseline.name, b[0], b[1], b[2], s.comparison.scenes[m], one.scenes.motion(m)));
+    }
   Sequence trial = s.start;
   const bool null_refused = s.comparison.taa.resolve == TaaResolve::fsr2_2;
   const auto objective = [&](std::span<const double> x) {
     for (size_t f = 0; f < trial.frames.size(); ++f)
       trial.frames[f].sets[0][0] = {x[2 * f], x[2 * f + 1]};
     if (null_refused && has_null_jitter(trial)) return HUGE_VAL;  // never a null vector
-    double sum = 0;
-    for (size_t m = 0; m < scenes.size(); ++m) {
-      const ComparisonMeasures v = measures(m, trial);
-      const double a = std::log(v[0] / base[m][0]), b = std::log(v[1] / base[m][1]),
-                   c = std::log(v[2] / base[m][2]);
-      sum +=
-          a + c + s.loss * (std::max(0.0, a) + std::max(0.0, c)) + (1 + s.loss) * std::max(0.0, b);
+    double total = 0;
+    for (Searched& one : searched) {
+      double sum = 0;
+      for (size_t m = 0; m < one.scenes.size(); ++m) {
+        const ComparisonMeasures v = measures(one.scenes, m, trial);
+        const ComparisonMeasures& b = one.base[m];
+        const double a = std::log(v[0] / b[0]), e = std::log(v[1] / b[1]),
+                     c = std::log(v[2] / b[2]);
+        sum += a + c + s.loss * (std::max(0.0, a) + std::max(0.0, c)) +
+               (1 + s.loss) * std::max(0.0, e);
+      }
+      total += sum / static_cast<double>(one.scenes.size());
     }
-    return sum / static_cast<double>(scenes.size());
+    return total / static_cast<double>(searched.size());
   };
   FunctionObjective f(objective, 2);
   // Inside the pixel ([-1/2, 1/2), as a sequence file holds it) and the bound.
@@ -122,15 +151,16 @@ RenderedSearchResult search_rendered(const RenderedSearch& s, const ReferenceSou
       "{} frames of 1 sample searched on rendered error under {} at {:g}x against {}: the mean "
       "log ratio of rmse and flip, flicker not above, over {} scenes ({}{}), losses weighted {}",
       r.best.period(), s.comparison.taa.preset, s.comparison.taa.upscale.ratio, s.baseline.name,
-      scenes.size(), s.comparison.motion, s.worst ? ", each scene's worst" : "", 1 + s.loss);
+      s.comparison.scenes.size(), fmt::join(searched_motions(s), " + "),
+      s.worst ? ", each scene's worst" : "", 1 + s.loss);
   r.best.provenance = {{"optimizer", "aapat sequence search (compass search on rendered error)"},
                        {"taa", s.comparison.taa.preset},
                        {"taa_settings", engine_taa_text(s.comparison.taa)},
                        {"ratio", fmt::format("{:g}", s.comparison.taa.upscale.ratio)},
                        {"against", s.baseline.name},
                        {"from", s.start.name},
-                       {"scenes", std::to_string(scenes.size())},
-                       {"motion", s.comparison.motion},
+                       {"scenes", std::to_string(s.comparison.scenes.size())},
+                       {"motion", fmt::format("{}", fmt::join(searched_motions(s), " + "))},
                        {"seed", std::to_string(s.comparison.seed)},
                        {"loss", fmt::format("{:g}", s.loss)},
                        {"worst", s.worst ? "1" : "0"},
@@ -155,6 +185,7 @@ JsonObject rendered_search_json(const RenderedSearch& s, const RenderedSearchRes
                         {"min_step", s.min_step},
                         {"loss", s.loss},
                         {"worst", s.worst},
+                        {"motions", searched_motions(s)},
                         {"jitter_bound", s.jitter_bound},
                         {"start_value", r.start_value},
                         {"value", r.value},

@@ -37,6 +37,9 @@ struct RenderedSearch {
   double jitter_bound = 0.5;  // every coordinate within +-bound (below 1/2: inside the pixel)
   int max_tries = 0;          // 0: until the smallest step keeps nothing
   bool worst = false;         // each scene's worst phase or velocity (cut, resonant)
+  // Further motions searched at once: the objective is the mean over the
+  // comparison's motion and these of each one's objective.
+  std::vector<std::string> also_motions;
 };
 
 struct RenderedSearchResult {
@@ -49,7 +52,8 @@ struct RenderedSearchResult {
 // Throws Error (ParameterError naming the setting) before any render: the
 // comparison's settings, a start or baseline that is not one-sample frames,
 // steps out of range, a loss outside [0, 100], a bound outside
-// [kMinJitterBound, 1/2], `worst` under a motion with one way to render.
+// [kMinJitterBound, 1/2], `worst` where no motion renders a scene several
+// ways, an also-motion the comparison cannot make.
 void validate(const RenderedSearch& s);
 
 // progress: (step sizes done, step sizes, "J ...") as the compass search
@@ -61,8 +65,8 @@ RenderedSearchResult search_rendered(const RenderedSearch& s,
 
 // `aapat sequence search --json` and Python's sequence_search: the
 // comparison's settings, against, from, step, min_step, loss, jitter_bound,
-// worst, start_value, value, tries, kept, and the result as a sequence
-// file's object.
+// worst, motions (every motion searched), start_value, value, tries, kept, and the result as a
+// sequence file's object.
 JsonObject rendered_search_json(const RenderedSearch& s, const RenderedSearchResult& r);
 
 }  // namespace aapat

@@ -75,6 +75,35 @@ TEST(RenderedSearch, TheWorstIsEachScenesWorstPhase) {
   EXPECT_EQ(testing::error_parameter([&] { validate(s); }), "worst");
 }
 
+// Several motions at once: the objective is the mean over the motions of
+// each one's objective, every motion's measures rendered as it renders them.
+TEST(RenderedSearch, SeveralMotionsAreTheMeanOfTheirObjectives) {
+  RenderedSearch s = tiny();
+  s.also_motions = {"cut"};
+  s.max_tries = 4;
+  const RenderedSearchResult r = search_rendered(s, testing::centre_reference);
+  double total = 0;
+  for (const char* motion : {"random-pan", "cut"}) {
+    EngineComparison c = s.comparison;
+    c.motion = motion;
+    const EngineComparisonResult cr =
+        compare_under_engine({s.baseline, r.best}, c, testing::centre_reference);
+    double sum = 0;
+    for (const ComparedScene& scene : cr.scenes) {
+      const double a = std::log(scene.measures[1][0] / scene.measures[0][0]),
+                   b = std::log(scene.measures[1][1] / scene.measures[0][1]),
+                   e = std::log(scene.measures[1][2] / scene.measures[0][2]);
+      sum +=
+          a + e + s.loss * (std::max(0.0, a) + std::max(0.0, e)) + (1 + s.loss) * std::max(0.0, b);
+    }
+    total += sum / 2;
+  }
+  EXPECT_NEAR(r.value, total / 2, 1e-12);
+  EXPECT_EQ(rendered_search_json(s, r)["motions"].size(), 2u);
+  s.also_motions = {"spin:fast"};
+  EXPECT_THROW(validate(s), Error);
+}
+
 // Under FSR 2 no frame's jitter is the pixel centre: a start with one is
 // refused, and the search never moves a frame onto it.
 TEST(RenderedSearch, Fsr2NeverTakesANullVector) {
