@@ -37,6 +37,10 @@ std::string comparison_motion_help() {
   return out + ", or a motion spec for every scene";
 }
 
+bool renders_several_ways(const std::string& motion) {
+  return motion == "cut" || motion == "resonant";
+}
+
 namespace {
 
 bool named_motion(const std::string& motion) {

@@ -59,6 +59,9 @@ inline constexpr std::array<ComparisonMotion, 4> kComparisonMotions = {{
 // "static (...), cut (...), random-pan (...), resonant (...), or a motion
 // spec for every scene".
 std::string comparison_motion_help();
+// Whether a motion renders each scene several ways (cut: from every phase;
+// resonant: at every velocity), so that each scene has a worst.
+bool renders_several_ways(const std::string& motion);
 
 struct EngineComparison {
   EngineTaa taa;

@@ -58,8 +58,7 @@ void validate(const RenderedSearch& s) {
     c.motion = motions[i];
     validate(c, 2);
   }
-  if (s.worst && std::none_of(motions.begin(), motions.end(),
-                              [](const std::string& m) { return m == "cut" || m == "resonant"; }))
+  if (s.worst && std::none_of(motions.begin(), motions.end(), renders_several_ways))
     throw ParameterError("worst", fmt::format(": the motion {} renders each scene one way; "
                                               "a worst is taken after a cut or at the "
                                               "resonances",
