@@ -10,6 +10,7 @@
 #include "aapat/core/interrupt.h"
 #include "aapat/generate/point_generators.h"
 #include "aapat/render/color_render.h"
+#include "aapat/render/pixel_point_table.h"
 #include "aapat/render/pixel_splat.h"
 #include "aapat/render/surface.h"
 
@@ -39,6 +40,13 @@ class PixelSampler {
         plain_(s.shading.exact() && !has_texture(scene)),
         colour_(is_colour(scene)) {}
 
+  // A generator's points for the pixels [x0, x1) x [y0, y1), drawn once for
+  // every render that shares them (render/pixel_point_table.h).
+  void share_points(int x0, int y0, int x1, int y1) {
+    if (!s_.pattern)
+      table_ = shared_pixel_points(s_.generator, s_.samples, s_.seed, x0, y0, x1, y1);
+  }
+
   // `counts`, when given, gains the lookups and shadings (callers count each
   // image pixel once, though blocks draw their neighbours' samples too).
   void pixel(int a, int b, std::vector<Sample>& out, Counts* counts) const {
@@ -50,6 +58,8 @@ class PixelSampler {
           continue;
         out.push_back({a + v.x, b + v.y, {}});
       }
+    } else if (table_ && table_->covers(a, b)) {
+      for (const Vec2& v : table_->points(a, b)) out.push_back({a + v.x, b + v.y, {}});
     } else {
       for (const Vec2& v : pixel_points(generator_, s_.samples, s_.seed, a, b))
         out.push_back({a + v.x, b + v.y, {}});
@@ -122,6 +132,7 @@ class PixelSampler {
   const Scene& scene_;
   const Sampling& s_;
   PointGenerator generator_;
+  std::shared_ptr<const PixelPointTable> table_;
   double footprint_;
   bool plain_, colour_;
 };
@@ -225,7 +236,7 @@ Image render_band(const Scene& scene, int width, int height, const Sampling& s,
   const int n = scene_channels(scene);  // 1 grey, 3 colour
   const auto nc = static_cast<size_t>(n);
   Image img{width, rows, 0.0, std::vector<double>(static_cast<size_t>(width) * rows * nc), n};
-  const PixelSampler sampler(scene, s);
+  PixelSampler sampler(scene, s);
   Counts counts;
   const bool plain = s.shading.exact() && !has_texture(scene);  // nothing to count but samples
 
@@ -269,6 +280,7 @@ Image render_band(const Scene& scene, int width, int height, const Sampling& s,
     // whatever the blocks. The sums are normalized at the end.
     img.offset = offset;
     const int reach = static_cast<int>(std::floor(filter->radius() + 0.5)) + (offset != 0 ? 1 : 0);
+    sampler.share_points(-reach, row_begin - reach, width + reach, row_end + reach);
     // Each block draws `reach` rows of pixels above and below its own: the
     // taller the block, the fewer drawn twice (a 2-pixel radius: 12 rows for
     // 8, 36 for 32).

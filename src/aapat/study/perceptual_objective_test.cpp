@@ -1,5 +1,6 @@
 #include "aapat/study/perceptual_objective.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
