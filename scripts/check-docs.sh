@@ -2,20 +2,11 @@
 # Regenerates every committed table and figure under docs/ into a scratch
 # folder with the release build and compares them byte for byte with the
 # committed ones: the check that a restructuring changed no output.
-#
-# --studies checks the studies under docs/studies/ that a script regenerates
-# instead (minutes each, so not on every commit; a study's findings are
-# dated, and it is re-run when what it measures changes).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-if [ "${1:-}" = --studies ]; then
-  mkdir -p "$out/docs/studies"
-  "$root/scripts/engine-taa-table.sh" "$out/docs/studies/engine-taa-table.md"
-else
-  AAPAT_DOCS_OUT=$out "$root/scripts/docs-figures.sh" >/dev/null
-fi
+AAPAT_DOCS_OUT=$out "$root/scripts/docs-figures.sh" >/dev/null
 status=0
 while IFS= read -r -d '' file; do
   rel=${file#"$out"/}

@@ -69,9 +69,10 @@ AAPAT="$aapat" "$root/scripts/catalog-table.sh" docs/catalog-table.md >/dev/null
 # Jitter and alternating-MSAA sequences under box, EMA and EMA + resolve, and rendered TAA.
 AAPAT="$aapat" "$root/scripts/temporal-table.sh" docs/temporal-table.md >/dev/null
 "$aapat" hardware-table --objective laine-aila > docs/hardware-table.md
-# Engine TAA (docs/temporal.md): a moving spiral's last frame under two
-# presets, the engine's own jitter beside aapat's. (The table of every preset
-# and ratio is a study, docs/studies/engine-taa-table.md: check-docs.sh --studies.)
+# Engine TAA (docs/temporal.md): the optimized jitters under every preset and
+# ratio, and a moving spiral's last frame under two presets, the engine's
+# own jitter beside aapat's.
+AAPAT="$aapat" "$root/scripts/engine-taa-table.sh" docs/engine-taa-table.md >/dev/null
 taa_tmp=$(mktemp -d)
 for run in "fsr2 1.5 halton aapat-upscale-1.5" "ue4 1 ue4-halton:frames=8 aapat-taa-8"; do
   read -r preset ratio own ours <<<"$run"
