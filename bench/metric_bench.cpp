@@ -57,6 +57,20 @@ void PerceptualEvaluation(benchmark::State& state) {
 }
 BENCHMARK(PerceptualEvaluation)->Arg(16)->Arg(8)->Unit(benchmark::kMillisecond);
 
+// Its value and weight gradient (FLIP run backwards through every chart),
+// for `aapat refine --weight-steps`; the same pattern and core.
+void PerceptualGradientEvaluation(benchmark::State& state) {
+  const tbb::global_control one_core(tbb::global_control::max_allowed_parallelism, 1);
+  PerceptualSpec spec;
+  spec.angles = static_cast<int>(state.range(0));
+  const PerceptualObjective objective(spec);
+  const Pattern p = catalog_pattern("msaa-4");
+  for (auto _ : state) benchmark::DoNotOptimize(objective.gradient(p));
+  state.SetItemsProcessed(state.iterations());
+  state.counters["charts"] = objective.chart_count();
+}
+BENCHMARK(PerceptualGradientEvaluation)->Arg(16)->Unit(benchmark::kMillisecond);
+
 // 4 samples at 180 angles on each SIMD path this processor runs (pinned in
 // turn; the label names it): what a machine without AVX-512 or AVX2 gets.
 void E2EvaluationPerPath(benchmark::State& state) {

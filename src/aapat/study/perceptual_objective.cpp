@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "aapat/analyze/flip_gradient.h"
 #include "aapat/core/geometry.h"
 #include "aapat/core/portable_math.h"
 #include "aapat/io/json_report.h"
@@ -197,6 +198,10 @@ PerceptualError PerceptualObjective::evaluate(const Pattern& pattern) const {
     const Image image = render(charts_[c].scene, spec_.patch, spec_.patch, sampling, std::nullopt);
     flips[c] = flip(ideals(image.offset)[c], color_image(image, ColorLevels::kExact)).mean;
   });
+  return combine(flips);
+}
+
+PerceptualError PerceptualObjective::combine(const std::vector<double>& flips) const {
   PerceptualError e;
   std::vector<int> counts(kinds_.size());
   for (const std::string& k : kinds_) e.kinds.push_back({k, 0});
@@ -210,6 +215,86 @@ PerceptualError PerceptualObjective::evaluate(const Pattern& pattern) const {
   }
   e.value /= static_cast<double>(kinds_.size());
   return e;
+}
+
+// d value / d (chart c's mean FLIP): 1 / (kinds x the charts of c's kind).
+std::vector<double> PerceptualObjective::chart_shares() const {
+  std::vector<int> counts(kinds_.size());
+  for (const Chart& c : charts_) ++counts[static_cast<size_t>(c.kind)];
+  std::vector<double> shares;
+  for (const Chart& c : charts_)
+    shares.push_back(1.0 /
+                     (static_cast<double>(kinds_.size()) * counts[static_cast<size_t>(c.kind)]));
+  return shares;
+}
+
+PerceptualGradient PerceptualObjective::gradient(const Pattern& pattern) const {
+  return differentiate(pattern, false, true);
+}
+
+PerceptualGradient PerceptualObjective::gradient_in_double(const Pattern& pattern,
+                                                           bool with_gradient) const {
+  return differentiate(pattern, true, with_gradient);
+}
+
+PerceptualGradient PerceptualObjective::differentiate(const Pattern& pattern, bool in_double,
+                                                      bool with_gradient) const {
+  validate(pattern);
+  Sampling sampling;
+  sampling.pattern = pattern;
+  std::vector<Kernel> kernels;
+  for (int k = 0; k < pattern.set_count(); ++k) kernels.push_back(make_kernel(pattern, k));
+  const std::vector<double> shares = chart_shares();
+  const int side = spec_.patch;
+  std::vector<double> flips(charts_.size());
+  // Each chart's gradient in its own slot, summed in chart order below.
+  std::vector<std::vector<std::vector<double>>> per_chart(charts_.size());
+  tbb::parallel_for(size_t{0}, charts_.size(), [&](size_t c) {
+    const Scene& scene = charts_[c].scene;
+    const Image image = render(scene, side, side, sampling, std::nullopt);
+    const FlipReference& ideal = ideals(image.offset)[c];
+    FlipGradient g;
+    if (in_double) {
+      // color_image's clamp and row order, in double.
+      std::vector<double> rgb(3 * image.pixels());
+      for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i)
+          for (size_t ch = 0; ch < 3; ++ch)
+            rgb[3 * (static_cast<size_t>(side - 1 - j) * side + i) + ch] =
+                std::clamp(image.at(i, j), 0.0, 1.0);
+      g = flip_gradient_in_double(ideal, rgb, with_gradient);
+    } else {
+      g = flip_gradient(ideal, color_image(image, ColorLevels::kExact));
+    }
+    flips[c] = g.mean;
+    if (!with_gradient) return;
+    auto& out = per_chart[c];
+    for (const auto& w : pattern.weights) out.emplace_back(w.size(), 0.0);
+    for (int j = 0; j < side; ++j)
+      for (int i = 0; i < side; ++i) {
+        const double value = image.values[static_cast<size_t>(j) * side + i];
+        // color_image clamps to [0, 1] and turns the rows over (row 0 at the top).
+        if (value < 0 || value > 1) continue;
+        const size_t at = 3 * (static_cast<size_t>(side - 1 - j) * side + i);
+        const double d_pixel = shares[c] * (g.d_rgb[at] + g.d_rgb[at + 1] + g.d_rgb[at + 2]);
+        if (d_pixel == 0) continue;
+        const int k = set_index(pattern, i, j);
+        const Kernel& kernel = kernels[static_cast<size_t>(k)];
+        double sum = 0;
+        for (double w : pattern.weights[static_cast<size_t>(k)]) sum += w;
+        for (int r = 0; r < kernel.size(); ++r) {
+          const double v =
+              shade(scene, {i + image.offset + kernel.x[r], j + image.offset + kernel.y[r]});
+          out[static_cast<size_t>(k)][static_cast<size_t>(r)] += d_pixel * (v - value) / sum;
+        }
+      }
+  });
+  PerceptualGradient result{combine(flips), {}};
+  for (const auto& w : pattern.weights) result.weights.emplace_back(w.size(), 0.0);
+  for (const auto& chart : per_chart)
+    for (size_t k = 0; k < chart.size(); ++k)
+      for (size_t r = 0; r < chart[k].size(); ++r) result.weights[k][r] += chart[k][r];
+  return result;
 }
 
 nlohmann::ordered_json perceptual_eval_json(const PerceptualSpec& spec,

@@ -81,6 +81,19 @@ struct PerceptualError {
   std::vector<PerceptualKind> kinds;
 };
 
+// The objective and its gradient with respect to the pattern's weights, in
+// the shape of Pattern::weights (kernel k, sample r). A rendered pixel is
+// sum_r w_r v_r / sum_r w_r over its kernel's samples v_r, so d pixel / d w_r
+// = (v_r - pixel) / sum_r w_r, times FLIP's image gradient
+// (analyze/flip_gradient.h), summed over the charts as the value is.
+// Positions have no such gradient: a chart is point-sampled, so the value
+// moves in steps as a sample crosses a primitive's boundary and is flat in
+// between (study/refine_search.h searches them without derivatives).
+struct PerceptualGradient {
+  PerceptualError error;
+  std::vector<std::vector<double>> weights;
+};
+
 class PerceptualObjective {
  public:
   // Renders the charts' ideals (offset 0; the half-pixel ones on first use).
@@ -90,6 +103,13 @@ class PerceptualObjective {
   // Deterministic at any thread count: every chart in its own slot, summed in order.
   PerceptualError evaluate(const Pattern& pattern) const;
   double operator()(const Pattern& pattern) const { return evaluate(pattern).value; }
+  // The value (the same as evaluate's) and its weight gradient.
+  PerceptualGradient gradient(const Pattern& pattern) const;
+  // The same with FLIP in double (analyze/flip_gradient.h's
+  // flip_gradient_in_double): the value to about 1e-7, for central
+  // differences at steps float cannot resolve (without `with_gradient`,
+  // the value alone).
+  PerceptualGradient gradient_in_double(const Pattern& pattern, bool with_gradient = true) const;
 
  private:
   struct Chart {
@@ -98,6 +118,11 @@ class PerceptualObjective {
   };
   const std::vector<FlipReference>& ideals(double offset) const;
   std::vector<FlipReference> render_ideals(double offset) const;
+  // The objective from each chart's mean FLIP, and each chart's share of it.
+  PerceptualError combine(const std::vector<double>& flips) const;
+  std::vector<double> chart_shares() const;
+  PerceptualGradient differentiate(const Pattern& pattern, bool in_double,
+                                   bool with_gradient) const;
 
   PerceptualSpec spec_;
   std::vector<std::string> kinds_;
