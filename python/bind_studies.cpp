@@ -81,11 +81,12 @@ its family, n, value ("perceptual") and each kind's mean FLIP ("kinds").)doc");
       [](const py::object& pattern, const std::string& objective,
          const std::optional<std::vector<std::string>>& scenes,
          const std::variant<int, std::pair<int, int>>& size, const std::string& measure,
-         int reference_samples, const std::string& api, int max_tries, double step,
-         double min_step) {
+         int reference_samples, const std::string& api, int max_tries, double step, double min_step,
+         int weight_steps) {
         const Pattern start = to_pattern(pattern);
         RefineSettings s;
         s.max_tries = max_tries;
+        s.weight_steps = weight_steps;
         s.step = step;
         s.min_step = min_step;
         s.api = api;
@@ -93,6 +94,10 @@ its family, n, value ("perceptual") and each kind's mean FLIP ("kinds").)doc");
         std::optional<PerceptualSpec> spec;
         StudySettings study;
         if (scenes) {
+          if (weight_steps > 0)
+            throw ParameterError("weight_steps",
+                                 ": a rendered measure over scenes has no weight gradient (the "
+                                 "perceptual objective has)");
           study.scenes = *scenes;
           if (const int* n = std::get_if<int>(&size))
             study.width = study.height = *n;
@@ -126,12 +131,15 @@ its family, n, value ("perceptual") and each kind's mean FLIP ("kinds").)doc");
       py::arg("reference_samples") = StudySettings{}.reference.samples, py::arg("api") = "",
       py::arg("max_tries") = RefineSettings{}.max_tries, py::arg("step") = RefineSettings{}.step,
       py::arg("min_step") = RefineSettings{}.min_step,
+      py::arg("weight_steps") = RefineSettings{}.weight_steps,
       R"doc(aapat refine: the pattern's positions and weights refined by a compass search,
 never worse than the start, under the perceptual objective or, with `scenes`,
 the mean rendered `measure` over them at `size` (as study_compare renders
-them); with `api`, on that API's lattice. Returns the document of `aapat
-refine --json` ({objective, pattern: the start's name, family, api when given,
-before, after, tries}) with `refined`, the aapat.Pattern named
+them); with `api`, on that API's lattice; with `weight_steps`, then that many
+gradient steps on the weights at most (the perceptual objective only).
+Returns the document of `aapat refine --json` ({objective, pattern: the
+start's name, family, api when given, before, after, tries; compass_after and
+weight_steps with weight steps}) with `refined`, the aapat.Pattern named
 START-perceptual or START-rendered.)doc");
 
   m.def(

@@ -39,6 +39,14 @@ def test_perceptual_eval_and_refine_are_the_cli_json(aapat_cli, tmp_path):
     cli = cli_json(aapat_cli, "--quiet", "refine", "msaa-4", "-O", spec, "--max-tries", "10")
     assert {k: v for k, v in refined.items() if k not in ("command", "schema", "refined")} == cli
     assert refined["refined"].name == "msaa-4-perceptual"
+    # Weight steps after the compass search: the same document on both faces.
+    refined = aapat.refine("msaa-4", objective=spec, max_tries=5, weight_steps=3)
+    cli = cli_json(aapat_cli, "--quiet", "refine", "msaa-4", "-O", spec, "--max-tries", "5",
+                   "--weight-steps", "3")
+    assert {k: v for k, v in refined.items() if k not in ("command", "schema", "refined")} == cli
+    assert cli["after"] <= cli["compass_after"] and "weight_steps" in cli
+    with pytest.raises(aapat.Error, match="weight_steps"):
+        aapat.refine("msaa-4", scenes=["spiral"], weight_steps=2)
     with pytest.raises(aapat.Error, match="ppd"):
         aapat.perceptual_eval("msaa-4", objective="perceptual:ppd=0")
     with pytest.raises(aapat.Error, match="no primitives"):

@@ -457,6 +457,7 @@ std::vector<std::string> random_command() {
         a.insert(a.end(), {"--max-tries", *one_of({"3", "0", "-2"})});
         maybe(a, "-o", {"refined.json", "refined.png", "folder"});
         maybe(a, "--api", {"vulkan", "metal", "nosuch"});
+        maybe(a, "--weight-steps", {"2", "-1", "10001"});
         if (coin()) {  // on scenes instead of the charts (the spec then clashes)
           a.insert(a.end(), {"--scenes", *one_of({"spiral", "nosuch", "disc"}), "--size",
                              *one_of({"8", "4", "9x8"}), "--reference-samples", "4"});

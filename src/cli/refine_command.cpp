@@ -52,6 +52,12 @@ Action add_refine_command(CLI::App& app) {
                   "keep the samples on this API's 1/16-pixel lattice (aapat list)");
   cmd->add_option("--max-tries", o->search.max_tries, "objective evaluations at most")
       ->capture_default_str();
+  auto* weight_steps =
+      cmd->add_option("--weight-steps", o->search.weight_steps,
+                      "then at most this many gradient steps on the weights (the perceptual "
+                      "objective's weight gradient; 0: none)")
+          ->capture_default_str();
+  weight_steps->excludes(scenes);
   cmd->add_option("--step", o->search.step, "the first step, pixels")->capture_default_str();
   cmd->add_option("--min-step", o->search.min_step, "the last step, pixels")->capture_default_str();
   cmd->add_option("-o,--output", o->output, "write the refined pattern (.json or .xyw)");
@@ -96,8 +102,12 @@ Action add_refine_command(CLI::App& app) {
       out << json_text(doc);
       return;
     }
-    out << fmt::format("objective {}\n{} {}: {:.6f} -> {:.6f} after {} evaluations\n",
-                       objective.text, start.name, family(start), r.start_value, r.value, r.tries);
+    out << fmt::format("objective {}\n{} {}: {:.6f} -> {:.6f} after {} evaluations", objective.text,
+                       start.name, family(start), r.start_value, r.value, r.tries);
+    if (o->search.weight_steps > 0)
+      out << fmt::format(" ({:.6f} after the compass search, then {} weight steps)",
+                         r.compass_value, r.gradient_steps);
+    out << "\n";
     if (!o->output.empty()) out << "wrote " << o->output << "\n";
   };
 }

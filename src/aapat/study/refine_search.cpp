@@ -9,6 +9,7 @@
 
 #include "aapat/core/geometry.h"
 #include "aapat/core/hardware_layout.h"
+#include "aapat/core/interrupt.h"
 #include "aapat/core/lattice.h"
 #include "aapat/core/metric.h"
 #include "aapat/core/objective.h"
@@ -52,15 +53,77 @@ Problem moved(const Problem& start, const std::vector<Coordinate>& coords,
   return p;
 }
 
+// d value / d problem.weights from d value / d Pattern::weights: a weight
+// variable read by several kernels (a mirrored tile's) gathers each read's.
+std::vector<double> problem_weight_gradient(const Problem& p,
+                                            const std::vector<std::vector<double>>& pattern_grad) {
+  std::vector<double> g(p.weights.size(), 0.0);
+  for (size_t k = 0; k < p.kernels.size(); ++k)
+    for (size_t r = 0; r < p.kernels[k].size(); ++r)
+      g[static_cast<size_t>(p.kernels[k][r].weight)] += pattern_grad[k][r];
+  return g;
+}
+
+// Projected gradient descent on the weights, the positions held: the
+// gradient's component within each group's plane (sum 1), scaled so that
+// the largest weight moves `step`, the result projected onto the
+// constraints; a step that does not lower the value is halved, down to
+// min_step, and the search ends there or after `steps` steps.
+struct WeightDescent {
+  Problem problem;
+  double value = 0;
+  int steps = 0, evaluations = 0;
+};
+WeightDescent descend_weights(Problem problem, double value, const RefineObjective& objective,
+                              const RefineSettings& s,
+                              const std::function<Pattern(const Problem&)>& pattern) {
+  WeightDescent d{problem, value, 0, 0};
+  double step = s.step;
+  while (d.steps < s.weight_steps && step >= s.min_step) {
+    throw_if_interrupted();
+    std::vector<double> g =
+        problem_weight_gradient(d.problem, objective.weight_gradient(pattern(d.problem)));
+    ++d.evaluations;
+    double largest = 0;
+    for (const auto& group : d.problem.weight_groups) {
+      double mean = 0;
+      for (int w : group) mean += g[static_cast<size_t>(w)];
+      mean /= static_cast<double>(group.size());
+      for (int w : group) {
+        g[static_cast<size_t>(w)] = group.size() > 1 ? g[static_cast<size_t>(w)] - mean : 0;
+        largest = std::max(largest, std::abs(g[static_cast<size_t>(w)]));
+      }
+    }
+    if (largest == 0) break;
+    bool lowered = false;
+    while (step >= s.min_step) {
+      Problem next = d.problem;
+      for (size_t w = 0; w < g.size(); ++w) next.weights[w] -= step / largest * g[w];
+      project_to_constraints(next, true);
+      const double v = objective.value(pattern(next));
+      ++d.evaluations;
+      if (v < d.value) {
+        d.problem = std::move(next), d.value = v, lowered = true;
+        break;
+      }
+      step /= 2;
+    }
+    if (!lowered) break;
+    ++d.steps;
+  }
+  return d;
+}
+
 }  // namespace
 
 RefineObjective refine_objective(const PerceptualObjective& objective) {
   return {[&objective](const Pattern& p) { return objective(p); }, objective.spec().text(),
-          "perceptual"};
+          "perceptual", [&objective](const Pattern& p) { return objective.gradient(p).weights; }};
 }
 
 RefineObjective refine_objective(const RenderedObjective& objective) {
-  return {[&objective](const Pattern& p) { return objective(p); }, objective.text(), "rendered"};
+  return {
+      [&objective](const Pattern& p) { return objective(p); }, objective.text(), "rendered", {}};
 }
 
 void validate(const RefineSettings& s, const Pattern& start) {
@@ -70,6 +133,9 @@ void validate(const RefineSettings& s, const Pattern& start) {
     throw ParameterError("min-step", fmt::format(" {}: expected (0, step]", s.min_step));
   if (s.max_tries < 1 || s.max_tries > 10'000'000)
     throw ParameterError("max-tries", fmt::format(" {}: expected 1 to 10^7", s.max_tries));
+  if (s.weight_steps < 0 || s.weight_steps > kMaxWeightSteps)
+    throw ParameterError("weight-steps",
+                         fmt::format(" {}: expected 0 to {}", s.weight_steps, kMaxWeightSteps));
   if (!s.api.empty()) {
     const ApiProfile& profile = api_profile(s.api);
     hardware_layout(snap_to_lattice(start, kLatticeSteps, profile.y_down), profile);
@@ -79,6 +145,10 @@ void validate(const RefineSettings& s, const Pattern& start) {
 RefineResult refine_pattern(const Pattern& original, const RefineObjective& objective,
                             const RefineSettings& s, const ItemsProgress& progress) {
   validate(s, original);
+  if (s.weight_steps > 0 && !objective.weight_gradient)
+    throw ParameterError("weight-steps", fmt::format(": the objective {} has no weight gradient "
+                                                     "(the perceptual objective has)",
+                                                     objective.text));
   const ApiProfile* profile = s.api.empty() ? nullptr : &api_profile(s.api);
   // On an API's lattice every candidate is measured snapped: the search's
   // positions move in continuous steps, but only a step that carries a
@@ -131,9 +201,20 @@ RefineResult refine_pattern(const Pattern& original, const RefineObjective& obje
   // non-negative, samples inside); where that alone made it worse, the start
   // itself is the answer. Either way the result records what was searched.
   const double first = objective.value(start);
-  const bool improved = r.value < first;
-  Pattern best = improved ? candidate(r.x) : start;
-  const double value = improved ? r.value : first;
+  int tries = r.tries;
+  Problem searched = moved(problem, coords, r.x);
+  double value = r.value;
+  const double compass_value = r.value;
+  int gradient_steps = 0;
+  if (s.weight_steps > 0) {
+    const WeightDescent d = descend_weights(
+        searched, value, objective, s, [&](const Problem& p) { return on_target(pattern_of(p)); });
+    searched = d.problem, value = d.value, gradient_steps = d.steps;
+    tries += d.evaluations;
+  }
+  const bool improved = value < first;
+  Pattern best = improved ? on_target(pattern_of(searched)) : start;
+  if (!improved) value = first;
   // A new name: a file named like the catalog entry with other samples would
   // be read under its file's name, with a warning (io/catalog_clash.h).
   best.name = original.name + "-" + objective.key;
@@ -172,7 +253,7 @@ RefineResult refine_pattern(const Pattern& original, const RefineObjective& obje
                 [&](const auto& kv) { return kv.first == "refined" || kv.first == objective.key; });
   best.provenance.emplace_back("refined", objective.text);
   best.provenance.emplace_back(objective.key, fmt::format("{:.6f}", value));
-  return {best, first, value, r.tries};
+  return {best, first, value, tries, compass_value, gradient_steps};
 }
 
 nlohmann::ordered_json refine_json(const RefineObjective& objective, const Pattern& start,
@@ -183,6 +264,9 @@ nlohmann::ordered_json refine_json(const RefineObjective& objective, const Patte
   if (!settings.api.empty()) doc["api"] = settings.api;
   doc.update(
       JsonObject{{"before", result.start_value}, {"after", result.value}, {"tries", result.tries}});
+  if (settings.weight_steps > 0)
+    doc.update(JsonObject{{"compass_after", result.compass_value},
+                          {"weight_steps", result.gradient_steps}});
   return doc;
 }
 

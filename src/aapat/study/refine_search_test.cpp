@@ -84,6 +84,15 @@ TEST(RefineSearch, BadSettingsAreRefused) {
   s = {};
   s.max_tries = 0;
   EXPECT_THROW(refine_pattern(p, refine_objective(o), s), ParameterError);
+  s = {};
+  s.weight_steps = -1;
+  EXPECT_THROW(refine_pattern(p, refine_objective(o), s), ParameterError);
+  // Weight steps need a weight gradient, which a bare objective has not.
+  s = {};
+  s.weight_steps = 3;
+  const RefineObjective bare{[](const Pattern&) { return 0.0; }, "zero", "zero", {}};
+  EXPECT_NE(testing::error_message([&] { refine_pattern(p, bare, s); }).find("weight gradient"),
+            std::string::npos);
 }
 
 // With an API every measured candidate is on its lattice: the result is, it
@@ -130,7 +139,9 @@ TEST(RefineSearch, MinimizesAnyObjective) {
                                  const Vec2 d = p.sets[0][0] - Vec2{0.25, -0.125};
                                  return d.x * d.x + d.y * d.y;
                                },
-                               "distance to (1/4, -1/8)", "distance"};
+                               "distance to (1/4, -1/8)",
+                               "distance",
+                               {}};
   RefineSettings s;
   s.max_tries = 400;
   const RefineResult r = refine_pattern(start, toward, s);
@@ -143,6 +154,45 @@ TEST(RefineSearch, MinimizesAnyObjective) {
   EXPECT_EQ(doc["objective"], "distance to (1/4, -1/8)");
   EXPECT_EQ(doc["after"], 0.0);
   EXPECT_FALSE(doc.contains("api"));
+}
+
+// Weight steps follow the objective's weight gradient, projected onto the
+// constraints (non-negative, each kernel's summing to 1): a distance of
+// msaa-4's weights to (0.4, 0.3, 0.2, 0.1), which the compass search, held
+// to one evaluation, leaves alone, is brought to within the last step.
+TEST(RefineSearch, WeightStepsFollowTheGradient) {
+  const Pattern start = catalog_pattern("msaa-4");
+  const std::vector<double> target = {0.4, 0.3, 0.2, 0.1};
+  const RefineObjective toward{[&](const Pattern& p) {
+                                 double sum = 0;
+                                 for (size_t r = 0; r < 4; ++r)
+                                   sum += std::pow(p.weights[0][r] - target[r], 2);
+                                 return sum;
+                               },
+                               "distance to (0.4, 0.3, 0.2, 0.1)", "distance",
+                               [&](const Pattern& p) {
+                                 std::vector<std::vector<double>> g = {std::vector<double>(4)};
+                                 for (size_t r = 0; r < 4; ++r)
+                                   g[0][r] = 2 * (p.weights[0][r] - target[r]);
+                                 return g;
+                               }};
+  RefineSettings s;
+  s.max_tries = 1;
+  s.weight_steps = 40;
+  const RefineResult r = refine_pattern(start, toward, s);
+  EXPECT_NEAR(r.compass_value, 0.05, 1e-12);  // the start: sum of 0.15^2, 0.05^2 twice
+  EXPECT_GT(r.gradient_steps, 0);
+  EXPECT_LT(r.value, 4 * std::pow(s.min_step, 2));
+  double sum = 0;
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_NEAR(r.pattern.weights[0][i], target[i], 2 * s.min_step);
+    EXPECT_GE(r.pattern.weights[0][i], 0);
+    sum += r.pattern.weights[0][i];
+  }
+  EXPECT_NEAR(sum, 1, 1e-12);
+  EXPECT_EQ(r.pattern.sets, start.sets);  // the positions are held
+  const auto doc = refine_json(toward, start, s, r);
+  EXPECT_EQ(doc["weight_steps"], r.gradient_steps);
 }
 
 }  // namespace
