@@ -75,6 +75,15 @@ void validate(const EngineComparison& c, size_t sequences) {
   if (c.motion == "random-pan") {
     random_pan_velocities(static_cast<int>(c.scenes.size()), c.max_speed, c.seed);  // checks
   } else if (!named_motion(c.motion)) {
+    // A comparison takes its own motions besides the render's: an unknown
+    // name lists both.
+    if (!motion_registry().contains(c.motion)) {
+      std::string named;
+      for (const ComparisonMotion& m : kComparisonMotions) named += std::string(m.name) + ", ";
+      throw ParameterError(
+          "motion", fmt::format(" '{}': a comparison takes {}or a motion spec ({})",
+                                split_spec(c.motion).first, named, motion_registry().names()));
+    }
     make_motion(c.motion, c.width, c.height);  // names a bad spec before any work
   }
   check_paired_settings(c.resamples, c.confidence);

@@ -204,6 +204,13 @@ TEST(EngineComparison, RefusesSettingsByName) {
   EXPECT_EQ(testing::error_parameter([&] { validate(c, 2); }), "frames");
   c = small("spin:fast");
   EXPECT_THROW(validate(c, 2), Error);
+  // An unknown motion lists the comparison's own motions and the render's.
+  c = small("sideways");
+  const std::string m = testing::error_message([&] { validate(c, 2); });
+  EXPECT_EQ(testing::error_parameter([&] { validate(c, 2); }), "motion");
+  EXPECT_NE(m.find("'sideways'"), std::string::npos) << m;
+  EXPECT_NE(m.find("resonant"), std::string::npos) << m;
+  EXPECT_NE(m.find("orbit"), std::string::npos) << m;
   EXPECT_EQ(testing::error_parameter([&] { random_scene_specs(0, 4, 1); }), "random-scenes");
   EXPECT_EQ(testing::error_parameter([&] { random_scene_specs(3, 0, 1); }), "shapes");
   EXPECT_EQ(random_scene_specs(2, 5, 7)[1], "random-shapes:count=5,seed=8");
