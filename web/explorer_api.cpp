@@ -38,6 +38,8 @@
 #include "aapat/study/point_set_study.h"
 #include "aapat/study/render_study.h"
 #include "aapat/study/study_json.h"
+#include "aapat/temporal/engine/engine_comparison.h"
+#include "aapat/temporal/engine/engine_taa_settings.h"
 #include "aapat/temporal/model/accumulation.h"
 #include "aapat/temporal/model/model_json.h"
 #include "aapat/temporal/model/temporal_metrics.h"
@@ -120,8 +122,12 @@ std::string info() {
       objectives.push_back({{"name", n.info.name},
                             {"summary", n.info.summary},
                             {"components", n.objective.components()}});
+    JsonObject motions = JsonObject::array();
+    for (const ComparisonMotion& m : kComparisonMotions)
+      motions.push_back({{"name", m.name}, {"summary", m.summary}});
     return JsonObject{{"version", AAPAT_VERSION},
                       {"simd", simd_target()},
+                      {"comparison_motions", motions},
                       {"default_objective", kDefaultObjective},
                       {"objectives", objectives},
                       {"lattice_steps", kLatticeSteps},
@@ -380,6 +386,49 @@ std::string sequence(const std::string& request) {
   });
 }
 
+// Jitter sequences rendered through an engine's TAA preset on the same
+// scenes, the first the baseline: `aapat sequence compare --json`'s
+// document, built from the same settings (EngineComparison's defaults where
+// the request is silent) and the same library calls. The references are
+// rendered in the page (no disk cache), so a request keeps them small.
+std::string engine_compare(const std::string& request) {
+  return answer([&] {
+    const Json r = parse_request(request);
+    if (!r.contains("taa"))
+      throw Error("taa: missing (an engine preset: " + engine_preset_names() + ")");
+    const double ratio = r.contains("ratio") ? finite_field(r, "ratio") : 1.0;
+    const EngineComparison defaults;
+    EngineComparison c;
+    c.taa = make_engine_taa(field<std::string>(r, "taa", ""), ratio, {});
+    const int random_scenes = int_field(r, "random_scenes", 0, 0, kMaxComparisonScenes);
+    c.seed = static_cast<uint64_t>(int_field(r, "seed", 1, 0, kMaxPageSeed));
+    c.scenes =
+        comparison_scenes(field<std::vector<std::string>>(r, "scenes", {}), random_scenes,
+                          int_field(r, "shapes", kDefaultRandomSceneShapes, 0, 1 << 20), c.seed);
+    c.motion = field<std::string>(r, "motion", defaults.motion);
+    c.width = c.height = int_field(r, "size", defaults.width, 1, kMaxPageViewSize);
+    c.frames = int_field(r, "frames", defaults.frames, 0, 1 << 20);
+    c.warmup = int_field(r, "warmup", defaults.warmup, 0, 1 << 20);
+    c.reference.samples =
+        int_field(r, "reference_samples", defaults.reference.samples, 1, kMaxPageReferenceSamples);
+    c.resamples = int_field(r, "resamples", defaults.resamples, 0, 1 << 20);
+    if (r.contains("max_speed")) c.max_speed = finite_field(r, "max_speed");
+    // Either every sequence ("sequences", the first the baseline), or one
+    // ("sequence") against a baseline ("against"; by default the preset's own
+    // jitter, as `aapat sequence search` takes it).
+    std::vector<std::string> specs = field<std::vector<std::string>>(r, "sequences", {});
+    if (r.contains("sequence")) {
+      const std::string against = field<std::string>(r, "against", "");
+      specs = {against.empty() ? c.taa.jitter : against, field<std::string>(r, "sequence", "")};
+    }
+    std::vector<Sequence> sequences;
+    for (const std::string& spec : specs)
+      sequences.push_back(resolve_sequence_for_ratio(spec, ratio, nullptr));
+    validate(c, sequences.size());  // the library's checks, before any render
+    return engine_comparison_json(c, compare_under_engine(sequences, c));
+  });
+}
+
 }  // namespace
 }  // namespace aapat::web
 
@@ -399,4 +448,5 @@ EMSCRIPTEN_BINDINGS(aapat_explorer) {
   emscripten::function("render", &render);
   emscripten::function("points", &points);
   emscripten::function("sequence", &sequence);
+  emscripten::function("engineCompare", &engine_compare);
 }

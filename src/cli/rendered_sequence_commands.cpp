@@ -31,7 +31,7 @@ struct ComparisonOptions {
   std::vector<std::string> scenes, taa_set;
   std::string taa, motion = EngineComparison{}.motion, size = "64";
   double ratio = 1, max_speed = EngineComparison{}.max_speed;
-  int random_scenes = 0, shapes = 6, frames = EngineComparison{}.frames,
+  int random_scenes = 0, shapes = kDefaultRandomSceneShapes, frames = EngineComparison{}.frames,
       warmup = EngineComparison{}.warmup;
   uint64_t seed = 1;
   ReferenceOptions reference;

@@ -677,6 +677,34 @@
     g.fillText('line: steady E2 per frame; bars: flicker into each frame', 4, 12);
   }
 
+  // The sequence against a baseline under an engine preset: the library's
+  // document of `aapat sequence compare --json`; per measure, the scenes where
+  // the sequence is lower, the ratio of the means and the paired interval of
+  // the difference, as the CLI prints them.
+  function runEngineCompare() {
+    const d = call('engineCompare', {
+      sequence: $('sequence').value.trim(), against: $('engine-baseline').value.trim(),
+      taa: $('engine-taa').value, ratio: Number($('engine-ratio').value), motion: $('engine-motion').value,
+      random_scenes: Number($('engine-scenes').value), size: Number($('engine-size').value),
+      frames: 8, warmup: 16, reference_samples: 16,
+    });
+    if (!d) return;
+    showMessage('');
+    state.engine = d;
+    let html = `<tr><th colspan="5">${d.taa_settings}, ${d.motion}, ${d.scenes.length} scenes of ${d.width}x${d.height}</th></tr>`;
+    html += '<tr><th>measure</th><th>lower in</th><th>ratio</th><th>difference</th><th>interval</th></tr>';
+    const rows = [['', d.against_first]].concat(d.against_first_worst ? [['worst ', d.against_first_worst]] : []);
+    for (const [what, list] of rows) {
+      for (const m of d.measures) {
+        const p = list[0][m];
+        html += `<tr data-measure="${what}${m}"><td>${what}${m}</td><td>${p.lower} of ${p.scenes}</td>` +
+          `<td>${p.mean_ratio.toFixed(4)}</td><td>${p.mean_difference.toFixed(5)}</td>` +
+          `<td>[${p.low.toFixed(5)}, ${p.high.toFixed(5)}]</td></tr>`;
+      }
+    }
+    $('engine-table').innerHTML = html;
+  }
+
   // ---- tabs ----------------------------------------------------------------
   function selectTab(name) {
     if (!['pattern', 'points', 'sequences'].includes(name)) {
@@ -716,6 +744,12 @@
     for (const a of reg.api_profiles) $('api').add(new Option(a.name, a.name));
     for (const g of reg.generators) $('generators').appendChild(new Option(g.usage));
     for (const s of reg.sequences.concat(reg.aapat_sequences)) $('sequences').appendChild(new Option(s.usage));
+    for (const p of reg.taa_presets) $('engine-taa').add(new Option(p.name, p.name));
+    for (const m of state.info.comparison_motions) {
+      const o = new Option(m.name, m.name);
+      o.title = m.summary;
+      $('engine-motion').add(o);
+    }
   }
 
   function wire() {
@@ -778,6 +812,7 @@
     on($('opt-cancel'), 'click', () => { stopWorker(); $('opt-status').textContent = 'cancelled'; });
     on($('points-run'), 'click', runPoints);
     on($('sequence-run'), 'click', runSequence);
+    on($('engine-run'), 'click', runEngineCompare);
     on($('frame'), 'input', () => { state.frame = Number($('frame').value); drawSequence(); });
     on($('play'), 'click', () => {
       if (state.playTimer) { clearInterval(state.playTimer); state.playTimer = null; $('play').textContent = 'Play'; return; }

@@ -7,6 +7,8 @@
 //   - a sample dragged with the mouse: the page's E2 == the CLI's for the pattern it shows;
 //   - a sample dropped on a border becomes shared (the family gains its '+');
 //   - every seeded point generator and a seeded optimization: module == CLI, bit for bit;
+//   - engine TAA comparisons (UE4 still, FSR 2 after a cut, Godot at the
+//     resonances): module == CLI (FLIP to 1e-4), and the sequences tab's table;
 //   - an optimization run to the end in the worker == `aapat optimize` with the same seed;
 //   - cancel stops it and the page keeps working;
 //   - every objective form in a link: the CLI's E2, and the same again from the
@@ -75,6 +77,48 @@ for (const objective of ['recommended', 'laine-aila']) {
   }
   const bad = JSON.parse(module.perceptual(JSON.stringify({ pattern: 'msaa-4', objective: 'perceptual:ppd=0' })));
   check(typeof bad.error === 'string' && bad.error.includes('ppd'), `a bad perceptual spec is refused naming ppd: ${bad.error}`);
+}
+
+// Engine TAA in the module and the CLI (`sequence compare --json`): the same
+// document, RMSE and flicker to the bit; FLIP, in float with each platform's
+// powf, expf and cbrtf, to 1e-4 of its value or of 0.01 (its powers below 1 amplify a
+// last-digit difference where a pixel's difference is near 0); a cut and
+// the resonances, and a preset or motion the library refuses, named.
+function compareDocuments(web, native, path, flipTolerance) {
+  if (typeof native === 'number') {  // FLIP's numbers: a path through a key "flip"
+    return /\.flip(\.|$)/.test(path) ? near(web, native, flipTolerance * Math.max(Math.abs(native), 1e-2))
+      : web === native;
+  }
+  if (native && typeof native === 'object') {
+    return Object.keys(native).every((k) => compareDocuments(web?.[k], native[k], `${path}.${k}`, flipTolerance));
+  }
+  return web === native;
+}
+for (const [taa, ratio, motion, sequences] of [
+  ['ue4', 1, 'static', ['ue4-halton:frames=8', 'aapat-ue4-8']],
+  ['fsr2', 1.5, 'cut', ['halton:frames=18', 'aapat-upscale-1.5']],
+  ['godot', 1, 'resonant', ['halton:frames=16', 'aapat-taa-16']]]) {
+  const size = motion === 'resonant' ? 8 : 16;
+  const request = { sequences, taa, ratio, motion, random_scenes: 2, size, frames: 4, warmup: 8, reference_samples: 16, resamples: 200 };
+  const web = JSON.parse(module.engineCompare(JSON.stringify(request)));
+  const native = cli('sequence', 'compare', ...sequences, '--taa', taa, '--ratio', String(ratio), '--motion', motion,
+    '--random-scenes', '2', '--size', String(size), '--frames', '4', '--warmup', '8', '--reference-samples', '16',
+    '--resamples', '200', '--json');
+  check(!web.error && compareDocuments(web, native, '', 1e-4),
+    `engine TAA ${taa} at ${ratio}, ${motion}: module == CLI (${web.error || native.sequences.join(' against ')})`);
+}
+{
+  const base = { sequences: ['halton:frames=8', 'r2:frames=8'], random_scenes: 1, size: 8 };
+  const badPreset = JSON.parse(module.engineCompare(JSON.stringify({ ...base, taa: 'ue5' })));
+  check(/unknown TAA preset 'ue5'/.test(badPreset.error || ''), `engine TAA: an unknown preset is refused: ${badPreset.error}`);
+  const badMotion = JSON.parse(module.engineCompare(JSON.stringify({ ...base, taa: 'ue4', motion: 'sideways' })));
+  check(/motion/.test(badMotion.error || ''), `engine TAA: an unknown motion is refused naming it: ${badMotion.error}`);
+  const one = JSON.parse(module.engineCompare(JSON.stringify({ ...base, taa: 'ue4', sequences: ['halton:frames=8'] })));
+  check(typeof one.error === 'string', `engine TAA: one sequence is refused: ${one.error}`);
+  // One sequence against the preset's own jitter by default.
+  const own = JSON.parse(module.engineCompare(JSON.stringify({ taa: 'bevy', sequence: 'aapat-taa-8', random_scenes: 1, size: 8, frames: 2, warmup: 2, reference_samples: 4 })));
+  check(!own.error && own.sequences[0].startsWith('bevy-halton') && own.sequences[1] === 'aapat-taa-8',
+    `engine TAA: a sequence against the preset's own jitter by default: ${own.error || own.sequences.join(' against ')}`);
 }
 
 // Same seed, same output on every platform: each point generator, seeded, in
@@ -273,6 +317,17 @@ try {
   const worstShown = await page.$eval('#sequence-table', (t) => [...t.rows].find((r) => r.cells[0].textContent === 'worst_e2').cells[1].textContent);
   const worstNative = cli('sequence', 'eval', 'aapat-taa-8', '--json').rows[0].worst_e2;
   check(worstShown === worstNative.toFixed(4), `sequences tab: aapat-taa-8 under EMA 0.1: worst E2 ${worstShown} (CLI ${worstNative.toFixed(6)})`);
+
+  // The sequences tab's engine comparison: the CLI's paired comparison.
+  await page.$eval('#engine-scenes', (e) => { e.value = '2'; });
+  await page.$eval('#engine-size', (e) => { e.value = '16'; });
+  await page.select('#engine-taa', 'ue4');
+  await page.click('#engine-run');
+  await page.waitForFunction(() => document.getElementById('engine-table').rows.length > 2, { timeout: 60000 });
+  const rmseRow = await page.$eval('#engine-table', (t) => [...t.rows].find((r) => r.dataset.measure === 'rmse').cells[2].textContent);
+  const nativeRatio = cli('sequence', 'compare', 'ue4-halton:frames=8', 'aapat-taa-8', '--taa', 'ue4', '--random-scenes', '2',
+    '--size', '16', '--frames', '8', '--warmup', '16', '--reference-samples', '16', '--json').against_first[0].rmse.mean_ratio;
+  check(rmseRow === nativeRatio.toFixed(4), `sequences tab under UE4: aapat-taa-8 against UE4's jitter, RMSE ratio ${rmseRow} (CLI ${nativeRatio.toFixed(6)})`);
 
   // Bad input: each shows a message naming the problem.
   const bad = join(tmp, 'not-a-pattern.json');

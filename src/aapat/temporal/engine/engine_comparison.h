@@ -105,6 +105,9 @@ struct EngineComparisonResult {
   std::vector<SequencePairs> against_first, against_first_worst;
 };
 
+// Shapes in each generated scene unless a face is told otherwise.
+inline constexpr int kDefaultRandomSceneShapes = 6;
+
 // "random-shapes:count=SHAPES,seed=SEED+i" for i = 0 .. count-1. Throws
 // ParameterError naming "random-scenes" or "shapes" out of range.
 std::vector<std::string> random_scene_specs(int count, int shapes, uint64_t seed);
