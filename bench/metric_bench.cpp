@@ -44,31 +44,32 @@ BENCHMARK_CAPTURE(E2Evaluation, lanczos3_180_angles, "lanczos:lobes=3", "uniform
 
 // The perceptual objective (study/perceptual_objective.h) of a 4-sample
 // pattern on one core, beside E2's: every chart rendered and compared by
-// FLIP. Arg: the spec's angles (16, the default, and 8).
-void PerceptualEvaluation(benchmark::State& state) {
+// FLIP; with kGradient also its weight gradient (FLIP run backwards through
+// every chart), for `aapat refine --weight-steps`. Arg: the spec's angles
+// (16, the default, and 8).
+template <bool kGradient>
+void PerceptualObjectiveBench(benchmark::State& state) {
   const tbb::global_control one_core(tbb::global_control::max_allowed_parallelism, 1);
   PerceptualSpec spec;
   spec.angles = static_cast<int>(state.range(0));
   const PerceptualObjective objective(spec);
   const Pattern p = catalog_pattern("msaa-4");
-  for (auto _ : state) benchmark::DoNotOptimize(objective(p));
+  for (auto _ : state) {
+    if constexpr (kGradient)
+      benchmark::DoNotOptimize(objective.gradient(p));
+    else
+      benchmark::DoNotOptimize(objective(p));
+  }
   state.SetItemsProcessed(state.iterations());
   state.counters["charts"] = objective.chart_count();
+}
+void PerceptualEvaluation(benchmark::State& state) {
+  PerceptualObjectiveBench<false>(state);
+}
+void PerceptualGradientEvaluation(benchmark::State& state) {
+  PerceptualObjectiveBench<true>(state);
 }
 BENCHMARK(PerceptualEvaluation)->Arg(16)->Arg(8)->Unit(benchmark::kMillisecond);
-
-// Its value and weight gradient (FLIP run backwards through every chart),
-// for `aapat refine --weight-steps`; the same pattern and core.
-void PerceptualGradientEvaluation(benchmark::State& state) {
-  const tbb::global_control one_core(tbb::global_control::max_allowed_parallelism, 1);
-  PerceptualSpec spec;
-  spec.angles = static_cast<int>(state.range(0));
-  const PerceptualObjective objective(spec);
-  const Pattern p = catalog_pattern("msaa-4");
-  for (auto _ : state) benchmark::DoNotOptimize(objective.gradient(p));
-  state.SetItemsProcessed(state.iterations());
-  state.counters["charts"] = objective.chart_count();
-}
 BENCHMARK(PerceptualGradientEvaluation)->Arg(16)->Unit(benchmark::kMillisecond);
 
 // 4 samples at 180 angles on each SIMD path this processor runs (pinned in
