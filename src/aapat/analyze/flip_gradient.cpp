@@ -256,9 +256,17 @@ FlipGradient run(const FlipReference& reference, int w, int h, const std::vector
   return out;
 }
 
+void check_gradient_size(int w, int h) {
+  if (static_cast<size_t>(w) * static_cast<size_t>(h) > kMaxFlipGradientPixels)
+    throw ParameterError("size", fmt::format(": FLIP's gradient of {}x{} pixels is past the "
+                                             "limit of {} (about 250 bytes a pixel)",
+                                             w, h, kMaxFlipGradientPixels));
+}
+
 }  // namespace
 
 FlipGradient flip_gradient(const FlipReference& reference, const ColorImage& test) {
+  check_gradient_size(test.width, test.height);
   if (reference.width != test.width || reference.height != test.height || test.pixels() == 0)
     return {flip(reference, test).mean, {}};  // throws, naming the sizes
   return run(reference, test.width, test.height, test.rgb, true);
@@ -266,6 +274,7 @@ FlipGradient flip_gradient(const FlipReference& reference, const ColorImage& tes
 
 FlipGradient flip_gradient_in_double(const FlipReference& reference, const std::vector<double>& rgb,
                                      bool gradient) {
+  check_gradient_size(reference.width, reference.height);
   const size_t pixels = static_cast<size_t>(reference.width) * reference.height;
   if (pixels == 0 || rgb.size() != 3 * pixels)
     throw Error(fmt::format("FLIP: {} test values for a {}x{} reference; expected three per pixel",

@@ -31,8 +31,13 @@ struct FlipGradient {
   std::vector<double> d_rgb;  // d mean / d test.rgb[k], for every value of the test image
 };
 
-// Throws as flip() does. Works on whole planes in double: about 250 bytes
-// per pixel, so meant for the objective's charts, not for 4K frames.
+// Works on whole planes, about 250 bytes per pixel: at most this many pixels
+// (2048 x 2048, about 1 GiB), meant for the objective's charts (at most
+// 256 x 256), not for 4K frames.
+inline constexpr size_t kMaxFlipGradientPixels = size_t{1} << 22;
+
+// Throws as flip() does, and ParameterError ("size") past
+// kMaxFlipGradientPixels.
 FlipGradient flip_gradient(const FlipReference& reference, const ColorImage& test);
 
 // The same in double from test values in double (`rgb`: three per pixel,
@@ -40,7 +45,7 @@ FlipGradient flip_gradient(const FlipReference& reference, const ColorImage& tes
 // float's rounding (the same mean to about 1e-7), so that central
 // differences at small steps check the gradient where float's would be
 // noise. Without `gradient`, the mean alone. Throws Error for a size
-// mismatch.
+// mismatch, ParameterError ("size") past kMaxFlipGradientPixels.
 FlipGradient flip_gradient_in_double(const FlipReference& reference, const std::vector<double>& rgb,
                                      bool gradient = true);
 

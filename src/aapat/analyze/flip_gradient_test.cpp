@@ -113,6 +113,14 @@ TEST(FlipGradient, MatchesFiniteDifferencesOnThinFeatures) {
   expect_matches_differences(prepare_flip_reference(ref, 67.02), test, d, 1e-2);
 }
 
+// An image past the limit is refused by name before its planes are made.
+TEST(FlipGradient, RefusesImagesPastTheLimit) {
+  const FlipReference ref{2049, 2048, 67.02, {}, {}, {}, {}, {}};
+  EXPECT_THROW(flip_gradient_in_double(ref, std::vector<double>(6), false), ParameterError);
+  const FlipReference small{2, 1, 67.02, {}, {}, {}, {}, {}};
+  EXPECT_THROW(flip_gradient_in_double(small, std::vector<double>(5)), Error);
+}
+
 // An image against itself is FLIP's minimum: every difference is 0 and the
 // gradient, taken as 0 there, is 0.
 TEST(FlipGradient, IsZeroAtTheReference) {

@@ -8,6 +8,7 @@
 
 #include "aapat/analyze/discrepancy.h"
 #include "aapat/analyze/flip.h"
+#include "aapat/analyze/flip_gradient.h"
 #include "aapat/analyze/spectrum.h"
 #include "aapat/core/acuity.h"
 #include "aapat/core/filter.h"
@@ -206,6 +207,10 @@ std::vector<Limit> make_table() {
                    grouped(kMaxColorImagePixels), number(kMinPixelsPerDegree),
                    number(kMaxPixelsPerDegree)),
        "`kMaxColorImagePixels`, `io/png_image.h`; `kMaxPixelsPerDegree`, `analyze/flip.h`"},
+      {"FLIP's gradient (the perceptual objective's weight gradient)",
+       fmt::format("at most {} pixels an image (about 250 bytes each in its planes)",
+                   grouped(kMaxFlipGradientPixels)),
+       "`kMaxFlipGradientPixels`, `analyze/flip_gradient.h`"},
       {"optimizer",
        fmt::format("starts 1 to {}, iterations 1 to {}, lattice 1/{} to 1/{} pixel",
                    grouped(kMaxStarts), grouped(kMaxIterations), kMinLatticeSteps,
