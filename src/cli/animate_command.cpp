@@ -262,6 +262,8 @@ void run_animate(AnimateOptions& o, std::ostream& out, bool ratio_given) {
     sequence = resolve_sequence_for_ratio(o.sequence.empty() ? taa->jitter : o.sequence, o.ratio,
                                           ratio_given ? &warning : nullptr);
     if (!warning.empty()) std::cerr << "aapat: warning: " << warning << "\n";
+    for (const std::string& w : engine_sequence_warnings(*sequence, *taa))
+      std::cerr << "aapat: warning: " << w << "\n";
   } else if (o.sequence.empty()) {
     s.pattern = resolve_pattern(o.pattern);
   } else {

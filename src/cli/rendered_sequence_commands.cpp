@@ -128,6 +128,7 @@ void add_sequence_compare(CLI::App* parent, std::function<void(std::ostream&)>& 
       Progress bar("compare");
       r = compare_under_engine(sequences, c, o->comparison.reference.source(), bar.callback());
     }
+    for (const std::string& w : r.warnings) warnings() << "aapat: warning: " << w << "\n";
     if (o->json) {
       out << json_text(engine_comparison_json(c, r));
       return;

@@ -192,6 +192,33 @@ TEST(SequenceCli, TemporalRenderingReportsEveryMeasure) {
   EXPECT_LT(doc["mean_flip"].get<double>(), 1);
 }
 
+// A sequence FSR 2 would not run (a null jitter: Bevy 0.17's centre frame)
+// is compared as given, with a warning that names the rule, on stderr and
+// in the JSON; a sequence FSR 2 runs draws none.
+TEST(SequenceCli, FsrsNullJitterIsWarned) {
+  const std::vector<std::string> common = {
+      "--taa",    "fsr2", "--ratio",  "1.5", "--random-scenes",     "1", "--size",     "8",
+      "--frames", "2",    "--warmup", "2",   "--reference-samples", "4", "--no-cache", "--json"};
+  std::vector<std::string> args = {"sequence", "compare", "halton:frames=18",
+                                   "bevy-halton:frames=18"};
+  args.insert(args.end(), common.begin(), common.end());
+  const auto r = run(args);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(
+      r.err.find("bevy-halton:frames=18: frame 0's jitter is (0, 0), which FSR 2 never takes"),
+      std::string::npos)
+      << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  ASSERT_EQ(doc["warnings"].size(), 1u);
+  EXPECT_NE(doc["warnings"][0].get<std::string>().find("ffxFsr2GetJitterOffset"),
+            std::string::npos);
+  args[3] = "r2:frames=18";
+  const auto clean = run(args);
+  ASSERT_EQ(clean.code, 0) << clean.err;
+  EXPECT_EQ(clean.err.find("never takes"), std::string::npos) << clean.err;
+  EXPECT_FALSE(nlohmann::json::parse(clean.out).contains("warnings"));
+}
+
 // Every refusal names the problem, exits non-zero and leaves no file.
 TEST(SequenceCli, BadInputIsNamedAndWritesNothing) {
   const std::string out = temp_path("never.json");

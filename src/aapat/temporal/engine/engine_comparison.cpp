@@ -170,7 +170,10 @@ EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequenc
   validate(c, sequences.size());
   PreparedScenes prepared(c, references);
   EngineComparisonResult r;
-  for (const Sequence& s : sequences) r.sequences.push_back(s.name);
+  for (const Sequence& s : sequences) {
+    r.sequences.push_back(s.name);
+    for (std::string& w : engine_sequence_warnings(s, c.taa)) r.warnings.push_back(std::move(w));
+  }
   if (c.motion == "resonant") r.velocities = resonant_velocities();
   const int renders = static_cast<int>(sequences.size() * c.scenes.size());
   int done = 0;
@@ -284,6 +287,7 @@ JsonObject engine_comparison_json(const EngineComparison& c, const EngineCompari
   doc["scenes"] = scenes;
   doc["against_first"] = against(r.against_first);
   if (!r.against_first_worst.empty()) doc["against_first_worst"] = against(r.against_first_worst);
+  if (!r.warnings.empty()) doc["warnings"] = r.warnings;
   return doc;
 }
 

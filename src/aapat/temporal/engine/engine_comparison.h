@@ -98,6 +98,8 @@ using SequencePairs = std::array<PairedComparison, kComparisonMeasures.size()>;
 
 struct EngineComparisonResult {
   std::vector<std::string> sequences;
+  // What the preset's engine would not run (engine_sequence_warnings).
+  std::vector<std::string> warnings;
   std::vector<Vec2> velocities;  // resonant: render pixels per frame
   std::vector<ComparedScene> scenes;
   // Each sequence after the first against the first, per measure: the
@@ -171,7 +173,8 @@ EngineComparisonResult compare_under_engine(const std::vector<Sequence>& sequenc
 // worst_velocity_at {MEASURE: [x, y]}, per_velocity [{rmse, flicker,
 // flip}]}]}], and against_first (and after a cut or resonant,
 // against_first_worst: each scene's worst) [{sequence, against, MEASURE:
-// {lower, ties, scenes, mean_difference, low, high, mean_ratio, sign_p}}].
+// {lower, ties, scenes, mean_difference, low, high, mean_ratio, sign_p}}],
+// and warnings [text] when there are any.
 JsonObject engine_comparison_json(const EngineComparison& c, const EngineComparisonResult& r);
 
 // The settings every rendered comparison reports: taa, taa_settings, ratio,

@@ -142,6 +142,21 @@ Sequence engine_samples(const Sequence& s, const EngineTaa& t) {
   return mirrored;
 }
 
+std::vector<std::string> engine_sequence_warnings(const Sequence& s, const EngineTaa& t) {
+  std::vector<std::string> out;
+  if (t.resolve != TaaResolve::fsr2_2) return out;
+  for (size_t f = 0; f < s.frames.size(); ++f)
+    for (const auto& set : s.frames[f].sets)
+      if (std::any_of(set.begin(), set.end(), [](Vec2 p) { return p.x == 0 && p.y == 0; })) {
+        out.push_back(
+            fmt::format("{}: frame {}'s jitter is (0, 0), which FSR 2 never takes "
+                        "(ffxFsr2GetJitterOffset draws Halton from index 1)",
+                        s.name, f));
+        break;
+      }
+  return out;
+}
+
 std::vector<std::pair<std::string, std::string>> parse_taa_overrides(
     const std::vector<std::string>& items) {
   std::vector<std::pair<std::string, std::string>> out;

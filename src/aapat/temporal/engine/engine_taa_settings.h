@@ -83,6 +83,12 @@ double box_gamma(const EngineTaa& t, double speed);
 // The sequence as the preset places its samples: each offset times jitter_sign.
 Sequence engine_samples(const Sequence& s, const EngineTaa& t);
 
+// What the preset's engine would not run of a sequence, as warnings (the
+// sequence is still rendered as given): under FSR 2, a frame whose jitter
+// is exactly (0, 0), which FSR 2 never takes (its Halton starts at index 1,
+// and its docs ask for no null vector).
+std::vector<std::string> engine_sequence_warnings(const Sequence& s, const EngineTaa& t);
+
 // "KEY=VALUE" items (`--taa-set`) as make_engine_taa's overrides; throws
 // ParameterError naming taa-set for an item without a key and an '='.
 std::vector<std::pair<std::string, std::string>> parse_taa_overrides(

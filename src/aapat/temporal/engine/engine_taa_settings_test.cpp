@@ -115,6 +115,19 @@ TEST(EngineTaaSettings, SettingsAPresetDoesNotReadAreRefused) {
 }
 
 // Unreal Engine 4's warp keeps every jitter within the pixel, at angle 2 pi h3(i).
+// FSR 2 never takes a null jitter: a sequence with one is named, frame and
+// rule; the other presets take it (Bevy 0.17 starts with it).
+TEST(EngineTaaSettings, FsrsNullJitterIsNamed) {
+  const Sequence bevy = make_sequence("bevy-halton:frames=8");
+  const std::vector<std::string> w = engine_sequence_warnings(bevy, make_engine_taa("fsr2", 1.5));
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("frame 0's jitter is (0, 0)"), std::string::npos) << w[0];
+  EXPECT_TRUE(engine_sequence_warnings(bevy, make_engine_taa("bevy", 1)).empty());
+  EXPECT_TRUE(
+      engine_sequence_warnings(make_sequence("halton:frames=8"), make_engine_taa("fsr2", 1.5))
+          .empty());
+}
+
 TEST(EngineTaaSettings, Ue4HaltonIsAWindowedGaussianWarp) {
   const Sequence s = make_sequence("ue4-halton:frames=8");
   ASSERT_EQ(s.period(), 8);
