@@ -529,6 +529,14 @@ def test_sequence_compare_is_the_cli_study(aapat_cli):
     assert cli["scenes"][0]["scene"] == "random-shapes:count=4,seed=3"
     with pytest.raises(aapat.Error, match="scenes"):
         aapat.sequence_compare(["r2", "halton"], taa="bevy")
+    # A sequence FSR 2 would not run: the same warning on both faces.
+    null = ["halton:frames=18", "bevy-halton:frames=18"]
+    cli = cli_json(aapat_cli, "sequence", "compare", *null, "--taa", "fsr2", "--ratio", "1.5",
+                   "--random-scenes", "1", "--size", "8", "--frames", "2", "--warmup", "2",
+                   "--reference-samples", "4")
+    py = aapat.sequence_compare(null, taa="fsr2", ratio=1.5, random_scenes=1, size=(8, 8),
+                                frames=2, warmup=2, reference_samples=4)
+    assert py["warnings"] == cli["warnings"] and "never takes" in cli["warnings"][0]
 
 
 def test_sequence_compare_at_the_resonances_is_the_cli_study(aapat_cli):
