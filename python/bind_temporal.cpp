@@ -292,7 +292,8 @@ render px/frame) and against_first (after a cut or resonant also
 against_first_worst, on each scene's worst) [{sequence, against,
 rmse|flicker|flip: {lower, ties, scenes, mean_difference, low, high,
 mean_ratio, sign_p}}] (a paired bootstrap interval over the scenes and an
-exact sign test). progress: a callable f(done, total, note) called after each
+exact sign test), and warnings [text] when the preset's engine would not run a
+sequence as given (FSR 2: a null jitter). progress: a callable f(done, total, note) called after each
 render, or None.)doc";
   m.def(
       "sequence_compare",
