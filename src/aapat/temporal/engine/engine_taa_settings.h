@@ -5,7 +5,8 @@
 //   reconstruct        filter spec: each frame's samples into display pixels
 //                      (distances in render pixels; box:width=1 is the
 //                      render pixel's own sample)
-//   history            bilinear, catmull-rom-9, catmull-rom-5, lanczos2
+//   history            bilinear, catmull-rom-9, catmull-rom-5,
+//                      catmull-rom-5-normalized, lanczos2
 //   rectify            none, clamp, clip;  box  minmax, variance;  gamma
 //   alpha              a fixed current-frame weight (sets alpha_min = alpha_max)
 //   alpha_min, alpha_max, count_step, count_max, count_max_motion

@@ -9,10 +9,11 @@
 namespace aapat {
 namespace {
 
-constexpr std::array<std::pair<HistorySampler, std::string_view>, 4> kNames{{
+constexpr std::array<std::pair<HistorySampler, std::string_view>, 5> kNames{{
     {HistorySampler::bilinear, "bilinear"},
     {HistorySampler::catmull_rom_9, "catmull-rom-9"},
     {HistorySampler::catmull_rom_5, "catmull-rom-5"},
+    {HistorySampler::catmull_rom_5_normalized, "catmull-rom-5-normalized"},
     {HistorySampler::lanczos2, "lanczos2"},
 }};
 
@@ -100,6 +101,7 @@ std::array<double, 16> history_taps(HistorySampler sampler, Vec2 f) {
       break;
     case HistorySampler::catmull_rom_9:
     case HistorySampler::catmull_rom_5:
+    case HistorySampler::catmull_rom_5_normalized:
       wx = catmull_rom(f.x);
       wy = catmull_rom(f.y);
       break;
@@ -111,7 +113,14 @@ std::array<double, 16> history_taps(HistorySampler sampler, Vec2 f) {
   std::array<double, 16> w{};
   for (size_t b = 0; b < 4; ++b)
     for (size_t a = 0; a < 4; ++a) w[b * 4 + a] = wx[a] * wy[b];
-  if (sampler == HistorySampler::catmull_rom_5) w[0] = w[3] = w[12] = w[15] = 0;
+  if (sampler == HistorySampler::catmull_rom_5 ||
+      sampler == HistorySampler::catmull_rom_5_normalized)
+    w[0] = w[3] = w[12] = w[15] = 0;
+  if (sampler == HistorySampler::catmull_rom_5_normalized) {
+    double sum = 0;
+    for (const double v : w) sum += v;
+    for (double& v : w) v /= sum;
+  }
   return w;
 }
 
@@ -125,18 +134,26 @@ void sample_history(const Plane& h, Vec2 p, HistorySampler sampler, double* out)
     case HistorySampler::catmull_rom_9:
       separable4(h, p, catmull_rom(fx), catmull_rom(fy), out);
       return;
-    case HistorySampler::catmull_rom_5: {
+    case HistorySampler::catmull_rom_5:
+    case HistorySampler::catmull_rom_5_normalized: {
       // The middle two texels of each axis in one bilinear fetch at
       // floor(p) + w2 / (w1 + w2); the far ones alone; the corners left out.
       const auto wx = catmull_rom(fx), wy = catmull_rom(fy);
       const double w12x = wx[1] + wx[2], w12y = wy[1] + wy[2];
       const double x0 = std::floor(p.x), y0 = std::floor(p.y);
       const Vec2 c12{x0 + wx[2] / w12x, y0 + wy[2] / w12y};
-      bilinear(h, {c12.x, y0 - 1}, w12x * wy[0], out);
-      bilinear(h, {x0 - 1, c12.y}, wx[0] * w12y, out);
-      bilinear(h, c12, w12x * w12y, out);
-      bilinear(h, {x0 + 2, c12.y}, wx[3] * w12y, out);
-      bilinear(h, {c12.x, y0 + 2}, w12x * wy[3], out);
+      const double weights[5] = {w12x * wy[0], wx[0] * w12y, w12x * w12y, wx[3] * w12y,
+                                 w12x * wy[3]};
+      bilinear(h, {c12.x, y0 - 1}, weights[0], out);
+      bilinear(h, {x0 - 1, c12.y}, weights[1], out);
+      bilinear(h, c12, weights[2], out);
+      bilinear(h, {x0 + 2, c12.y}, weights[3], out);
+      bilinear(h, {c12.x, y0 + 2}, weights[4], out);
+      if (sampler == HistorySampler::catmull_rom_5_normalized) {
+        // Unreal multiplies the sum by 1 / (the five weights' sum).
+        const double sum = weights[0] + weights[1] + weights[2] + weights[3] + weights[4];
+        for (int c = 0; c < h.channels; ++c) out[c] /= sum;
+      }
       return;
     }
     case HistorySampler::lanczos2:

@@ -7,6 +7,10 @@
 //    exactly with bilinear fetches;
 //  - catmull-rom-5: that form without its four corner fetches and not
 //    renormalized, as Bevy's TAA does (its weights sum to 1 minus the corners');
+//  - catmull-rom-5-normalized: the same five fetches divided by their
+//    weights' sum, as Unreal's GetBicubic2DCatmullRomSamples does ("Reweight
+//    after removing the corners", its FinalMultiplier) for the history of
+//    its TemporalAA.usf;
 //  - lanczos2: the 4x4 texels weighted by sinc(x) sinc(x/2), normalized (FSR 2).
 // Catmull-Rom and Lanczos overshoot: their results are not clamped here.
 #pragma once
@@ -20,7 +24,13 @@
 
 namespace aapat {
 
-enum class HistorySampler { bilinear, catmull_rom_9, catmull_rom_5, lanczos2 };
+enum class HistorySampler {
+  bilinear,
+  catmull_rom_9,
+  catmull_rom_5,
+  catmull_rom_5_normalized,
+  lanczos2
+};
 
 // The names the parser reads and reports give: "bilinear", "catmull-rom-9", ...
 HistorySampler parse_history_sampler(std::string_view name);
@@ -39,7 +49,7 @@ struct Plane {
 // The weight each sampler gives the 4x4 texels floor(p) - 1 .. floor(p) + 2
 // (x inner, y outer) at the fraction p - floor(p): the linear map that
 // sample_history evaluates with its fetches (Catmull-Rom 5 is the 4x4 spline
-// without its corners; bilinear uses the middle 2x2). The linear model of TAA
+// without its corners, normalized or not; bilinear uses the middle 2x2). The linear model of TAA
 // under a pan (pan_model.h) composes it frame after frame.
 std::array<double, 16> history_taps(HistorySampler sampler, Vec2 fraction);
 

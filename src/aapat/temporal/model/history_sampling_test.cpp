@@ -15,8 +15,9 @@ TEST(HistorySampling, AreWhatSampleHistoryFetches) {
   std::uniform_real_distribution<double> u(0, 1);
   Plane img{12, 12, 1, {}};
   for (int i = 0; i < 144; ++i) img.values.push_back(u(rng));
-  for (const auto s : {HistorySampler::bilinear, HistorySampler::catmull_rom_9,
-                       HistorySampler::catmull_rom_5, HistorySampler::lanczos2})
+  for (const auto s :
+       {HistorySampler::bilinear, HistorySampler::catmull_rom_9, HistorySampler::catmull_rom_5,
+        HistorySampler::catmull_rom_5_normalized, HistorySampler::lanczos2})
     for (int trial = 0; trial < 50; ++trial) {
       const Vec2 p{3 + 5 * u(rng), 3 + 5 * u(rng)};
       double fetched = 0;
@@ -40,8 +41,9 @@ Plane ramp(int w, int h) {
 
 TEST(HistorySampling, EverySamplerReadsATexelAtItsCentre) {
   const Plane p = ramp(8, 7);
-  for (const auto s : {HistorySampler::bilinear, HistorySampler::catmull_rom_9,
-                       HistorySampler::catmull_rom_5, HistorySampler::lanczos2}) {
+  for (const auto s :
+       {HistorySampler::bilinear, HistorySampler::catmull_rom_9, HistorySampler::catmull_rom_5,
+        HistorySampler::catmull_rom_5_normalized, HistorySampler::lanczos2}) {
     double v = 0;
     sample_history(p, {3, 4}, s, &v);
     EXPECT_NEAR(v, 0.25 * 3 - 0.5 * 4 + 3, 1e-12) << history_sampler_name(s);
@@ -65,13 +67,26 @@ TEST(HistorySampling, BilinearAndCatmullRomReproduceALinearRamp) {
     EXPECT_NEAR(c, exact, 1e-12);
   }
   // A constant: Lanczos-2 is normalized, the 5-tap form loses the corners'
-  // weight w0 w0 + w0 w3 + w3 w0 + w3 w3 (at f = 1/2: 4 (1/16)^2).
+  // weight w0 w0 + w0 w3 + w3 w0 + w3 w3 (at f = 1/2: 4 (1/16)^2), and
+  // Unreal's reweighting gives it back: the constant at every fraction.
   Plane one{6, 6, 1, std::vector<double>(36, 1.0)};
   double l = 0, c5 = 0;
   sample_history(one, {2.5, 2.5}, HistorySampler::lanczos2, &l);
   sample_history(one, {2.5, 2.5}, HistorySampler::catmull_rom_5, &c5);
   EXPECT_NEAR(l, 1, 1e-12);
   EXPECT_NEAR(c5, 1 - 4.0 / 256, 1e-12);
+  for (int k = 0; k < 20; ++k) {
+    const Vec2 q{u(rng) / 2, u(rng) / 2};
+    double n = 0;
+    sample_history(one, q, HistorySampler::catmull_rom_5_normalized, &n);
+    EXPECT_NEAR(n, 1, 1e-12) << q.x << " " << q.y;
+  }
+  // At f = 1/2 it is the 5-tap form over 1 - 4/256.
+  double n = 0;
+  sample_history(p, {4.5, 4.5}, HistorySampler::catmull_rom_5_normalized, &n);
+  double raw = 0;
+  sample_history(p, {4.5, 4.5}, HistorySampler::catmull_rom_5, &raw);
+  EXPECT_NEAR(n, raw / (1 - 4.0 / 256), 1e-12);
 }
 
 }  // namespace
