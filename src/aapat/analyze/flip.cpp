@@ -228,13 +228,9 @@ FlipResult flip(const FlipReference& reference, const ColorImage& test) {
       float color = std::pow(fm::hyab(fm::Vec3f{reference.l[p], reference.a[p], reference.b[p]},
                                       fm::Vec3f{t.l[q], t.a[q], t.b[q]}),
                              fm::kQc);
-      // Distances below the knee map to [0, pt], the rest to (pt, 1].
-      color = color < knee ? color * fm::kPt / knee
-                           : fm::kPt + (color - knee) / (cmax - knee) * (1 - fm::kPt);
-      const float feature = std::pow(std::max(std::abs(reference.edge[p] - t.edge[q]),
-                                              std::abs(reference.point[p] - t.point[q])) /
-                                         std::sqrt(2.0f),
-                                     fm::kQf);
+      color = fm::remapped_color(color, knee, cmax);
+      const float feature =
+          fm::feature_difference(reference.edge[p] - t.edge[q], reference.point[p] - t.point[q]);
       r.map[p] = std::pow(color, 1 - feature);
     }
   });

@@ -172,13 +172,11 @@ FlipGradient run(const FlipReference& reference, int w, int h, const std::vector
       const V v = fm::hunt(fm::xyz_to_lab(fm::rgb_to_xyz(rgbc)));
       const V ref = {reference.l[p], reference.a[p], reference.b[p]};
       const T c0_f = std::pow(fm::hyab(ref, v), T(fm::kQc));
-      const T color_f = c0_f < knee_f
-                            ? c0_f * T(fm::kPt) / knee_f
-                            : T(fm::kPt) + (c0_f - knee_f) / (cmax_f - knee_f) * (1 - T(fm::kPt));
+      const T color_f = fm::remapped_color(c0_f, knee_f, cmax_f);
       const T edge = std::hypot(dxy.at(i, j), dyx.at(i, j)),
               point = std::hypot(ddxy.at(i, j), ddyx.at(i, j));
       const T de = edge - reference.edge[p], dp = point - reference.point[p];
-      const T feat_f = std::pow(std::max(std::abs(de), std::abs(dp)) / std::sqrt(T(2)), T(fm::kQf));
+      const T feat_f = fm::feature_difference(de, dp);
       sum += std::pow(color_f, 1 - feat_f);
       if (!gradient) continue;
       // The gradient, from flip()'s values.

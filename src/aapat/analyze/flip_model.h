@@ -89,6 +89,20 @@ T hyab(Vec3<T> a, Vec3<T> b) {
 // says why it is computed at run time).
 float max_color_distance();
 
+// Step 3's end: the HyAB distance raised to qc (c0), remapped to [0, 1]:
+// below the knee (pc of the largest, `cmax`) to [0, pt], the rest to (pt, 1].
+template <class T>
+T remapped_color(T c0, T knee, T cmax) {
+  return c0 < knee ? c0 * T(kPt) / knee : T(kPt) + (c0 - knee) / (cmax - knee) * (1 - T(kPt));
+}
+
+// Step 4's end: the larger difference of the edge and point strengths (de,
+// dp: test minus reference, or the other way), over sqrt 2, raised to qf.
+template <class T>
+T feature_difference(T de, T dp) {
+  return std::pow(std::max(std::abs(de), std::abs(dp)) / std::sqrt(T(2)), T(kQf));
+}
+
 // A 1D filter with taps at offsets -radius .. radius.
 struct Taps {
   int radius = 0;
