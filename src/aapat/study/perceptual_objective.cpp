@@ -243,7 +243,13 @@ PerceptualGradient PerceptualObjective::differentiate(const Pattern& pattern, bo
   Sampling sampling;
   sampling.pattern = pattern;
   std::vector<Kernel> kernels;
-  for (int k = 0; k < pattern.set_count(); ++k) kernels.push_back(make_kernel(pattern, k));
+  std::vector<double> weight_sums;  // each kernel's raw weights' sum (make_kernel divides by it)
+  for (int k = 0; k < pattern.set_count(); ++k) {
+    kernels.push_back(make_kernel(pattern, k));
+    double sum = 0;
+    for (double w : pattern.weights[static_cast<size_t>(k)]) sum += w;
+    weight_sums.push_back(sum);
+  }
   const std::vector<double> shares = chart_shares();
   const int side = spec_.patch;
   std::vector<double> flips(charts_.size());
@@ -280,8 +286,7 @@ PerceptualGradient PerceptualObjective::differentiate(const Pattern& pattern, bo
         if (d_pixel == 0) continue;
         const int k = set_index(pattern, i, j);
         const Kernel& kernel = kernels[static_cast<size_t>(k)];
-        double sum = 0;
-        for (double w : pattern.weights[static_cast<size_t>(k)]) sum += w;
+        const double sum = weight_sums[static_cast<size_t>(k)];
         for (int r = 0; r < kernel.size(); ++r) {
           const double v =
               shade(scene, {i + image.offset + kernel.x[r], j + image.offset + kernel.y[r]});
