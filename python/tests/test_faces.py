@@ -537,6 +537,9 @@ def test_sequence_compare_is_the_cli_study(aapat_cli):
     py = aapat.sequence_compare(null, taa="fsr2", ratio=1.5, random_scenes=1, size=(8, 8),
                                 frames=2, warmup=2, reference_samples=4)
     assert py["warnings"] == cli["warnings"] and "never takes" in cli["warnings"][0]
+    animated = aapat.engine_taa("spiral", taa="fsr2", ratio=1.5, sequence="bevy-halton:frames=18",
+                                size=(16, 16), frames=2, reference_samples=4)
+    assert animated["warnings"] == cli["warnings"]
 
 
 def test_sequence_compare_at_the_resonances_is_the_cli_study(aapat_cli):

@@ -193,8 +193,8 @@ TEST(SequenceCli, TemporalRenderingReportsEveryMeasure) {
 }
 
 // A sequence FSR 2 would not run (a null jitter: Bevy 0.17's centre frame)
-// is compared as given, with a warning that names the rule, on stderr and
-// in the JSON; a sequence FSR 2 runs draws none.
+// is compared and animated as given, with a warning that names the rule, on
+// stderr and in the JSON; a sequence FSR 2 runs draws none.
 TEST(SequenceCli, FsrsNullJitterIsWarned) {
   const std::vector<std::string> common = {
       "--taa",    "fsr2", "--ratio",  "1.5", "--random-scenes",     "1", "--size",     "8",
@@ -217,6 +217,12 @@ TEST(SequenceCli, FsrsNullJitterIsWarned) {
   ASSERT_EQ(clean.code, 0) << clean.err;
   EXPECT_EQ(clean.err.find("never takes"), std::string::npos) << clean.err;
   EXPECT_FALSE(nlohmann::json::parse(clean.out).contains("warnings"));
+  // animate's document (Python's engine_taa) carries the same warning.
+  const auto animated = run({"animate", "spiral", "--taa", "fsr2", "--ratio", "1.5", "--sequence",
+                             "bevy-halton:frames=18", "--size", "16", "--frames", "2",
+                             "--reference-samples", "4", "--no-cache", "--json"});
+  ASSERT_EQ(animated.code, 0) << animated.err;
+  EXPECT_EQ(nlohmann::json::parse(animated.out)["warnings"], doc["warnings"]);
 }
 
 // Every refusal names the problem, exits non-zero and leaves no file.

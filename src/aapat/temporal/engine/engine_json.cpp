@@ -33,6 +33,9 @@ JsonObject engine_taa_json(std::string_view scene, const EngineRun& run, const S
                         {"ghosting", r.ghosting},
                         {"sharpness", r.sharpness},
                         {"rows", rows}});
+  // What the preset's engine would not run of the sequence, as the
+  // comparison's document reports it.
+  if (const auto w = engine_sequence_warnings(s, taa); !w.empty()) doc["warnings"] = w;
   return doc;
 }
 

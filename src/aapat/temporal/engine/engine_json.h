@@ -16,7 +16,8 @@ namespace aapat {
 // settings (preset, its settings' text, ratio, render size, motion, phases,
 // warm-up) and the measures (rmse and max_deviation over every frame's
 // pixels, mean_flip, flicker, ghosting, sharpness: means over frames;
-// engine_taa.h), with a row per frame.
+// engine_taa.h), with a row per frame, and warnings [text] when the preset's
+// engine would not run the sequence as given (engine_sequence_warnings).
 JsonObject engine_taa_json(std::string_view scene, const EngineRun& run, const Sequence& s,
                            const EngineTaa& taa, const EngineResult& r);
 
