@@ -96,7 +96,7 @@ def calls(files):
         "Sequence.save": (seq.save, [os.path.join(tmp, "q.json")], {}),
         "sequence_eval": (aapat.sequence_eval, [seq], {"alpha": 0.2, "window": 0, "ratio": 1.0}),
         "sequence_pan": (aapat.sequence_pan, [["halton:frames=4"]],
-                         {"taa": "ue4", "ratio": 1.0, "settings": {"history": "bilinear"},
+                         {"taa": "godot", "ratio": 1.0, "settings": {"history": "bilinear"},
                           "velocities": [(0.3, 0.2)],
                           "acuity": "uniform:step=30"}),
         "sequence_compare": (aapat.sequence_compare, [["halton:frames=4", "r2:frames=4"]],

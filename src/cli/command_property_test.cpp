@@ -335,8 +335,8 @@ std::vector<std::string> random_command() {
       maybe(a, "--taa-set",
             {"history=catmull-rom-5", "gamma=1.5", "alpha=0.1", "gamma=-1", "bogus=1", "history",
              "reconstruct=gaussian:sigma=0.5,radius=1.5", "rectify=sideways", "jitter_sign=-1",
-             "jitter_sign=0", "resolve=generic", "resolve=fsr2-2.2", "resolve=fsr3",
-             "reset_count=7", "reset_count=0"});
+             "jitter_sign=0", "resolve=generic", "resolve=fsr2-2.2", "resolve=ue4-4.26",
+             "resolve=fsr3", "reset_count=7", "reset_count=0"});
       maybe(a, "--sequence", {"halton:frames=2", "r2", "aapat-taa-8", "msaa-alternating"});
       maybe(a, "--frames-dir", {"frames", "good.json"});
       maybe(a, "--csv", {"rows.csv"});
@@ -397,22 +397,13 @@ std::vector<std::string> random_command() {
       maybe_flag(a, "--json");
       break;
     case 20:  // the rendered comparison, tiny (few small scenes, few frames)
-      a = {"sequence",
-           "compare",
-           *one_of({"halton:frames=2", "r2:frames=3", "nosuch"}),
+      a = {"sequence", "compare", *one_of({"halton:frames=2", "r2:frames=3", "nosuch"}),
            // bevy-halton's centre frame: FSR 2 never takes it (a warning)
            *one_of({"halton:frames=4", "random:frames=3,seed=2", "aapat-taa-8",
                     "bevy-halton:frames=4"}),
-           "--taa",
-           *one_of({"bevy", "godot", "fsr2", "nosuch"}),
-           "--size",
-           *one_of({"12", "10x8", "0", "5000"}),
-           "--frames",
-           *one_of({"2", "0"}),
-           "--warmup",
-           *one_of({"1", "-1"}),
-           "--reference-samples",
-           "4"};
+           "--taa", *one_of({"bevy", "godot", "fsr2", "nosuch"}), "--size",
+           *one_of({"12", "10x8", "0", "5000"}), "--frames", *one_of({"2", "0"}), "--warmup",
+           *one_of({"1", "-1"}), "--reference-samples", "4"};
       if (uniform(0, 2) == 0)
         a.insert(a.end(), {"--random-scenes", *one_of({"2", "0", "2000"})});
       else

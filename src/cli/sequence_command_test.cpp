@@ -74,11 +74,12 @@ TEST(SequenceCli, TheUe4SequenceIsATighterRingAtTheSameObjective) {
   EXPECT_LT(doc["rows"][1]["flicker"].get<double>(), doc["rows"][2]["flicker"].get<double>());
 }
 
-// Under UE4's bilinear history the pan's velocity barely moves the linear
-// model, and aapat-ue4-8 is below UE4's Gaussian-warped Halton 8 at every
-// velocity scripts/pan-velocity-spread.sh drew (docs/temporal.md, "Under
-// motion"); two of them, which no search saw.
-TEST(SequenceCli, TheUe4SequenceIsBelowUe4sOwnWhilePanning) {
+// Under a pan no jitter beats another on average (docs/temporal.md, "What a
+// jitter can deliver under motion"): under UE4's Catmull-Rom history the
+// linear model puts aapat-ue4-8 and UE4's Gaussian-warped Halton 8 within
+// half a percent of each other, either way, at two velocities no search
+// saw (the rendered pipeline's resonances are docs/engine-taa-table.md's).
+TEST(SequenceCli, TheUe4SequenceTiesUe4sOwnWhilePanning) {
   const auto r =
       run({"sequence", "pan", "aapat-ue4-8", "ue4-halton:frames=8", "--taa", "ue4", "--acuity",
            "uniform:step=4", "--velocity", "0.81,-0.44", "--velocity", "-1.12,-0.93", "--json"});
@@ -87,8 +88,7 @@ TEST(SequenceCli, TheUe4SequenceIsBelowUe4sOwnWhilePanning) {
   for (int v = 0; v < 2; ++v) {
     const double ours = doc["rows"][0]["velocities"][v]["mean_e2"].get<double>(),
                  theirs = doc["rows"][1]["velocities"][v]["mean_e2"].get<double>();
-    EXPECT_LT(ours, theirs) << "velocity " << v;
-    EXPECT_GT(ours, 0.99 * theirs) << "velocity " << v;  // by tenths of a percent, not more
+    EXPECT_NEAR(ours / theirs, 1, 0.005) << "velocity " << v;
   }
 }
 

@@ -13,6 +13,7 @@
 #include "aapat/render/surface.h"
 #include "aapat/temporal/engine/fsr2_accumulate.h"
 #include "aapat/temporal/engine/rendered_flicker.h"
+#include "aapat/temporal/engine/ue4_main_pass.h"
 
 namespace aapat {
 namespace {
@@ -208,6 +209,29 @@ void fsr2_frame(const RenderSamples& s, Vec2 jitter, double ratio, const Plane* 
   });
 }
 
+// One frame of UE 4.26's main pass (ue4_main_pass.h) at ratio 1: `history`
+// (RGB, or grey, as UE's history buffer holds it) is null on a reset.
+void ue4_frame(const RenderSamples& s, const std::array<double, 5>& plus_weights,
+               const Plane* history, const Motion& motion, const Scene& now, const Scene& before,
+               Plane& out, Plane& out_history) {
+  const int w = out.width, h = out.height, ch = out.channels;
+  const Ue4Frame frame{s.width, s.height, s.channels, s.values.data()};
+  tbb::parallel_for(0, h, [&](int y) {
+    for (int x = 0; x < w; ++x) {
+      const Vec2 q = previous_point(motion, now, before, {double(x), double(y)});
+      Ue4Colour previous;
+      const bool valid = history && ue4_history_sample(*history, q, previous);
+      const Ue4Colour p = ue4_main_pass(ue4_gather(frame, x, y), plus_weights,
+                                        valid ? &previous : nullptr, std::hypot(q.x - x, q.y - y));
+      const size_t at = static_cast<size_t>(y) * w + x;
+      for (int c = 0; c < ch; ++c) {
+        out_history.values[at * ch + c] = p[static_cast<size_t>(c)];
+        out.values[at * ch + c] = std::clamp(p[static_cast<size_t>(c)], 0.0, 1.0);
+      }
+    }
+  });
+}
+
 Image as_image(const Plane& p) {
   Image img;
   img.width = p.width;
@@ -252,14 +276,17 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
   const int rw = render_side(w, taa.upscale.ratio), rh = render_side(h, taa.upscale.ratio);
   // Where the preset places each sample (engine_samples): the jitter's sign.
   const Sequence placed = engine_samples(s, taa);
-  const bool fsr2 = taa.resolve == TaaResolve::fsr2_2;
-  if (fsr2)
+  const bool fsr2 = taa.resolve == TaaResolve::fsr2_2, ue4 = taa.resolve == TaaResolve::ue4_4_26;
+  if (taa.resolve != TaaResolve::generic)
     for (const Pattern& f : placed.frames)
       if (f.sets[0].size() != 1)
         throw Error(
-            fmt::format("sequence {}: FSR 2.2 takes one sample per render pixel a frame, "
-                        "a frame here has {}",
-                        s.name, f.sets[0].size()));
+            fmt::format("sequence {}: resolve {} takes one sample per render pixel a frame, a "
+                        "frame here has {}",
+                        s.name, taa_resolve_name(taa.resolve), f.sets[0].size()));
+  if (ue4 && taa.upscale.ratio != 1)
+    throw ParameterError(
+        "ratio", fmt::format(" {}: resolve ue4-4.26 runs at ratio 1 only", taa.upscale.ratio));
   const int period = placed.period();
   // Each phase's reconstruction weights: separable, the same for every frame of the phase.
   struct PhaseTaps {
@@ -282,8 +309,10 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
   r.render_width = rw;
   r.render_height = rh;
   Plane history, next{w, h, ch, std::vector<double>(static_cast<size_t>(w) * h * ch)};
-  // FSR 2.2's own history: R, G, B and the temporal reactive factor.
+  // The engines' own histories: FSR 2.2's R, G, B and temporal reactive
+  // factor; UE's colour, unclamped above.
   Plane fsr2_history, fsr2_next{w, h, 4, std::vector<double>(static_cast<size_t>(w) * h * 4)};
+  Plane ue4_history, ue4_next{w, h, ch, std::vector<double>(static_cast<size_t>(w) * h * ch)};
   std::vector<int> count(static_cast<size_t>(w) * h, 0), next_count = count;
   std::vector<int> previous_error;
   Image previous_reference;
@@ -301,6 +330,11 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
                  fsr2_history.values.empty() ? nullptr : &fsr2_history, run.motion, scene,
                  previous_scene, next, fsr2_next);
       fsr2_history = fsr2_next;
+    } else if (ue4) {
+      ue4_frame(samples, ue4_plus_weights(t.jitter[0]),
+                ue4_history.values.empty() ? nullptr : &ue4_history, run.motion, scene,
+                previous_scene, next, ue4_next);
+      ue4_history = ue4_next;
     } else {
       const Plane current = reconstruct(samples, t.x, t.y, w, h, taa.upscale.ratio);
       if (history.values.empty()) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "aapat/core/filter_catalog.h"
+#include "aapat/temporal/engine/ue4_main_pass.h"
 #include "aapat/temporal/sequence/sequence_generators.h"
 
 namespace aapat {
@@ -13,13 +14,20 @@ namespace aapat {
 const std::vector<EnginePresetInfo>& engine_presets() {
   static const std::vector<EnginePresetInfo> kPresets{
       {"ue4",
-       "Unreal Engine 4 TAA: 8 Gaussian-warped Halton(2,3) jitters (sigma 0.47), each sample "
-       "at the pixel centre minus the jitter, a Gaussian fit of Blackman-Harris over 3x3 render "
-       "pixels, bilinear history, YCoCg clip to the min/max box, current-frame weight 0.04",
+       "Unreal Engine 4.26 TAA (the main pass, ratio 1): 8 Gaussian-warped Halton(2,3) jitters "
+       "(sigma 0.47), each sample at the pixel centre minus the jitter; the main pass's own "
+       "per-pixel arithmetic: the plus-shaped 5 raw samples weighted exp(-2.29 d^2) x 1/(Y + 4) "
+       "in YCoCg, 5-tap Catmull-Rom history reweighted, clamped per component to the plus's "
+       "min/max, current-frame weight lerp(0.04, 0.2, v / 20 px) raised where the history's luma "
+       "is within 1 % of the input's, luma-weighted blend",
        "UE4 SceneVisibility.cpp (r.TemporalAASamples 8, Sigma = 0.47f * FilterSize, "
        "HackAddTemporalAAProjectionJitter(SampleX * 2 / Width, SampleY * -2 / Height)), "
-       "SceneView.h (ProjectionMatrix.M[2][0] += X), PostProcessTemporalAA.cpp "
-       "(r.TemporalAACurrentFrameWeight .04f, r.TemporalAACatmullRom 0)"},
+       "SceneView.h (ProjectionMatrix.M[2][0] += X), TemporalAA.cpp (r.TemporalAACatmullRom 0, "
+       "r.TemporalAACurrentFrameWeight .04f, SetupSampleWeightParameters), TemporalAA.usf "
+       "(TAA_PASS_CONFIG 0: AA_BICUBIC, AA_TONE, AA_YCOCG, AA_SAMPLES 5, AA_CLIP 0, "
+       "HISTORY_CLAMPING_BOX_MIN_MAX; FilterCurrentFrameInputSamples, "
+       "ComputeNeighborhoodBoundingbox, SampleHistory, ClampHistory, COMPUTE BLEND AMOUNT, "
+       "WeightedLerpFactors), Common.ush (GetBicubic2DCatmullRomSamples)"},
       {"fsr2",
        "AMD FSR 2.2: Halton(2,3) from index 1, int(8 R^2) phases, each sample at the pixel "
        "centre minus the jitter; FSR 2.2's own per-pixel arithmetic: Lanczos-2 of the 3x3 "
@@ -128,9 +136,26 @@ bool generic_only(const std::string& key) {
 }  // namespace
 
 TaaResolve parse_taa_resolve(std::string_view name) {
-  if (name == "generic") return TaaResolve::generic;
-  if (name == "fsr2-2.2") return TaaResolve::fsr2_2;
-  throw ParameterError("resolve", fmt::format(" {}: known are generic, fsr2-2.2", name));
+  constexpr TaaResolve kResolves[] = {TaaResolve::generic, TaaResolve::fsr2_2,
+                                      TaaResolve::ue4_4_26};
+  std::string known;
+  for (const TaaResolve r : kResolves) {
+    if (name == taa_resolve_name(r)) return r;
+    known += (known.empty() ? "" : ", ") + std::string(taa_resolve_name(r));
+  }
+  throw ParameterError("resolve", fmt::format(" {}: known are {}", name, known));
+}
+
+std::string_view taa_resolve_name(TaaResolve r) {
+  switch (r) {
+    case TaaResolve::fsr2_2:
+      return "fsr2-2.2";
+    case TaaResolve::ue4_4_26:
+      return "ue4-4.26";
+    case TaaResolve::generic:
+      break;
+  }
+  return "generic";
 }
 
 Sequence engine_samples(const Sequence& s, const EngineTaa& t) {
@@ -179,12 +204,18 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
   const int phases = upscaler_phase_count(ratio);
   if (preset == "ue4") {
     t.jitter = "ue4-halton:frames=8";
+    t.resolve = TaaResolve::ue4_4_26;
     t.jitter_sign = -1;
+    // The generic settings below are what the linear model of a pan
+    // (engine_pans.h) and resolve=generic take of the main pass: a Gaussian
+    // over the 3x3 (the pass weighs the plus only, and by luma too), its
+    // history fetch, its per-component clamp to the min/max box and its
+    // current-frame weight at rest.
     apply(t, "reconstruct", "gaussian:sigma=0.47,radius=1.5");
-    t.history = HistorySampler::bilinear;
-    t.rectify = Rectification::clip;
+    t.history = HistorySampler::catmull_rom_5_normalized;
+    t.rectify = Rectification::clamp;
     t.box = RectificationBox::minmax;
-    t.alpha_min = t.alpha_max = 0.04;
+    t.alpha_min = t.alpha_max = kUe4CurrentFrameWeight;
   } else if (preset == "fsr2") {
     t.jitter = fmt::format("halton:frames={},start=1", phases);
     t.resolve = TaaResolve::fsr2_2;
@@ -248,14 +279,22 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
     }
     t.overrides.emplace_back(key, value);
   }
-  // No setting is taken and then ignored: FSR 2.2's arithmetic has none of the generic ones.
-  if (t.resolve == TaaResolve::fsr2_2)
+  // No setting is taken and then ignored: the engines' own arithmetic has none of the generic ones.
+  if (t.resolve != TaaResolve::generic)
     for (const auto& [key, value] : overrides)
       if (generic_only(key))
         throw ParameterError(
-            "taa-set", fmt::format(" {}={}: resolve fsr2-2.2 (FSR 2.2's own arithmetic) has no "
-                                   "setting {}; give resolve=generic first to use the generic one",
-                                   key, value, key));
+            "taa-set", fmt::format(" {}={}: resolve {} ({}'s own arithmetic) has no setting {}; "
+                                   "give resolve=generic first to use the generic one",
+                                   key, value, taa_resolve_name(t.resolve),
+                                   t.resolve == TaaResolve::fsr2_2 ? "FSR 2.2" : "UE 4.26", key));
+  // UE's main pass runs at 100 % screen percentage; below it UE runs TAAU, another pass.
+  if (t.resolve == TaaResolve::ue4_4_26 && ratio != 1)
+    throw ParameterError("ratio", fmt::format(" {}: resolve ue4-4.26 is UE 4.26's main TAA pass, "
+                                              "which runs at ratio 1 (its upsampling pass, "
+                                              "TAAU, is not transcribed); give resolve=generic "
+                                              "first to render the generic pipeline",
+                                              ratio));
   if (t.alpha_min > t.alpha_max)
     throw ParameterError("alpha_min",
                          fmt::format(" {} exceeds alpha_max {}", t.alpha_min, t.alpha_max));
@@ -286,6 +325,9 @@ std::string engine_taa_text(const EngineTaa& t) {
   const std::string samples = t.jitter_sign < 0 ? "centre minus jitter" : "centre plus jitter";
   if (t.resolve == TaaResolve::fsr2_2)
     return fmt::format("{} at {:g}x (FSR 2.2's upsample, history, rectification and blend; {})",
+                       t.preset, t.upscale.ratio, samples);
+  if (t.resolve == TaaResolve::ue4_4_26)
+    return fmt::format("{} at {:g}x (UE 4.26's main pass: filter, history, clamp and blend; {})",
                        t.preset, t.upscale.ratio, samples);
   return fmt::format("{} at {:g}x ({} reconstruction, {} history, {}, {}; {})", t.preset,
                      t.upscale.ratio, t.upscale.reconstruction.name(),

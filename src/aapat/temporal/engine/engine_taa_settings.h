@@ -18,9 +18,11 @@
 //                      Bevy's confidence 1 / 0.015 as frames (7)
 //   jitter_sign        -1: each sample at the render pixel's centre minus
 //                      the jitter, as FSR 2 and UE4 place it; 1: plus (Bevy)
-//   resolve            generic (the settings above) or fsr2-2.2 (FSR 2.2's
-//                      own arithmetic, fsr2_accumulate.h, which reads none
-//                      of the generic settings: setting one is refused)
+//   resolve            generic (the settings above), fsr2-2.2 (FSR 2.2's
+//                      own arithmetic, fsr2_accumulate.h) or ue4-4.26 (UE
+//                      4.26's main pass, ue4_main_pass.h, ratio 1 only);
+//                      the engines' own read none of the generic settings:
+//                      setting one is refused
 #pragma once
 
 #include <algorithm>
@@ -38,8 +40,9 @@
 
 namespace aapat {
 
-enum class TaaResolve { generic, fsr2_2 };
-TaaResolve parse_taa_resolve(std::string_view name);  // generic, fsr2-2.2
+enum class TaaResolve { generic, fsr2_2, ue4_4_26 };
+TaaResolve parse_taa_resolve(std::string_view name);  // generic, fsr2-2.2, ue4-4.26
+std::string_view taa_resolve_name(TaaResolve r);
 
 struct EngineTaa {
   std::string preset = "custom";

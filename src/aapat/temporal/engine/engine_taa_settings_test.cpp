@@ -17,8 +17,12 @@ TEST(EngineTaaSettings, PresetsCarryTheirSourcesNumbers) {
   EXPECT_EQ(fsr2.jitter_sign, -1);                     // ffx_fsr2_upsample.h:102
   EXPECT_EQ(fsr2.history, HistorySampler::lanczos2);   // what the linear pan model takes
   const EngineTaa ue4 = make_engine_taa("ue4", 1);
-  EXPECT_EQ(ue4.alpha_min, 0.04);
+  EXPECT_EQ(ue4.resolve, TaaResolve::ue4_4_26);  // UE 4.26's main pass
+  EXPECT_EQ(ue4.alpha_min, 0.04);                // r.TemporalAACurrentFrameWeight
   EXPECT_EQ(ue4.alpha_max, 0.04);
+  EXPECT_EQ(ue4.history, HistorySampler::catmull_rom_5_normalized);  // AA_BICUBIC
+  EXPECT_EQ(ue4.rectify, Rectification::clamp);                      // AA_CLIP 0
+  EXPECT_EQ(ue4.box, RectificationBox::minmax);
   EXPECT_EQ(ue4.jitter, "ue4-halton:frames=8");
   EXPECT_EQ(ue4.jitter_sign, -1);
   const EngineTaa bevy = make_engine_taa("bevy", 1);
@@ -84,8 +88,22 @@ TEST(EngineTaaSettings, SettingsAPresetDoesNotReadAreRefused) {
                                                         {"gamma", "1.5"},
                                                         {"alpha", "0.1"},
                                                         {"count_max", "4"},
-                                                        {"reset_count", "2"}})
+                                                        {"reset_count", "2"}}) {
     EXPECT_THROW(make_engine_taa("fsr2", 2, {{key, value}}), ParameterError) << key;
+    EXPECT_THROW(make_engine_taa("ue4", 1, {{key, value}}), ParameterError) << key;
+  }
+  // UE 4.26's main pass runs at ratio 1 (TAAU, its upsampling pass, is another);
+  // the generic pipeline takes any.
+  try {
+    make_engine_taa("ue4", 1.5);
+    ADD_FAILURE() << "ue4 took ratio 1.5";
+  } catch (const ParameterError& e) {
+    EXPECT_EQ(e.parameter(), "ratio");
+    EXPECT_NE(e.detail().find("TAAU"), std::string::npos) << e.detail();
+  }
+  EXPECT_EQ(make_engine_taa("ue4", 1.5, {{"resolve", "generic"}}).upscale.ratio, 1.5);
+  EXPECT_EQ(make_engine_taa("ue4", 1, {{"resolve", "generic"}, {"history", "bilinear"}}).history,
+            HistorySampler::bilinear);
   const EngineTaa generic = make_engine_taa("fsr2", 2, {{"resolve", "generic"}, {"gamma", "1.5"}});
   EXPECT_EQ(generic.resolve, TaaResolve::generic);
   EXPECT_EQ(generic.gamma, 1.5);

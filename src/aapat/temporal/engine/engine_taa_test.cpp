@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 #include "aapat/render/renderer.h"
+#include "aapat/temporal/engine/ue4_main_pass.h"
 #include "aapat/temporal/sequence/sequence_generators.h"
 #include "testing/centre_reference.h"
 
@@ -151,6 +153,44 @@ TEST(EngineTaa, Fsr2SettlesOnAStillScene) {
   }
 }
 
+// UE 4.26's main pass on a still scene: the first frame after a cut is
+// the filtered input of the samples at the pixel centres minus the jitter
+// (ue4_main_pass without history), and the frames after it come closer to
+// the reference.
+TEST(EngineTaa, Ue4ConvergesOnAStillScene) {
+  const int w = 16, h = 12;
+  const Scene scene = make_scene("circles", w, h);
+  // A filtered reference (the centre sample's would reward aliasing), small.
+  EngineRun run{scene, make_motion("static", w, h), w, h, 40, 0, {64, "mitchell", 5}};
+  const Sequence s = make_sequence("ue4-halton:frames=8");
+  const EngineTaa ue4 = make_engine_taa("ue4", 1);
+  std::vector<Image> frames;
+  const EngineResult r =
+      render_engine_taa(run, s, ue4, [&](int, const Image& img) { frames.push_back(img); });
+  const Vec2 placed = engine_samples(s, ue4).frames[0].sets[0][0];
+  std::vector<double> samples;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) samples.push_back(shade(scene, {i + placed.x, j + placed.y}));
+  const Ue4Frame frame{w, h, 1, samples.data()};
+  const auto weights = ue4_plus_weights(placed);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i)
+      EXPECT_NEAR(
+          frames[0].values[static_cast<size_t>(j * w + i)],
+          std::clamp(ue4_main_pass(ue4_gather(frame, i, j), weights, nullptr, 0)[0], 0.0, 1.0),
+          1e-12)
+          << i << "," << j;
+  EXPECT_LT(r.frames.back().rmse, r.frames[0].rmse);
+  for (const double v : frames.back().values) {
+    EXPECT_GE(v, 0);
+    EXPECT_LE(v, 1);
+  }
+  // The generic pipeline under the same preset renders, and differently.
+  const std::vector<Image> generic =
+      frames_of(run, s, make_engine_taa("ue4", 1, {{"resolve", "generic"}}));
+  EXPECT_NE(generic.back().values, frames.back().values);
+}
+
 TEST(EngineTaa, RefusesWhatItCannotRender) {
   const Scene scene = make_scene("spiral", 10, 10);
   EngineRun run{scene, make_motion("static", 10, 10), 10, 10, 2, 0, {}};
@@ -166,6 +206,16 @@ TEST(EngineTaa, RefusesWhatItCannotRender) {
   EXPECT_THROW(render_engine_taa(run, make_sequence("msaa-alternating:samples=2,frames=2"), t, {},
                                  kEngineCheapReference),
                Error);
+  // So does UE's main pass, which runs at ratio 1 only.
+  const EngineTaa ue4 = make_engine_taa("ue4", 1);
+  EXPECT_THROW(render_engine_taa(run, make_sequence("msaa-alternating:samples=2,frames=2"), ue4, {},
+                                 kEngineCheapReference),
+               Error);
+  EngineTaa ue4_upscaling = ue4;
+  ue4_upscaling.upscale.ratio = 2;
+  EXPECT_THROW(
+      render_engine_taa(run, make_sequence("r2"), ue4_upscaling, {}, kEngineCheapReference),
+      ParameterError);
   run.frames = 0;
   EXPECT_THROW(render_engine_taa(run, make_sequence("r2"), t, {}, kEngineCheapReference), Error);
   run.frames = 2;

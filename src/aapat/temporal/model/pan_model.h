@@ -87,7 +87,7 @@ std::vector<Vec2> default_pan_velocities();
 inline constexpr double kMaxPanSpeed = 16;
 inline constexpr int kMaxPanFrames = 128;
 // The most samples one pan kernel may read, each render sample once per
-// chain offset that reaches it (UE4's bilinear history at alpha 0.04 reads
+// chain offset that reaches it (a bilinear history at UE4's alpha 0.04 reads
 // about 900,000 at the evaluation's cuts panning 0.37, 0.21, which sum into
 // 118,000 samples; FSR 2 at 1.5 216,000 into 11,000): a small alpha under a
 // blurring history would otherwise grow it without bound.
