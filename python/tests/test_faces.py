@@ -112,20 +112,21 @@ def test_sequence_pan_rows_are_the_cli_rows(aapat_cli):
                             acuity="uniform:step=30")
     assert py == cli["rows"]
     assert [v["velocity"] for v in py[0]["velocities"]][0] == [0.0, 0.0]
-    # A setting overridden (Godot's preset renders the generic pipeline, which reads it).
+    # A setting overridden (of the generic pipeline, which the pan model reads).
     godot = ["aapat-taa-8", "halton:frames=8", "--taa", "godot", "--acuity", "uniform:step=30"]
-    cli = cli_json(aapat_cli, "sequence", "pan", *godot, "--taa-set", "history=bilinear",
-                   "--velocity", "0.37,0.21")
+    cli = cli_json(aapat_cli, "sequence", "pan", *godot, "--taa-set", "resolve=generic",
+                   "--taa-set", "history=bilinear", "--velocity", "0.37,0.21")
     py = aapat.sequence_pan(["aapat-taa-8", "halton:frames=8"], taa="godot",
-                            settings={"history": "bilinear"}, velocities=[(0.37, 0.21)],
+                            settings={"resolve": "generic", "history": "bilinear"},
+                            velocities=[(0.37, 0.21)],
                             acuity="uniform:step=30")
     assert py == cli["rows"]
     with pytest.raises(aapat.Error, match="velocity"):
         aapat.sequence_pan(["r2"], taa="fsr2", velocities=[(float("nan"), 0.0)])
     calls = []
     again = aapat.sequence_pan(["aapat-taa-8", "halton:frames=8"], taa="godot",
-                               settings={"history": "bilinear"}, velocities=[(0.37, 0.21)],
-                               acuity="uniform:step=30",
+                               settings={"resolve": "generic", "history": "bilinear"},
+                               velocities=[(0.37, 0.21)], acuity="uniform:step=30",
                                progress=lambda done, total, note: calls.append((done, total)))
     assert again == py and sorted(calls) == [(1, 2), (2, 2)]
 

@@ -11,7 +11,9 @@
 #include "aapat/render/color_render.h"
 #include "aapat/render/image_flip.h"
 #include "aapat/render/surface.h"
+#include "aapat/temporal/engine/bevy_taa.h"
 #include "aapat/temporal/engine/fsr2_accumulate.h"
+#include "aapat/temporal/engine/godot_taa.h"
 #include "aapat/temporal/engine/rendered_flicker.h"
 #include "aapat/temporal/engine/ue4_main_pass.h"
 
@@ -215,7 +217,7 @@ void ue4_frame(const RenderSamples& s, const std::array<double, 5>& plus_weights
                const Plane* history, const Motion& motion, const Scene& now, const Scene& before,
                Plane& out, Plane& out_history) {
   const int w = out.width, h = out.height, ch = out.channels;
-  const Ue4Frame frame{s.width, s.height, s.channels, s.values.data()};
+  const SampleFrame frame{s.width, s.height, s.channels, s.values.data()};
   tbb::parallel_for(0, h, [&](int y) {
     for (int x = 0; x < w; ++x) {
       const Vec2 q = previous_point(motion, now, before, {double(x), double(y)});
@@ -228,6 +230,80 @@ void ue4_frame(const RenderSamples& s, const std::array<double, 5>& plus_weights
         out_history.values[at * ch + c] = p[static_cast<size_t>(c)];
         out.values[at * ch + c] = std::clamp(p[static_cast<size_t>(c)], 0.0, 1.0);
       }
+    }
+  });
+}
+
+// Whether a reprojected point lies on the image, edges included (the
+// engines' uv in [0, 1]); false for NaN (a disocclusion).
+bool on_screen(Vec2 q, int w, int h) {
+  return q.x >= -0.5 && q.x <= w - 0.5 && q.y >= -0.5 && q.y <= h - 0.5;
+}
+
+// Writes an own resolve's pixel: its colour and extra value (confidence,
+// count) into the 4-channel history, the colour clamped into the display.
+void write_pixel(const std::array<double, 3>& rgb, double extra, size_t at, Plane& out,
+                 Plane& out_history) {
+  for (size_t c = 0; c < 3; ++c) out_history.values[at * 4 + c] = rgb[c];
+  out_history.values[at * 4 + 3] = extra;
+  for (int c = 0; c < out.channels; ++c)
+    out.values[at * static_cast<size_t>(out.channels) + static_cast<size_t>(c)] =
+        std::clamp(rgb[static_cast<size_t>(c)], 0.0, 1.0);
+}
+
+// One frame of Bevy 0.17's TAA (bevy_taa.h) at ratio 1: `history` (R, G,
+// B, confidence) is null on a reset.
+void bevy_frame(const RenderSamples& s, const Plane* history, const Motion& motion,
+                const Scene& now, const Scene& before, Plane& out, Plane& out_history) {
+  const int w = out.width, h = out.height;
+  const SampleFrame frame{s.width, s.height, s.channels, s.values.data()};
+  tbb::parallel_for(0, h, [&](int y) {
+    for (int x = 0; x < w; ++x) {
+      const auto n = neighbourhood_3x3(frame, x, y);
+      BevyPixel p;
+      if (!history) {
+        p = bevy_reset_pixel(n[4]);
+      } else {
+        const Vec2 q = previous_point(motion, now, before, {double(x), double(y)});
+        const bool still = std::abs(q.x - x) < 0.01 && std::abs(q.y - y) < 0.01;
+        const bool valid = on_screen(q, w, h);
+        double v[4];
+        if (valid) sample_history(*history, q, HistorySampler::catmull_rom_5, v);
+        const BevyColour previous{v[0], v[1], v[2]};
+        p = bevy_taa_pixel(n, valid ? &previous : nullptr, history->at(x, y)[3], still);
+      }
+      write_pixel(p.rgb, p.confidence, static_cast<size_t>(y) * w + x, out, out_history);
+    }
+  });
+}
+
+// One frame of Godot 4.6's TAA resolve (godot_taa.h) at ratio 1: `history`
+// (R, G, B, accumulated count) is null on a reset, where the frame is
+// copied with count 0 (taa.cpp resolves nothing into a new history).
+void godot_frame(const RenderSamples& s, const Plane* history, const Motion& motion,
+                 const Scene& now, const Scene& before, Plane& out, Plane& out_history) {
+  const int w = out.width, h = out.height;
+  const double variance = godot_variance_scale(h);
+  const SampleFrame frame{s.width, s.height, s.channels, s.values.data()};
+  tbb::parallel_for(0, h, [&](int y) {
+    for (int x = 0; x < w; ++x) {
+      const auto n = neighbourhood_3x3(frame, x, y);
+      GodotPixel p{n[4], 0};
+      if (history) {
+        Vec2 q = previous_point(motion, now, before, {double(x), double(y)});
+        if (std::isnan(q.x) || std::isnan(q.y)) q = {1e9, 1e9};  // disoccluded: off screen
+        const bool off = !on_screen(q, w, h);
+        // Off screen the shader reads the edge of the history and discards it.
+        const Vec2 at =
+            off ? Vec2{std::clamp(q.x, 0.0, w - 1.0), std::clamp(q.y, 0.0, h - 1.0)} : q;
+        double cr[4], bl[4];
+        sample_history(*history, at, HistorySampler::catmull_rom_9, cr);
+        sample_history(*history, at, HistorySampler::bilinear, bl);
+        const double speed =
+            off ? 0 : std::hypot((q.x - x) / w, (q.y - y) / static_cast<double>(h));
+        p = godot_taa_pixel(n, {cr[0], cr[1], cr[2]}, bl[3], off, speed, variance);
+      }
+      write_pixel(p.rgb, p.count, static_cast<size_t>(y) * w + x, out, out_history);
     }
   });
 }
@@ -284,9 +360,9 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
             fmt::format("sequence {}: resolve {} takes one sample per render pixel a frame, a "
                         "frame here has {}",
                         s.name, taa_resolve_name(taa.resolve), f.sets[0].size()));
-  if (ue4 && taa.upscale.ratio != 1)
-    throw ParameterError(
-        "ratio", fmt::format(" {}: resolve ue4-4.26 runs at ratio 1 only", taa.upscale.ratio));
+  if (!fsr2 && taa.resolve != TaaResolve::generic && taa.upscale.ratio != 1)
+    throw ParameterError("ratio", fmt::format(" {}: resolve {} runs at ratio 1 only",
+                                              taa.upscale.ratio, taa_resolve_name(taa.resolve)));
   const int period = placed.period();
   // Each phase's reconstruction weights: separable, the same for every frame of the phase.
   struct PhaseTaps {
@@ -309,10 +385,12 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
   r.render_width = rw;
   r.render_height = rh;
   Plane history, next{w, h, ch, std::vector<double>(static_cast<size_t>(w) * h * ch)};
-  // The engines' own histories: FSR 2.2's R, G, B and temporal reactive
-  // factor; UE's colour, unclamped above.
-  Plane fsr2_history, fsr2_next{w, h, 4, std::vector<double>(static_cast<size_t>(w) * h * 4)};
-  Plane ue4_history, ue4_next{w, h, ch, std::vector<double>(static_cast<size_t>(w) * h * ch)};
+  // An engine's own history: FSR 2.2's R, G, B and temporal reactive
+  // factor; UE's colour, unclamped above; Bevy's R, G, B and confidence;
+  // Godot's R, G, B and accumulated count.
+  const int own_channels = ue4 ? ch : 4;
+  Plane own_history,
+      own_next{w, h, own_channels, std::vector<double>(static_cast<size_t>(w) * h * own_channels)};
   std::vector<int> count(static_cast<size_t>(w) * h, 0), next_count = count;
   std::vector<int> previous_error;
   Image previous_reference;
@@ -325,16 +403,17 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
     const int phase = ((f % period) + period) % period;
     const PhaseTaps& t = phases[static_cast<size_t>(phase)];
     const RenderSamples samples = sample_frame(scene, t.jitter, taa.upscale.ratio, rw, rh, ch);
+    const Plane* own = own_history.values.empty() ? nullptr : &own_history;
     if (fsr2) {
-      fsr2_frame(samples, t.jitter[0], taa.upscale.ratio,
-                 fsr2_history.values.empty() ? nullptr : &fsr2_history, run.motion, scene,
-                 previous_scene, next, fsr2_next);
-      fsr2_history = fsr2_next;
+      fsr2_frame(samples, t.jitter[0], taa.upscale.ratio, own, run.motion, scene, previous_scene,
+                 next, own_next);
     } else if (ue4) {
-      ue4_frame(samples, ue4_plus_weights(t.jitter[0]),
-                ue4_history.values.empty() ? nullptr : &ue4_history, run.motion, scene,
-                previous_scene, next, ue4_next);
-      ue4_history = ue4_next;
+      ue4_frame(samples, ue4_plus_weights(t.jitter[0]), own, run.motion, scene, previous_scene,
+                next, own_next);
+    } else if (taa.resolve == TaaResolve::bevy_0_17) {
+      bevy_frame(samples, own, run.motion, scene, previous_scene, next, own_next);
+    } else if (taa.resolve == TaaResolve::godot_4_6) {
+      godot_frame(samples, own, run.motion, scene, previous_scene, next, own_next);
     } else {
       const Plane current = reconstruct(samples, t.x, t.y, w, h, taa.upscale.ratio);
       if (history.values.empty()) {
@@ -345,6 +424,7 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
         blend(current, history, count, run.motion, scene, previous_scene, taa, next, next_count);
       }
     }
+    if (taa.resolve != TaaResolve::generic) own_history = own_next;
     history = next;
     count = next_count;
     const Scene before = previous_scene;

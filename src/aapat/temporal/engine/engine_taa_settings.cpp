@@ -41,26 +41,30 @@ const std::vector<EnginePresetInfo>& engine_presets() {
        "ffx_fsr2_common.h (RectificationBox, fUpsampleLanczosWeightScale 1/12)"},
       {"godot",
        "Godot 4.6 TAA: 16 Halton(2,3) jitters from index 0, each sample at the pixel centre "
-       "minus the jitter, the pixel's own sample, 9-tap Catmull-Rom history, 3x3 YCoCg "
-       "variance clip (gamma 1, narrowed with speed to 0.4 at 128/1080 of the screen a frame), "
-       "alpha 1/(n+1), n <= 16",
+       "minus the jitter; the resolve's own per-pixel arithmetic on Reinhard-tonemapped colours: "
+       "the pixel's own sample, 9-tap Catmull-Rom history, YCoCg clip to a variance box weighted "
+       "1/(1 + Y) (narrowed with speed to 0.4 at 128/1080 of the screen a frame), current-frame "
+       "weight 1/(n + 1), n <= 16, lowered where the lumas differ (anti-flicker)",
        "godot servers/rendering/renderer_rd/shaders/effects/taa_resolve.glsl as changed "
-       "2025-11-05 ('dynamic variance'; sample_catmull_rom_9, clip_history_3x3, "
-       "MIN_VARIANCE_BOX_SIZE_MULTIPLIER 0.4, VELOCITY_CONFIDENCE_DISTANCE 128/1080, "
-       "MAX_ACCUMULATED_SAMPLES 16), "
-       "effects/taa.cpp (variance_dynamic clamped to [0.75, 1.0]), renderer_scene_cull.cpp "
+       "2025-11-05 ('dynamic variance'; reinhard, sample_catmull_rom_9, clip_aabb, "
+       "clip_history_3x3, temporal_antialiasing, MIN_VARIANCE_BOX_SIZE_MULTIPLIER 0.4, "
+       "VELOCITY_CONFIDENCE_DISTANCE 128/1080, MAX_ACCUMULATED_SAMPLES 16), "
+       "effects/taa.cpp (variance_dynamic clamped to [0.75, 1.0]; a new history copies the "
+       "frame), renderer_scene_cull.cpp "
        "(jitter get_halton_value(i, 2) = 2 h - 1, i from 0), core/math/projection.cpp "
        "(add_jitter_offset: columns[3] += offset, left-multiplied onto the projection)"},
       {"bevy",
        "Bevy 0.17 TAA: 8 jitters, the pixel centre then Halton(2,3) from index 1, each sample "
-       "at the pixel centre plus the jitter, the pixel's own sample, 5-tap Catmull-Rom history, "
-       "3x3 YCoCg variance clip (gamma 1), alpha = clamp(1 / confidence, 0.015, 0.1), "
+       "at the pixel centre plus the jitter; the shader's own per-pixel arithmetic: the pixel's "
+       "own sample, 5-tap Catmull-Rom history, 3x3 YCoCg variance clip (gamma 1) saturated, "
+       "alpha = clamp(1 / confidence, 0.015, 0.1), "
        "confidence 1 / 0.015 after a reset, + 10 per still frame, 1 in motion",
        "bevy v0.17.2 crates/bevy_anti_alias/src/taa/taa.wgsl (MIN_HISTORY_BLEND_RATE 0.015, "
        "DEFAULT_HISTORY_BLEND_RATE 0.1, clip_towards_aabb_center, RESET confidence), "
        "taa/mod.rs (halton_sequence, (0, 0) first), bevy_render camera.rs (jitter_projection)"},
       {"bevy-0.16",
-       "Bevy 0.16 TAA: as bevy, with 8 Halton(2,3) jitters from index 1 (no centre frame)",
+       "Bevy 0.16 TAA: as bevy (0.17's shader arithmetic), with 8 Halton(2,3) jitters from "
+       "index 1 (no centre frame)",
        "bevy v0.16.0 crates/bevy_core_pipeline/src/taa/mod.rs (halton_sequence, 'skipping i = "
        "0'), taa.wgsl"},
   };
@@ -136,8 +140,8 @@ bool generic_only(const std::string& key) {
 }  // namespace
 
 TaaResolve parse_taa_resolve(std::string_view name) {
-  constexpr TaaResolve kResolves[] = {TaaResolve::generic, TaaResolve::fsr2_2,
-                                      TaaResolve::ue4_4_26};
+  constexpr TaaResolve kResolves[] = {TaaResolve::generic, TaaResolve::fsr2_2, TaaResolve::ue4_4_26,
+                                      TaaResolve::godot_4_6, TaaResolve::bevy_0_17};
   std::string known;
   for (const TaaResolve r : kResolves) {
     if (name == taa_resolve_name(r)) return r;
@@ -152,6 +156,26 @@ std::string_view taa_resolve_name(TaaResolve r) {
       return "fsr2-2.2";
     case TaaResolve::ue4_4_26:
       return "ue4-4.26";
+    case TaaResolve::godot_4_6:
+      return "godot-4.6";
+    case TaaResolve::bevy_0_17:
+      return "bevy-0.17";
+    case TaaResolve::generic:
+      break;
+  }
+  return "generic";
+}
+
+std::string_view taa_resolve_engine(TaaResolve r) {
+  switch (r) {
+    case TaaResolve::fsr2_2:
+      return "FSR 2.2";
+    case TaaResolve::ue4_4_26:
+      return "UE 4.26";
+    case TaaResolve::godot_4_6:
+      return "Godot 4.6";
+    case TaaResolve::bevy_0_17:
+      return "Bevy 0.17";
     case TaaResolve::generic:
       break;
   }
@@ -235,7 +259,10 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
     t.count_max_motion = 10;
   } else if (preset == "godot") {
     t.jitter = "halton:frames=16,start=0";
+    t.resolve = TaaResolve::godot_4_6;
     t.jitter_sign = -1;
+    // The generic settings below are what the linear pan model and
+    // resolve=generic take of it (no Reinhard, Karis weights or anti-flicker).
     apply(t, "reconstruct", "box:width=1");
     t.history = HistorySampler::catmull_rom_9;
     t.rectify = Rectification::clip;
@@ -246,6 +273,10 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
     t.count_max = t.count_max_motion = 16;
   } else if (preset == "bevy" || preset == "bevy-0.16") {
     t.jitter = preset == "bevy" ? "bevy-halton:frames=8" : "halton:frames=8,start=1";
+    // 0.17's shader arithmetic for both (0.16's jitter only differs); the
+    // generic settings below are what the linear pan model and
+    // resolve=generic take of it.
+    t.resolve = TaaResolve::bevy_0_17;
     t.reset_count = 7;  // confidence 1 / 0.015 = 66.7 after a reset: alpha 0.015 from then on
     apply(t, "reconstruct", "box:width=1");
     t.history = HistorySampler::catmull_rom_5;
@@ -287,14 +318,17 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
             "taa-set", fmt::format(" {}={}: resolve {} ({}'s own arithmetic) has no setting {}; "
                                    "give resolve=generic first to use the generic one",
                                    key, value, taa_resolve_name(t.resolve),
-                                   t.resolve == TaaResolve::fsr2_2 ? "FSR 2.2" : "UE 4.26", key));
-  // UE's main pass runs at 100 % screen percentage; below it UE runs TAAU, another pass.
-  if (t.resolve == TaaResolve::ue4_4_26 && ratio != 1)
-    throw ParameterError("ratio", fmt::format(" {}: resolve ue4-4.26 is UE 4.26's main TAA pass, "
-                                              "which runs at ratio 1 (its upsampling pass, "
-                                              "TAAU, is not transcribed); give resolve=generic "
-                                              "first to render the generic pipeline",
-                                              ratio));
+                                   taa_resolve_engine(t.resolve), key));
+  // The native TAAs run at 100 % screen percentage: below it UE runs TAAU,
+  // another pass, and Godot and Bevy upscale with other passes.
+  if (t.resolve != TaaResolve::generic && t.resolve != TaaResolve::fsr2_2 && ratio != 1)
+    throw ParameterError(
+        "ratio", fmt::format(" {}: resolve {} is {}'s native TAA, which runs at ratio 1{}; give "
+                             "resolve=generic first to render the generic pipeline",
+                             ratio, taa_resolve_name(t.resolve), taa_resolve_engine(t.resolve),
+                             t.resolve == TaaResolve::ue4_4_26
+                                 ? " (its upsampling pass, TAAU, is not transcribed)"
+                                 : ""));
   if (t.alpha_min > t.alpha_max)
     throw ParameterError("alpha_min",
                          fmt::format(" {} exceeds alpha_max {}", t.alpha_min, t.alpha_max));
@@ -326,9 +360,9 @@ std::string engine_taa_text(const EngineTaa& t) {
   if (t.resolve == TaaResolve::fsr2_2)
     return fmt::format("{} at {:g}x (FSR 2.2's upsample, history, rectification and blend; {})",
                        t.preset, t.upscale.ratio, samples);
-  if (t.resolve == TaaResolve::ue4_4_26)
-    return fmt::format("{} at {:g}x (UE 4.26's main pass: filter, history, clamp and blend; {})",
-                       t.preset, t.upscale.ratio, samples);
+  if (t.resolve != TaaResolve::generic && t.resolve != TaaResolve::fsr2_2)
+    return fmt::format("{} at {:g}x ({}'s own history, rectification and blend; {})", t.preset,
+                       t.upscale.ratio, taa_resolve_engine(t.resolve), samples);
   return fmt::format("{} at {:g}x ({} reconstruction, {} history, {}, {}; {})", t.preset,
                      t.upscale.ratio, t.upscale.reconstruction.name(),
                      history_sampler_name(t.history), rect, blend, samples);

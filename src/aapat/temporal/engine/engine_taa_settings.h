@@ -18,11 +18,12 @@
 //                      Bevy's confidence 1 / 0.015 as frames (7)
 //   jitter_sign        -1: each sample at the render pixel's centre minus
 //                      the jitter, as FSR 2 and UE4 place it; 1: plus (Bevy)
-//   resolve            generic (the settings above), fsr2-2.2 (FSR 2.2's
-//                      own arithmetic, fsr2_accumulate.h) or ue4-4.26 (UE
-//                      4.26's main pass, ue4_main_pass.h, ratio 1 only);
-//                      the engines' own read none of the generic settings:
-//                      setting one is refused
+//   resolve            generic (the settings above), or an engine's own
+//                      arithmetic: fsr2-2.2 (fsr2_accumulate.h), ue4-4.26
+//                      (UE 4.26's main pass, ue4_main_pass.h), godot-4.6
+//                      (godot_taa.h), bevy-0.17 (bevy_taa.h); the last three
+//                      at ratio 1 only. An engine's own reads none of the
+//                      generic settings: setting one is refused
 #pragma once
 
 #include <algorithm>
@@ -40,9 +41,12 @@
 
 namespace aapat {
 
-enum class TaaResolve { generic, fsr2_2, ue4_4_26 };
-TaaResolve parse_taa_resolve(std::string_view name);  // generic, fsr2-2.2, ue4-4.26
+enum class TaaResolve { generic, fsr2_2, ue4_4_26, godot_4_6, bevy_0_17 };
+// generic, fsr2-2.2, ue4-4.26, godot-4.6, bevy-0.17
+TaaResolve parse_taa_resolve(std::string_view name);
 std::string_view taa_resolve_name(TaaResolve r);
+// The engine and version a resolve transcribes ("UE 4.26"); "generic".
+std::string_view taa_resolve_engine(TaaResolve r);
 
 struct EngineTaa {
   std::string preset = "custom";

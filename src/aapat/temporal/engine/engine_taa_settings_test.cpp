@@ -47,7 +47,8 @@ TEST(EngineTaaSettings, PresetsCarryTheirSourcesNumbers) {
   }
   EXPECT_NEAR(s16.frames[7].sets[0][0].x, -0.4375, 1e-15);  // Bevy 0.16's last entry
   EXPECT_NEAR(s16.frames[7].sets[0][0].y, 0.3888889, 1e-7);
-  const EngineTaa godot = make_engine_taa("godot", 1, {{"history", "bilinear"}, {"gamma", "1.5"}});
+  const EngineTaa godot = make_engine_taa(
+      "godot", 1, {{"resolve", "generic"}, {"history", "bilinear"}, {"gamma", "1.5"}});
   EXPECT_EQ(godot.count_max, 16);
   EXPECT_EQ(godot.history, HistorySampler::bilinear);
   EXPECT_EQ(godot.gamma, 1.5);
@@ -69,12 +70,16 @@ TEST(EngineTaaSettings, GodotsBoxNarrowsWithSpeed) {
   EXPECT_NEAR(box_gamma(godot, 0.5 * d), 0.4 + 0.6 * 0.25, 1e-15);
   EXPECT_NEAR(box_gamma(godot, d), 0.4, 1e-15);
   EXPECT_NEAR(box_gamma(godot, 3 * d), 0.4, 1e-15);
-  const EngineTaa scaled = make_engine_taa("godot", 1, {{"gamma", "0.75"}});  // variance_dynamic
+  const EngineTaa scaled =
+      make_engine_taa("godot", 1, {{"resolve", "generic"}, {"gamma", "0.75"}});  // variance_dynamic
   EXPECT_NEAR(box_gamma(scaled, d), 0.75 * 0.4, 1e-15);
   for (const char* other : {"ue4", "bevy", "bevy-0.16"})
     EXPECT_EQ(box_gamma(make_engine_taa(other, 1), 0.5), make_engine_taa(other, 1).gamma) << other;
-  EXPECT_EQ(box_gamma(make_engine_taa("godot", 1, {{"gamma_speed", "0"}}), d), 1.0);  // off
-  EXPECT_THROW(make_engine_taa("godot", 1, {{"gamma_moving", "1.5"}}), ParameterError);
+  EXPECT_EQ(
+      box_gamma(make_engine_taa("godot", 1, {{"resolve", "generic"}, {"gamma_speed", "0"}}), d),
+      1.0);  // off
+  EXPECT_THROW(make_engine_taa("godot", 1, {{"resolve", "generic"}, {"gamma_moving", "1.5"}}),
+               ParameterError);
 }
 
 // No setting is taken and then ignored: FSR 2.2's arithmetic reads none of
@@ -115,7 +120,7 @@ TEST(EngineTaaSettings, SettingsAPresetDoesNotReadAreRefused) {
   EXPECT_EQ(make_engine_taa("ue4", 1, {{"jitter_sign", "1"}}).jitter_sign, 1);
   // A value out of range is named as the override it came in, not as a flag.
   try {
-    make_engine_taa("godot", 1, {{"gamma", "-1"}});
+    make_engine_taa("godot", 1, {{"resolve", "generic"}, {"gamma", "-1"}});
     ADD_FAILURE() << "gamma=-1 was taken";
   } catch (const ParameterError& e) {
     EXPECT_EQ(e.parameter(), "taa-set");

@@ -7,6 +7,8 @@
 #include <random>
 
 #include "aapat/render/renderer.h"
+#include "aapat/temporal/engine/bevy_taa.h"
+#include "aapat/temporal/engine/godot_taa.h"
 #include "aapat/temporal/engine/ue4_main_pass.h"
 #include "aapat/temporal/sequence/sequence_generators.h"
 #include "testing/centre_reference.h"
@@ -82,8 +84,9 @@ TEST(EngineTaa, AWholePixelPanReprojectsExactly) {
 TEST(EngineTaa, GodotsMovingBoxActsOnlyInMotion) {
   const Scene scene = make_scene("circles", 16, 12);
   const Sequence s = make_sequence("halton:frames=4");
-  const EngineTaa godot = make_engine_taa("godot", 1),
-                  fixed = make_engine_taa("godot", 1, {{"gamma_speed", "0"}});
+  const EngineTaa godot = make_engine_taa("godot", 1, {{"resolve", "generic"}}),
+                  fixed =
+                      make_engine_taa("godot", 1, {{"resolve", "generic"}, {"gamma_speed", "0"}});
   EngineRun still{scene, make_motion("static", 16, 12), 16, 12, 3, 4, {}};
   EXPECT_EQ(frames_of(still, s, godot)[2].values, frames_of(still, s, fixed)[2].values);
   EngineRun pan{scene, make_motion("pan:dx=0.6,dy=0.3", 16, 12), 16, 12, 3, 4, {}};
@@ -171,7 +174,7 @@ TEST(EngineTaa, Ue4ConvergesOnAStillScene) {
   std::vector<double> samples;
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) samples.push_back(shade(scene, {i + placed.x, j + placed.y}));
-  const Ue4Frame frame{w, h, 1, samples.data()};
+  const SampleFrame frame{w, h, 1, samples.data()};
   const auto weights = ue4_plus_weights(placed);
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i)
@@ -189,6 +192,52 @@ TEST(EngineTaa, Ue4ConvergesOnAStillScene) {
   const std::vector<Image> generic =
       frames_of(run, s, make_engine_taa("ue4", 1, {{"resolve", "generic"}}));
   EXPECT_NE(generic.back().values, frames.back().values);
+}
+
+// Godot's and Bevy's native TAAs through the renderer: after a cut the
+// first frame is the samples (Bevy's reset, Godot's copied frame); the
+// second is each pixel's resolve (godot_taa_pixel, bevy_taa_pixel) of the
+// first as history (count 0; confidence 1 / 0.015) on a still scene.
+TEST(EngineTaa, GodotAndBevyFramesAreTheirPixels) {
+  const int w = 12, h = 9;
+  const Scene scene = make_scene("circles", w, h);
+  EngineRun run{scene, make_motion("static", w, h), w, h, 2, 0, {}};
+  for (const char* preset : {"godot", "bevy"}) {
+    const EngineTaa t = make_engine_taa(preset, 1);
+    const Sequence s = make_sequence(t.jitter);
+    const std::vector<Image> frames = frames_of(run, s, t);
+    const Sequence placed = engine_samples(s, t);
+    std::vector<double> samples[2];
+    for (size_t f = 0; f < 2; ++f) {
+      const Vec2 j = placed.frames[f].sets[0][0];
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) samples[f].push_back(shade(scene, {x + j.x, y + j.y}));
+    }
+    Plane history{w, h, 4, {}};
+    for (const double v : samples[0])
+      history.values.insert(history.values.end(),
+                            {v, v, v, t.resolve == TaaResolve::bevy_0_17 ? 1 / 0.015 : 0.0});
+    const SampleFrame frame{w, h, 1, samples[1].data()};
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const size_t at = static_cast<size_t>(y * w + x);
+        EXPECT_EQ(frames[0].values[at], samples[0][at]) << preset;
+        double v[4];
+        FrameRgb want;
+        if (t.resolve == TaaResolve::bevy_0_17) {
+          sample_history(history, {double(x), double(y)}, HistorySampler::catmull_rom_5, v);
+          const FrameRgb previous{v[0], v[1], v[2]};
+          want = bevy_taa_pixel(neighbourhood_3x3(frame, x, y), &previous, 1 / 0.015, true).rgb;
+        } else {
+          sample_history(history, {double(x), double(y)}, HistorySampler::catmull_rom_9, v);
+          want = godot_taa_pixel(neighbourhood_3x3(frame, x, y), {v[0], v[1], v[2]}, 0, false, 0,
+                                 godot_variance_scale(h))
+                     .rgb;
+        }
+        EXPECT_NEAR(frames[1].values[at], std::clamp(want[0], 0.0, 1.0), 1e-12)
+            << preset << " " << x << "," << y;
+      }
+  }
 }
 
 TEST(EngineTaa, RefusesWhatItCannotRender) {

@@ -44,16 +44,9 @@ std::array<double, 5> ue4_plus_weights(Vec2 placed) {
   return plus;
 }
 
-Ue4Neighbourhood ue4_gather(const Ue4Frame& f, int x, int y) {
-  Ue4Neighbourhood n{};
-  for (int i = 0; i < 9; ++i) {
-    const int sx = std::clamp(x + i % 3 - 1, 0, f.width - 1),
-              sy = std::clamp(y + i / 3 - 1, 0, f.height - 1);
-    const double* v =
-        &f.values[(static_cast<size_t>(sy) * f.width + sx) * static_cast<size_t>(f.channels)];
-    n[static_cast<size_t>(i)] =
-        ue4_ycocg(f.channels == 3 ? Ue4Colour{v[0], v[1], v[2]} : Ue4Colour{v[0], v[0], v[0]});
-  }
+Ue4Neighbourhood ue4_gather(const SampleFrame& f, int x, int y) {
+  Ue4Neighbourhood n = neighbourhood_3x3(f, x, y);
+  for (Ue4Colour& c : n) c = ue4_ycocg(c);
   return n;
 }
 

@@ -34,11 +34,12 @@
 #include <array>
 
 #include "aapat/core/geometry.h"
+#include "aapat/temporal/engine/sample_frame.h"
 #include "aapat/temporal/model/history_sampling.h"
 
 namespace aapat {
 
-using Ue4Colour = std::array<double, 3>;
+using Ue4Colour = FrameRgb;
 
 // r.TemporalAACurrentFrameWeight's default (TemporalAA.cpp).
 inline constexpr double kUe4CurrentFrameWeight = 0.04;
@@ -56,13 +57,7 @@ std::array<double, 5> ue4_plus_weights(Vec2 placed);
 // InputMaxPixelCoord).
 using Ue4Neighbourhood = std::array<Ue4Colour, 9>;
 
-// One frame at ratio 1, one sample per pixel: `channels` (3, RGB, or 1,
-// grey, read as R = G = B) values per pixel, row by row.
-struct Ue4Frame {
-  int width = 0, height = 0, channels = 1;
-  const double* values = nullptr;
-};
-Ue4Neighbourhood ue4_gather(const Ue4Frame& frame, int x, int y);
+Ue4Neighbourhood ue4_gather(const SampleFrame& frame, int x, int y);
 
 // Step 4: the history (RGB, or grey) at the reprojected point p (pixel
 // units, centres at integers), or false where UE ignores it (p off screen:

@@ -288,7 +288,7 @@ TEST(Ue4MainPass, EveryPixelIsTheShadersArithmetic) {
       T.Previous.push_back({i % c.w + c.motion[0], i / c.w + c.motion[1]});
     }
     const std::vector<double> input_values = plane_of(T.InputSceneColor, c.w, c.h).values;
-    const Ue4Frame frame{c.w, c.h, 3, input_values.data()};
+    const SampleFrame frame{c.w, c.h, 3, input_values.data()};
     const Plane history = plane_of(T.HistoryBuffer, c.w, c.h);
     // The library places the sample at minus the API's jitter.
     const auto weights = ue4_plus_weights({-c.jitter[0], -c.jitter[1]});
