@@ -16,6 +16,12 @@ GodotColour reinhard(const GodotColour& c) {
   return {c[0] / (c[0] + 1), c[1] / (c[1] + 1), c[2] / (c[2] + 1)};
 }
 
+// GLSL's mix, written out: std::lerp rounds differently in each standard
+// library, and the same seed must give the same output on every platform.
+double mix(double a, double b, double t) {
+  return a * (1 - t) + b * t;
+}
+
 double luminance(const GodotColour& c) {
   return std::max(0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2], 0.0001);
 }
@@ -67,7 +73,7 @@ GodotPixel godot_taa_pixel(const std::array<GodotColour, 9>& n, const GodotColou
   }
   const double confidence = std::clamp(1 - speed / kVelocityConfidenceDistance, 0.0, 1.0);
   const double box =
-      std::lerp(kMinVarianceBoxSize * variance_scale, variance_scale, confidence * confidence);
+      mix(kMinVarianceBoxSize * variance_scale, variance_scale, confidence * confidence);
   double mean[3], lo[3], hi[3], hy[3];
   for (int c = 0; c < 3; ++c) {
     mean[c] = sum[c] / total;

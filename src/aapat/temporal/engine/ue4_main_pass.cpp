@@ -84,7 +84,9 @@ Ue4Colour ue4_main_pass(const Ue4Neighbourhood& n, const std::array<double, 5>& 
     const double luma_history = h[0];
     for (size_t c = 0; c < 3; ++c) h[c] = std::clamp(h[c], lo[c], hi[c]);
     // Velocity in UE's units: BackN (2 per viewport) times the viewport's size.
-    double blend = std::lerp(kUe4CurrentFrameWeight, 0.2, std::clamp(2 * velocity / 40, 0.0, 1.0));
+    // HLSL's lerp written out (std::lerp rounds differently in each standard library).
+    const double t = std::clamp(2 * velocity / 40, 0.0, 1.0);
+    double blend = kUe4CurrentFrameWeight + t * (0.2 - kUe4CurrentFrameWeight);
     // saturate(0.01 Y / |dY|): a zero difference is +inf (or NaN for 0 / 0)
     // in the shader, which saturate takes to 1 (and NaN to 0).
     const double dy = std::abs(filtered[0] - luma_history);
