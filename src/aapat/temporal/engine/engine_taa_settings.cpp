@@ -139,47 +139,42 @@ bool generic_only(const std::string& key) {
 
 }  // namespace
 
+namespace {
+
+// Each resolve's name (`resolve=`) and the engine and version it transcribes.
+struct ResolveInfo {
+  TaaResolve resolve;
+  std::string_view name, engine;
+};
+constexpr ResolveInfo kResolves[] = {{TaaResolve::generic, "generic", "generic"},
+                                     {TaaResolve::fsr2_2, "fsr2-2.2", "FSR 2.2"},
+                                     {TaaResolve::ue4_4_26, "ue4-4.26", "UE 4.26"},
+                                     {TaaResolve::godot_4_6, "godot-4.6", "Godot 4.6"},
+                                     {TaaResolve::bevy_0_17, "bevy-0.17", "Bevy 0.17"}};
+
+const ResolveInfo& info(TaaResolve r) {
+  for (const ResolveInfo& i : kResolves)
+    if (i.resolve == r) return i;
+  return kResolves[0];
+}
+
+}  // namespace
+
 TaaResolve parse_taa_resolve(std::string_view name) {
-  constexpr TaaResolve kResolves[] = {TaaResolve::generic, TaaResolve::fsr2_2, TaaResolve::ue4_4_26,
-                                      TaaResolve::godot_4_6, TaaResolve::bevy_0_17};
   std::string known;
-  for (const TaaResolve r : kResolves) {
-    if (name == taa_resolve_name(r)) return r;
-    known += (known.empty() ? "" : ", ") + std::string(taa_resolve_name(r));
+  for (const ResolveInfo& i : kResolves) {
+    if (name == i.name) return i.resolve;
+    known += (known.empty() ? "" : ", ") + std::string(i.name);
   }
   throw ParameterError("resolve", fmt::format(" {}: known are {}", name, known));
 }
 
 std::string_view taa_resolve_name(TaaResolve r) {
-  switch (r) {
-    case TaaResolve::fsr2_2:
-      return "fsr2-2.2";
-    case TaaResolve::ue4_4_26:
-      return "ue4-4.26";
-    case TaaResolve::godot_4_6:
-      return "godot-4.6";
-    case TaaResolve::bevy_0_17:
-      return "bevy-0.17";
-    case TaaResolve::generic:
-      break;
-  }
-  return "generic";
+  return info(r).name;
 }
 
 std::string_view taa_resolve_engine(TaaResolve r) {
-  switch (r) {
-    case TaaResolve::fsr2_2:
-      return "FSR 2.2";
-    case TaaResolve::ue4_4_26:
-      return "UE 4.26";
-    case TaaResolve::godot_4_6:
-      return "Godot 4.6";
-    case TaaResolve::bevy_0_17:
-      return "Bevy 0.17";
-    case TaaResolve::generic:
-      break;
-  }
-  return "generic";
+  return info(r).engine;
 }
 
 Sequence engine_samples(const Sequence& s, const EngineTaa& t) {
