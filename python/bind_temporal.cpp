@@ -332,7 +332,7 @@ render, or None.)doc";
          int random_scenes, int shapes, const std::string& motion, uint64_t seed, double max_speed,
          std::pair<int, int> size, int frames, int warmup, int reference_samples,
          const std::string& reference_filter, double step, double min_step, double loss,
-         double jitter_bound, int max_tries, bool worst,
+         double jitter_bound, int max_tries, bool worst, bool unbiased,
          const std::vector<std::string>& also_motions, const py::object& progress) {
         RenderedSearch s;
         s.comparison =
@@ -347,6 +347,7 @@ render, or None.)doc";
         s.jitter_bound = jitter_bound;
         s.max_tries = max_tries;
         s.worst = worst;
+        s.unbiased = unbiased;
         s.also_motions = also_motions;
         validate(s);
         const auto report = progress_of(progress);
@@ -367,7 +368,7 @@ render, or None.)doc";
       py::arg("step") = RenderedSearch{}.step, py::arg("min_step") = RenderedSearch{}.min_step,
       py::arg("loss") = RenderedSearch{}.loss,
       py::arg("jitter_bound") = RenderedSearch{}.jitter_bound, py::arg("max_tries") = 0,
-      py::arg("worst") = RenderedSearch{}.worst,
+      py::arg("worst") = RenderedSearch{}.worst, py::arg("unbiased") = RenderedSearch{}.unbiased,
       py::arg("also_motions") = std::vector<std::string>{}, py::arg("progress") = py::none(),
       R"doc(aapat sequence search: a jitter searched on rendered error. A compass search
 from `start` (a Sequence or spec) whose objective renders the sequence through
@@ -377,7 +378,8 @@ scenes of log(rmse ratio) + log(flip ratio) + loss (their positive parts) +
 (1 + loss) (the positive part of log(flicker ratio)), so a scene lost weighs
 1 + loss and flicker counts only where it rises; worst=True takes each
 scene's worst phase (motion "cut") or resonant velocity ("resonant");
-also_motions: further motions searched at once (the objective is the mean over
+unbiased=True keeps the frames' mean jitter at (0, 0), as XeSS asks (each
+trial rendered centred); also_motions: further motions searched at once (the objective is the mean over
 the motions). A dict with the keys of `aapat sequence search
 --json` (start_value, value, tries, kept, ...), its "result" the
 aapat.Sequence found. progress: a callable f(done, total, note) as each step

@@ -572,13 +572,17 @@ def test_sequence_search_is_the_cli_search(aapat_cli, tmp_path):
     args = ["halton:frames=4", "--taa", "bevy", "--random-scenes", "2", "--shapes", "3",
             "--motion", "random-pan", "--size", "12", "--frames", "3", "--warmup", "2",
             "--reference-samples", "4", "--max-tries", "6", "--step", "0.125",
-            "--min-step", "0.0625", "-o", out]
+            "--min-step", "0.0625", "--unbiased", "-o", out]
     cli = cli_json(aapat_cli, "sequence", "search", *args)
     py = aapat.sequence_search("halton:frames=4", taa="bevy", random_scenes=2, shapes=3,
                                motion="random-pan", size=(12, 12), frames=3, warmup=2,
-                               reference_samples=4, max_tries=6, step=0.125, min_step=0.0625)
-    for key in ("start_value", "value", "tries", "kept", "against", "scenes", "worst", "motions"):
+                               reference_samples=4, max_tries=6, step=0.125, min_step=0.0625,
+                               unbiased=True)
+    for key in ("start_value", "value", "tries", "kept", "against", "scenes", "worst",
+                "unbiased", "motions"):
         assert py[key] == cli[key], key
+    mean = py["result"].offsets.mean(axis=(0, 1))  # unbiased: the frames' mean is (0, 0)
+    assert abs(mean[0]) < 1e-12 and abs(mean[1]) < 1e-12
     assert py["result"].to_json() == aapat.sequence(out).to_json()
     assert cli["value"] <= cli["start_value"]
     assert cli["against"] == "bevy-halton:frames=8"  # the preset's own jitter (Bevy 0.17)

@@ -437,6 +437,7 @@ std::vector<std::string> random_command() {
       maybe(a, "--loss", {"0", "-1", "nan"});
       maybe(a, "--step", {"0.125", "0", "0.75"});
       maybe(a, "-o", {"s.json", "s.txt"});
+      maybe_flag(a, "--unbiased");
       maybe_flag(a, "--json");
       break;
     case 22:  // the perceptual objective, tiny charts: eval and refine

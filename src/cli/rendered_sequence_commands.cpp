@@ -179,7 +179,7 @@ void add_sequence_search(CLI::App* parent, std::function<void(std::ostream&)>& a
     double step = RenderedSearch{}.step, min_step = RenderedSearch{}.min_step,
            loss = RenderedSearch{}.loss, jitter_bound = RenderedSearch{}.jitter_bound;
     int max_tries = 0;
-    bool worst = false, json = false;
+    bool worst = false, unbiased = false, json = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("start", o->start,
@@ -203,6 +203,9 @@ void add_sequence_search(CLI::App* parent, std::function<void(std::ostream&)>& a
   cmd->add_flag("--worst", o->worst,
                 "search on each scene's worst phase (--motion cut) or resonant velocity "
                 "(--motion resonant), not the mean over them");
+  cmd->add_flag("--unbiased", o->unbiased,
+                "keep the frames' mean jitter at (0, 0), as XeSS asks of a jitter sequence "
+                "(each trial is rendered centred)");
   cmd->add_option("-o,--output", o->output, "write the sequence found (.json)");
   cmd->add_flag("--json", o->json, "print JSON");
   action = [o, cmd](std::ostream& out) {
@@ -219,6 +222,7 @@ void add_sequence_search(CLI::App* parent, std::function<void(std::ostream&)>& a
     s.jitter_bound = o->jitter_bound;
     s.max_tries = o->max_tries;
     s.worst = o->worst;
+    s.unbiased = o->unbiased;
     s.also_motions = o->also_motions;
     validate(s);  // before any render
     RenderedSearchResult r;

@@ -103,9 +103,34 @@ RenderedSearchResult search_rendered(const RenderedSearch& s, const ReferenceSou
     }
   Sequence trial = s.start;
   const bool null_refused = s.comparison.taa.resolve == TaaResolve::fsr2_2;
+  // Inside the pixel ([-1/2, 1/2), as a sequence file holds it) and the bound.
+  CompassSettings settings;
+  settings.hi = std::min(s.jitter_bound, std::nextafter(0.5, 0.0));
+  settings.lo = -s.jitter_bound;
+  // The frames at x, centred when the sequence must be unbiased; false
+  // where the centring leaves the bound.
+  const auto place = [&](std::span<const double> x, Sequence& out) {
+    const size_t n = out.frames.size();
+    double mx = 0, my = 0;
+    if (s.unbiased) {
+      for (size_t f = 0; f < n; ++f) {
+        mx += x[2 * f];
+        my += x[2 * f + 1];
+      }
+      mx /= static_cast<double>(n);
+      my /= static_cast<double>(n);
+    }
+    bool inside = true;
+    for (size_t f = 0; f < n; ++f) {
+      const Vec2 p{x[2 * f] - mx, x[2 * f + 1] - my};
+      inside = inside && p.x >= settings.lo && p.x <= settings.hi && p.y >= settings.lo &&
+               p.y <= settings.hi;
+      out.frames[f].sets[0][0] = p;
+    }
+    return inside;
+  };
   const auto objective = [&](std::span<const double> x) {
-    for (size_t f = 0; f < trial.frames.size(); ++f)
-      trial.frames[f].sets[0][0] = {x[2 * f], x[2 * f + 1]};
+    if (!place(x, trial)) return HUGE_VAL;
     if (null_refused && has_null_jitter(trial)) return HUGE_VAL;  // never a null vector
     double total = 0;
     for (Searched& one : searched) {
@@ -123,17 +148,23 @@ RenderedSearchResult search_rendered(const RenderedSearch& s, const ReferenceSou
     return total / static_cast<double>(searched.size());
   };
   FunctionObjective f(objective, 2);
-  // Inside the pixel ([-1/2, 1/2), as a sequence file holds it) and the bound.
-  CompassSettings settings;
   settings.step = s.step;
   settings.min_step = s.min_step;
-  settings.hi = std::min(s.jitter_bound, std::nextafter(0.5, 0.0));
-  settings.lo = -s.jitter_bound;
   settings.max_tries = s.max_tries;
   std::vector<double> x;
   for (const Pattern& p : s.start.frames)
     x.insert(x.end(), {std::clamp(p.sets[0][0].x, settings.lo, settings.hi),
                        std::clamp(p.sets[0][0].y, settings.lo, settings.hi)});
+  // An unbiased search starts from the start centred, which must stay in bounds.
+  Sequence centred = s.start;
+  if (!place(x, centred))
+    throw ParameterError("start", fmt::format(" {}: centred to a mean jitter of (0, 0) (unbiased), "
+                                              "a frame leaves +-{} pixels",
+                                              s.start.name, s.jitter_bound));
+  for (size_t f = 0; f < centred.frames.size(); ++f) {
+    x[2 * f] = centred.frames[f].sets[0][0].x;
+    x[2 * f + 1] = centred.frames[f].sets[0][0].y;
+  }
   // Each value is rendered afresh (no incremental sums): any lower value is a gain.
   settings.min_gain = 0;
   const CompassResult found = compass_search(f, std::move(x), settings, progress);
@@ -143,15 +174,15 @@ RenderedSearchResult search_rendered(const RenderedSearch& s, const ReferenceSou
   r.tries = found.tries;
   r.kept = found.kept;
   r.best = s.start;
-  for (size_t i = 0; i < r.best.frames.size(); ++i)
-    r.best.frames[i].sets[0][0] = {found.x[2 * i], found.x[2 * i + 1]};
+  place(found.x, r.best);
   r.best.name = fmt::format("rendered-search-{}", r.best.period());
   r.best.description = fmt::format(
       "{} frames of 1 sample searched on rendered error under {} at {:g}x against {}: the mean "
-      "log ratio of rmse and flip, flicker not above, over {} scenes ({}{}), losses weighted {}",
+      "log ratio of rmse and flip, flicker not above, over {} scenes ({}{}), losses weighted "
+      "{}{}",
       r.best.period(), s.comparison.taa.preset, s.comparison.taa.upscale.ratio, s.baseline.name,
       s.comparison.scenes.size(), fmt::join(searched_motions(s), " + "),
-      s.worst ? ", each scene's worst" : "", 1 + s.loss);
+      s.worst ? ", each scene's worst" : "", 1 + s.loss, s.unbiased ? "; unbiased (mean 0)" : "");
   r.best.provenance = {{"optimizer", "aapat sequence search (compass search on rendered error)"},
                        {"taa", s.comparison.taa.preset},
                        {"taa_settings", engine_taa_text(s.comparison.taa)},
@@ -163,6 +194,7 @@ RenderedSearchResult search_rendered(const RenderedSearch& s, const ReferenceSou
                        {"seed", std::to_string(s.comparison.seed)},
                        {"loss", fmt::format("{:g}", s.loss)},
                        {"worst", s.worst ? "1" : "0"},
+                       {"unbiased", s.unbiased ? "1" : "0"},
                        {"start_value", fmt::format("{:.6f}", r.start_value)},
                        {"value", fmt::format("{:.6f}", r.value)}};
   if (s.comparison.taa.upscale.ratio > 1) {
@@ -184,6 +216,7 @@ JsonObject rendered_search_json(const RenderedSearch& s, const RenderedSearchRes
                         {"min_step", s.min_step},
                         {"loss", s.loss},
                         {"worst", s.worst},
+                        {"unbiased", s.unbiased},
                         {"motions", searched_motions(s)},
                         {"jitter_bound", s.jitter_bound},
                         {"start_value", r.start_value},

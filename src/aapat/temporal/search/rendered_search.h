@@ -37,6 +37,10 @@ struct RenderedSearch {
   double jitter_bound = 0.5;  // every coordinate within +-bound (below 1/2: inside the pixel)
   int max_tries = 0;          // 0: until the smallest step keeps nothing
   bool worst = false;         // each scene's worst phase or velocity (cut, resonant)
+  // XeSS's rule: the frames' mean jitter is (0, 0). Every trial (the start
+  // too) is rendered centred: its mean subtracted, a coordinate the
+  // centring pushes past the bound refused.
+  bool unbiased = false;
   // Further motions searched at once: the objective is the mean over the
   // comparison's motion and these of each one's objective.
   std::vector<std::string> also_motions;

@@ -118,6 +118,45 @@ TEST(RenderedSearch, Fsr2NeverTakesANullVector) {
   for (const Pattern& f : r.best.frames) EXPECT_FALSE(f.sets[0][0].x == 0 && f.sets[0][0].y == 0);
 }
 
+// Unbiased (XeSS's rule): from a biased start (Halton's four frames from
+// index 1) every frame of the result is the searched one centred, so their
+// mean is (0, 0), and the start's value is the centred start's; a start the
+// centring pushes past the bound is refused by name.
+TEST(RenderedSearch, UnbiasedKeepsTheMeanJitterAtZero) {
+  RenderedSearch s = tiny();
+  s.unbiased = true;
+  const RenderedSearchResult r = search_rendered(s, testing::centre_reference);
+  double mx = 0, my = 0;
+  for (const Pattern& f : r.best.frames) {
+    mx += f.sets[0][0].x;
+    my += f.sets[0][0].y;
+    EXPECT_LE(std::abs(f.sets[0][0].x), 0.5);
+  }
+  EXPECT_NEAR(mx, 0, 1e-12);
+  EXPECT_NEAR(my, 0, 1e-12);
+  EXPECT_LE(r.value, r.start_value);
+  Sequence centred = s.start;
+  double sx = 0, sy = 0;
+  for (const Pattern& f : centred.frames) {
+    sx += f.sets[0][0].x / 4;
+    sy += f.sets[0][0].y / 4;
+  }
+  ASSERT_GT(std::abs(sx) + std::abs(sy), 0.01);  // the start is biased
+  for (Pattern& f : centred.frames) f.sets[0][0] = {f.sets[0][0].x - sx, f.sets[0][0].y - sy};
+  RenderedSearch at_centre = tiny();
+  at_centre.start = centred;
+  at_centre.max_tries = 1;
+  EXPECT_NEAR(search_rendered(at_centre, testing::centre_reference).start_value, r.start_value,
+              1e-12);
+  EXPECT_EQ(rendered_search_json(s, r)["unbiased"], true);
+  Sequence lopsided = s.start;
+  const double xs[4] = {-0.5, 0.49, 0.49, 0.49};
+  for (size_t f = 0; f < 4; ++f) lopsided.frames[f].sets[0][0].x = xs[f];
+  s.start = lopsided;
+  EXPECT_EQ(testing::error_parameter([&] { search_rendered(s, testing::centre_reference); }),
+            "start");
+}
+
 // Settings out of range, and a baseline with nothing to take a ratio of,
 // are refused by name.
 TEST(RenderedSearch, RefusesWhatItCannotSearch) {
