@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "aapat/temporal/model/history_sampling.h"
+#include "testing/gpu_texture.h"
 
 namespace aapat {
 // Named, not anonymous: the unity build shares a translation unit with the
@@ -66,34 +67,13 @@ F3 clip_towards_aabb_center(F3 history_color, F3 aabb_min, F3 aabb_max) {
   return history_color;
 }
 
-// The bound textures: view_target (RGB), history (RGB and confidence) and
-// motion_vectors (uv units), W x H.
+// The bound textures, W x H, read with clamp-to-edge samplers: view_target
+// (RGB), history (RGB and confidence) and motion_vectors (uv units).
 struct Textures {
   int W = 0, H = 0;
-  std::vector<F3> view_target;
-  std::vector<F4> history;
-  std::vector<F2> motion_vectors;
-  // A clamp-to-edge nearest sampler.
-  template <typename T>
-  T nearest(const std::vector<T>& t, F2 uv) const {
-    const int x = std::clamp(static_cast<int>(std::floor(uv[0] * W)), 0, W - 1),
-              y = std::clamp(static_cast<int>(std::floor(uv[1] * H)), 0, H - 1);
-    return t[static_cast<size_t>(y * W + x)];
-  }
-  // A clamp-to-edge linear sampler on the history.
-  F4 linear(F2 uv) const {
-    const double tx = uv[0] * W - 0.5, ty = uv[1] * H - 0.5;
-    const int x0 = static_cast<int>(std::floor(tx)), y0 = static_cast<int>(std::floor(ty));
-    const double fx = tx - x0, fy = ty - y0;
-    F4 r{};
-    for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 2; ++i) {
-        const F4& c = history[static_cast<size_t>(std::clamp(y0 + j, 0, H - 1) * W +
-                                                  std::clamp(x0 + i, 0, W - 1))];
-        for (size_t k = 0; k < 4; ++k) r[k] += (i ? fx : 1 - fx) * (j ? fy : 1 - fy) * c[k];
-      }
-    return r;
-  }
+  testing::GpuTexture<F3> view_target;
+  testing::GpuTexture<F4> history;
+  testing::GpuTexture<F2> motion_vectors;
 };
 
 struct Output {
@@ -105,10 +85,10 @@ struct Output {
 Output taa(const Textures& T, F2 uv, bool RESET) {
   const F2 texture_size{double(T.W), double(T.H)};
   const F2 texel_size{1.0 / T.W, 1.0 / T.H};
-  F3 current_color = T.nearest(T.view_target, uv);
+  F3 current_color = T.view_target.nearest(uv[0], uv[1]);
   if (RESET) return {current_color, 1.0 / MIN_HISTORY_BLEND_RATE};  // :191-193
   // The closest-depth search before :124, without depth: the pixel's own motion vector.
-  const F2 closest_motion_vector = T.nearest(T.motion_vectors, uv);
+  const F2 closest_motion_vector = T.motion_vectors.nearest(uv[0], uv[1]);
   // :124-140, 5-tap Catmull-Rom
   const F2 history_uv{uv[0] - closest_motion_vector[0], uv[1] - closest_motion_vector[1]};
   F2 w0, w1, w2, w3, w12, tp0, tp3, tp12;
@@ -127,7 +107,7 @@ Output taa(const Textures& T, F2 uv, bool RESET) {
   }
   F3 history_color{};
   const auto add = [&](F2 at, double w) {
-    const F4 c = T.linear(at);
+    const F4 c = T.history.linear(at[0], at[1]);
     for (size_t k = 0; k < 3; ++k) history_color[k] += c[k] * w;
   };
   add({tp12[0], tp0[1]}, w12[0] * w0[1]);
@@ -139,10 +119,9 @@ Output taa(const Textures& T, F2 uv, bool RESET) {
   F3 moment_1{}, moment_2{};
   for (int j = -1; j <= 1; ++j)
     for (int i = -1; i <= 1; ++i) {
-      const F3 s = (i == 0 && j == 0)
-                       ? RGB_to_YCoCg(current_color)
-                       : RGB_to_YCoCg(T.nearest(T.view_target, {uv[0] + i * texel_size[0],
-                                                                uv[1] + j * texel_size[1]}));
+      const F3 s = (i == 0 && j == 0) ? RGB_to_YCoCg(current_color)
+                                      : RGB_to_YCoCg(T.view_target.nearest(
+                                            uv[0] + i * texel_size[0], uv[1] + j * texel_size[1]));
       for (size_t k = 0; k < 3; ++k) {
         moment_1[k] += s[k];
         moment_2[k] += s[k] * s[k];
@@ -157,7 +136,7 @@ Output taa(const Textures& T, F2 uv, bool RESET) {
   }
   history_color = YCoCg_to_RGB(clip_towards_aabb_center(RGB_to_YCoCg(history_color), lo, hi));
   // :164-183, the confidence and the blend
-  double history_confidence = T.linear(uv)[3];
+  double history_confidence = T.history.linear(uv[0], uv[1])[3];
   const F2 pixel_motion_vector{std::abs(closest_motion_vector[0]) * texture_size[0],
                                std::abs(closest_motion_vector[1]) * texture_size[1]};
   if (pixel_motion_vector[0] < 0.01 && pixel_motion_vector[1] < 0.01)
@@ -193,16 +172,16 @@ TEST(BevyTaa, EveryPixelIsTheShadersArithmetic) {
   for (size_t n = 0; n < cases.size(); ++n) {
     const Case& c = cases[n];
     Textures T;
-    T.W = c.w;
-    T.H = c.h;
+    T.W = T.view_target.W = T.history.W = T.motion_vectors.W = c.w;
+    T.H = T.view_target.H = T.history.H = T.motion_vectors.H = c.h;
     Plane history{c.w, c.h, 4, {}};
     std::vector<double> frame;
     for (int i = 0; i < c.w * c.h; ++i) {
       const F3 v{colour(rng), colour(rng), colour(rng)};
       const F4 hv{over(rng), over(rng), over(rng), conf(rng)};
-      T.view_target.push_back(v);
-      T.history.push_back(hv);
-      T.motion_vectors.push_back({c.motion[0] / c.w, c.motion[1] / c.h});
+      T.view_target.texels.push_back(v);
+      T.history.texels.push_back(hv);
+      T.motion_vectors.texels.push_back({c.motion[0] / c.w, c.motion[1] / c.h});
       frame.insert(frame.end(), v.begin(), v.end());
       history.values.insert(history.values.end(), hv.begin(), hv.end());
     }

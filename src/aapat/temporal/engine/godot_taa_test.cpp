@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "aapat/temporal/model/history_sampling.h"
+#include "testing/gpu_texture.h"
 
 namespace aapat {
 // Named, not anonymous: the unity build shares a translation unit with the
@@ -60,35 +61,11 @@ double luminance(vec3 color) {
 // last_accum_count_buffer, the last two read by a clamp-to-edge linear sampler.
 struct Textures {
   int W = 0, H = 0;
-  std::vector<vec3> color_buffer, history_buffer;
-  std::vector<vec2> velocity_buffer, last_velocity_buffer;
-  std::vector<double> last_accum_count_buffer;
-  template <typename T>
-  T load(const std::vector<T>& t, int x, int y) const {  // imageLoad (in range)
-    return t[static_cast<size_t>(y * W + x)];
-  }
-  template <typename T>
-  T texture(const std::vector<T>& t, vec2 uv) const {  // textureLod, linear, clamp to edge
-    const double tx = uv[0] * W - 0.5, ty = uv[1] * H - 0.5;
-    const int x0 = static_cast<int>(std::floor(tx)), y0 = static_cast<int>(std::floor(ty));
-    const double fx = tx - x0, fy = ty - y0;
-    T r{};
-    for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 2; ++i) {
-        const T c = load(t, std::clamp(x0 + i, 0, W - 1), std::clamp(y0 + j, 0, H - 1));
-        const double w = (i ? fx : 1 - fx) * (j ? fy : 1 - fy);
-        if constexpr (std::is_same_v<T, double>) {
-          r += w * c;
-        } else {
-          for (size_t k = 0; k < r.size(); ++k) r[k] += w * c[k];
-        }
-      }
-    return r;
-  }
+  testing::GpuTexture<vec3> color_buffer, history_buffer;
+  testing::GpuTexture<vec2> velocity_buffer, last_velocity_buffer;
+  testing::GpuTexture<double> last_accum_count_buffer;
   // store_color_depth: the tile holds Reinhard colours, coordinates clamped.
-  vec3 load_color(int x, int y) const {
-    return reinhard(load(color_buffer, std::clamp(x, 0, W - 1), std::clamp(y, 0, H - 1)));
-  }
+  vec3 load_color(int x, int y) const { return reinhard(color_buffer.load(x, y)); }
 };
 
 // sample_catmull_rom_9
@@ -113,7 +90,7 @@ vec3 sample_catmull_rom_9(const Textures& T, vec2 uv, vec2 resolution) {
   const vec2 ys[3] = {{texPos0[1], w0[1]}, {texPos12[1], w12[1]}, {texPos3[1], w3[1]}};
   for (const vec2& yy : ys)
     for (const vec2& xx : xs) {
-      const vec3 c = T.texture(T.history_buffer, {xx[0], yy[0]});
+      const vec3 c = T.history_buffer.linear(xx[0], yy[0]);
       for (size_t k = 0; k < 3; ++k) result[k] += c[k] * xx[1] * yy[1];
     }
   for (double& v : result) v = std::max(v, 0.0);
@@ -182,11 +159,11 @@ Result temporal_antialiasing(const Textures& T, int x, int y) {
   const double disocclusion_threshold = 2.5;
   const double variance_dynamic = std::clamp(1.1 * (1080.0 / T.H), 0.75, 1.00);
   const vec2 uv{(x + 0.5) / T.W, (y + 0.5) / T.H};
-  const vec2 velocity = T.load(T.velocity_buffer, x, y);  // no depth: the pixel's own
+  const vec2 velocity = T.velocity_buffer.load(x, y);  // no depth: the pixel's own
   const vec2 uv_reprojected{uv[0] + velocity[0], uv[1] + velocity[1]};
   const vec3 color_input = T.load_color(x, y);
   vec3 color_history = reinhard(sample_catmull_rom_9(T, uv_reprojected, resolution));
-  double prev_accum_count = T.texture(T.last_accum_count_buffer, uv_reprojected);
+  double prev_accum_count = T.last_accum_count_buffer.linear(uv_reprojected[0], uv_reprojected[1]);
   const double velocity_confidence = std::clamp(
       1.0 - std::hypot(velocity[0], velocity[1]) / VELOCITY_CONFIDENCE_DISTANCE, 0.0, 1.0);
   color_history = clip_history_3x3(T, x, y, color_history, velocity_confidence, variance_dynamic);
@@ -195,10 +172,8 @@ Result temporal_antialiasing(const Textures& T, int x, int y) {
                                    ? 1.0
                                    : 0.0;
   // get_factor_disocclusion
-  const vec2 vp =
-      T.load(T.last_velocity_buffer,
-             std::clamp(static_cast<int>(uv_reprojected[0] * resolution[0]), 0, T.W - 1),
-             std::clamp(static_cast<int>(uv_reprojected[1] * resolution[1]), 0, T.H - 1));
+  const vec2 vp = T.last_velocity_buffer.load(static_cast<int>(uv_reprojected[0] * resolution[0]),
+                                              static_cast<int>(uv_reprojected[1] * resolution[1]));
   const double disocclusion =
       std::hypot((vp[0] - velocity[0]) * resolution[0], (vp[1] - velocity[1]) * resolution[1]) -
       disocclusion_threshold;
@@ -233,19 +208,21 @@ TEST(GodotTaa, EveryPixelIsTheShadersArithmetic) {
     const int w = sizes[n][0], h = sizes[n][1];
     const vec2 m = motions[n];  // pixels: the previous point minus the current one
     Textures T;
-    T.W = w;
-    T.H = h;
+    T.W = T.color_buffer.W = T.history_buffer.W = T.velocity_buffer.W = T.last_velocity_buffer.W =
+        T.last_accum_count_buffer.W = w;
+    T.H = T.color_buffer.H = T.history_buffer.H = T.velocity_buffer.H = T.last_velocity_buffer.H =
+        T.last_accum_count_buffer.H = h;
     Plane history{w, h, 4, {}};
     std::vector<double> frame;
     for (int i = 0; i < w * h; ++i) {
       const vec3 v{colour(rng), colour(rng), colour(rng)},
           hv{colour(rng), colour(rng), colour(rng)};
       const double c = std::round(count(rng));
-      T.color_buffer.push_back(v);
-      T.history_buffer.push_back(hv);
-      T.last_accum_count_buffer.push_back(c);
-      T.velocity_buffer.push_back({m[0] / w, m[1] / h});
-      T.last_velocity_buffer.push_back({m[0] / w, m[1] / h});
+      T.color_buffer.texels.push_back(v);
+      T.history_buffer.texels.push_back(hv);
+      T.last_accum_count_buffer.texels.push_back(c);
+      T.velocity_buffer.texels.push_back({m[0] / w, m[1] / h});
+      T.last_velocity_buffer.texels.push_back({m[0] / w, m[1] / h});
       frame.insert(frame.end(), v.begin(), v.end());
       history.values.insert(history.values.end(), hv.begin(), hv.end());
       history.values.push_back(c);

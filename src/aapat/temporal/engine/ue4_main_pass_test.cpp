@@ -18,6 +18,8 @@
 #include <random>
 #include <vector>
 
+#include "testing/gpu_texture.h"
+
 namespace aapat {
 // Named, not anonymous: the unity build puts FSR 2's transcription, which
 // has its own RGBToYCoCg and Textures, in the same translation unit.
@@ -80,28 +82,12 @@ SampleWeightParameters SetupSampleWeightParameters(F2 TemporalJitterPixels) {
 }
 
 // The input scene colour and the history buffer, both W x H RGB (the
-// viewport is the whole buffer), and each pixel's point a frame earlier.
+// viewport is the whole buffer, read with clamp addressing), and each
+// pixel's point a frame earlier.
 struct Textures {
   int W = 0, H = 0;
-  std::vector<F3> InputSceneColor, HistoryBuffer;
+  testing::GpuTexture<F3> InputSceneColor, HistoryBuffer;
   std::vector<F2> Previous;  // pixel units, the scene's exact motion
-  F3 Load(const std::vector<F3>& t, int x, int y) const {
-    return t[static_cast<size_t>(y * W + x)];
-  }
-  // A bilinear sampler with clamp addressing, UV in [0, 1].
-  F3 SampleLevel(const std::vector<F3>& t, F2 UV) const {
-    const double tx = UV[0] * W - 0.5, ty = UV[1] * H - 0.5;
-    const int x0 = static_cast<int>(std::floor(tx)), y0 = static_cast<int>(std::floor(ty));
-    const double fx = tx - x0, fy = ty - y0;
-    F3 r{};
-    for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 2; ++i) {
-        const F3 c = Load(t, std::clamp(x0 + i, 0, W - 1), std::clamp(y0 + j, 0, H - 1));
-        const double w = (i ? fx : 1 - fx) * (j ? fy : 1 - fy);
-        for (size_t k = 0; k < 3; ++k) r[k] += w * c[k];
-      }
-    return r;
-  }
 };
 
 // Common.ush Bicubic2DCatmullRom and GetBicubic2DCatmullRomSamples.
@@ -165,7 +151,7 @@ F3 SampleHistory(const Textures& T, F2 HistoryScreenPosition) {
       if (Samples.UVDir[i][a] > 0)
         SampleUV[a] = std::min(SampleUV[a], HistoryBufferUVMinMax[a + 2]);
     }
-    const F3 c = T.SampleLevel(T.HistoryBuffer, SampleUV);
+    const F3 c = T.HistoryBuffer.linear(SampleUV[0], SampleUV[1]);
     for (size_t k = 0; k < 3; ++k) RawHistory0[k] += c[k] * Samples.Weight[i];
   }
   for (double& v : RawHistory0) v *= Samples.FinalMultiplier;
@@ -189,7 +175,7 @@ F3 TemporalAASample(const Textures& T, int x, int y, F2 TemporalJitterPixels, bo
         std::clamp(static_cast<int>(ViewportUV[0] * T.W) + kOffsets3x3[i][0], 0, T.W - 1);
     const int cy =
         std::clamp(static_cast<int>(ViewportUV[1] * T.H) + kOffsets3x3[i][1], 0, T.H - 1);
-    Neighbors[i] = RGBToYCoCg(T.Load(T.InputSceneColor, cx, cy));
+    Neighbors[i] = RGBToYCoCg(T.InputSceneColor.load(cx, cy));
   }
   // Camera motion: ClipToPrevClip gives the previous screen position.
   const F2 q = T.Previous[static_cast<size_t>(y * T.W + x)];
@@ -277,19 +263,19 @@ TEST(Ue4MainPass, EveryPixelIsTheShadersArithmetic) {
   for (size_t n = 0; n < cases.size(); ++n) {
     const Case& c = cases[n];
     Textures T;
-    T.W = c.w;
-    T.H = c.h;
+    T.W = T.InputSceneColor.W = T.HistoryBuffer.W = c.w;
+    T.H = T.InputSceneColor.H = T.HistoryBuffer.H = c.h;
     for (int i = 0; i < c.w * c.h; ++i) {
       const auto pick = [&] {
         return c.flat < 0 ? F3{colour(rng), colour(rng), colour(rng)} : F3{c.flat, c.flat, c.flat};
       };
-      T.InputSceneColor.push_back(pick());
-      T.HistoryBuffer.push_back(pick());
+      T.InputSceneColor.texels.push_back(pick());
+      T.HistoryBuffer.texels.push_back(pick());
       T.Previous.push_back({i % c.w + c.motion[0], i / c.w + c.motion[1]});
     }
-    const std::vector<double> input_values = plane_of(T.InputSceneColor, c.w, c.h).values;
+    const std::vector<double> input_values = plane_of(T.InputSceneColor.texels, c.w, c.h).values;
     const SampleFrame frame{c.w, c.h, 3, input_values.data()};
-    const Plane history = plane_of(T.HistoryBuffer, c.w, c.h);
+    const Plane history = plane_of(T.HistoryBuffer.texels, c.w, c.h);
     // The library places the sample at minus the API's jitter.
     const auto weights = ue4_plus_weights({-c.jitter[0], -c.jitter[1]});
     for (int y = 0; y < c.h; ++y)
