@@ -234,12 +234,6 @@ void ue4_frame(const RenderSamples& s, const std::array<double, 5>& plus_weights
   });
 }
 
-// Whether a reprojected point lies on the image, edges included (the
-// engines' uv in [0, 1]); false for NaN (a disocclusion).
-bool on_screen(Vec2 q, int w, int h) {
-  return q.x >= -0.5 && q.x <= w - 0.5 && q.y >= -0.5 && q.y <= h - 0.5;
-}
-
 // Writes an own resolve's pixel: its colour and extra value (confidence,
 // count) into the 4-channel history, the colour clamped into the display.
 void write_pixel(const std::array<double, 3>& rgb, double extra, size_t at, Plane& out,
@@ -266,7 +260,7 @@ void bevy_frame(const RenderSamples& s, const Plane* history, const Motion& moti
       } else {
         const Vec2 q = previous_point(motion, now, before, {double(x), double(y)});
         const bool still = std::abs(q.x - x) < 0.01 && std::abs(q.y - y) < 0.01;
-        const bool valid = on_screen(q, w, h);
+        const bool valid = on_image(q, w, h);  // uv in [0, 1], edges included
         double v[4];
         if (valid) sample_history(*history, q, HistorySampler::catmull_rom_5, v);
         const BevyColour previous{v[0], v[1], v[2]};
@@ -292,7 +286,7 @@ void godot_frame(const RenderSamples& s, const Plane* history, const Motion& mot
       if (history) {
         Vec2 q = previous_point(motion, now, before, {double(x), double(y)});
         if (std::isnan(q.x) || std::isnan(q.y)) q = {1e9, 1e9};  // disoccluded: off screen
-        const bool off = !on_screen(q, w, h);
+        const bool off = !on_image(q, w, h);
         // Off screen the shader reads the edge of the history and discards it.
         const Vec2 at =
             off ? Vec2{std::clamp(q.x, 0.0, w - 1.0), std::clamp(q.y, 0.0, h - 1.0)} : q;
@@ -360,11 +354,10 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
             fmt::format("sequence {}: resolve {} takes one sample per render pixel a frame, a "
                         "frame here has {}",
                         s.name, taa_resolve_name(taa.resolve), f.sets[0].size()));
-  if (!fsr2 && taa.resolve != TaaResolve::generic && taa.upscale.ratio != 1)
-    throw ParameterError("ratio", fmt::format(" {}: resolve {} runs at ratio 1 only",
-                                              taa.upscale.ratio, taa_resolve_name(taa.resolve)));
+  check_resolve_ratio(taa.resolve, taa.upscale.ratio);
   const int period = placed.period();
-  // Each phase's reconstruction weights: separable, the same for every frame of the phase.
+  // Each phase's jitter and, for the generic pipeline, its reconstruction
+  // weights: separable, the same for every frame of the phase.
   struct PhaseTaps {
     std::vector<Vec2> jitter;
     std::vector<AxisTaps> x, y;
@@ -373,6 +366,7 @@ EngineResult render_engine_taa(const EngineRun& run, const Sequence& s, const En
   for (int p = 0; p < period; ++p) {
     PhaseTaps& t = phases[static_cast<size_t>(p)];
     t.jitter = placed.frames[static_cast<size_t>(p)].sets[0];
+    if (taa.resolve != TaaResolve::generic) continue;  // an engine's own reads the samples
     std::vector<double> ox, oy;
     for (const Vec2 j : t.jitter) {
       ox.push_back(j.x);

@@ -137,20 +137,18 @@ bool generic_only(const std::string& key) {
   return key != "jitter_sign" && key != "resolve";
 }
 
-}  // namespace
-
-namespace {
-
-// Each resolve's name (`resolve=`) and the engine and version it transcribes.
+// Each resolve's name (`resolve=`), the engine and version it transcribes,
+// and whether it is a native TAA, which runs at ratio 1 only.
 struct ResolveInfo {
   TaaResolve resolve;
   std::string_view name, engine;
+  bool native;
 };
-constexpr ResolveInfo kResolves[] = {{TaaResolve::generic, "generic", "generic"},
-                                     {TaaResolve::fsr2_2, "fsr2-2.2", "FSR 2.2"},
-                                     {TaaResolve::ue4_4_26, "ue4-4.26", "UE 4.26"},
-                                     {TaaResolve::godot_4_6, "godot-4.6", "Godot 4.6"},
-                                     {TaaResolve::bevy_0_17, "bevy-0.17", "Bevy 0.17"}};
+constexpr ResolveInfo kResolves[] = {{TaaResolve::generic, "generic", "generic", false},
+                                     {TaaResolve::fsr2_2, "fsr2-2.2", "FSR 2.2", false},
+                                     {TaaResolve::ue4_4_26, "ue4-4.26", "UE 4.26", true},
+                                     {TaaResolve::godot_4_6, "godot-4.6", "Godot 4.6", true},
+                                     {TaaResolve::bevy_0_17, "bevy-0.17", "Bevy 0.17", true}};
 
 const ResolveInfo& info(TaaResolve r) {
   for (const ResolveInfo& i : kResolves)
@@ -175,6 +173,19 @@ std::string_view taa_resolve_name(TaaResolve r) {
 
 std::string_view taa_resolve_engine(TaaResolve r) {
   return info(r).engine;
+}
+
+void check_resolve_ratio(TaaResolve r, double ratio) {
+  // Below 100 % screen percentage UE runs TAAU, another pass, and Godot and
+  // Bevy upscale with other passes.
+  if (info(r).native && ratio != 1)
+    throw ParameterError(
+        "ratio",
+        fmt::format(
+            " {}: resolve {} is {}'s native TAA, which runs at ratio 1{}; give "
+            "resolve=generic first to render the generic pipeline",
+            ratio, info(r).name, info(r).engine,
+            r == TaaResolve::ue4_4_26 ? " (its upsampling pass, TAAU, is not transcribed)" : ""));
 }
 
 Sequence engine_samples(const Sequence& s, const EngineTaa& t) {
@@ -314,16 +325,7 @@ EngineTaa make_engine_taa(std::string_view preset, double ratio,
                                    "give resolve=generic first to use the generic one",
                                    key, value, taa_resolve_name(t.resolve),
                                    taa_resolve_engine(t.resolve), key));
-  // The native TAAs run at 100 % screen percentage: below it UE runs TAAU,
-  // another pass, and Godot and Bevy upscale with other passes.
-  if (t.resolve != TaaResolve::generic && t.resolve != TaaResolve::fsr2_2 && ratio != 1)
-    throw ParameterError(
-        "ratio", fmt::format(" {}: resolve {} is {}'s native TAA, which runs at ratio 1{}; give "
-                             "resolve=generic first to render the generic pipeline",
-                             ratio, taa_resolve_name(t.resolve), taa_resolve_engine(t.resolve),
-                             t.resolve == TaaResolve::ue4_4_26
-                                 ? " (its upsampling pass, TAAU, is not transcribed)"
-                                 : ""));
+  check_resolve_ratio(t.resolve, ratio);
   if (t.alpha_min > t.alpha_max)
     throw ParameterError("alpha_min",
                          fmt::format(" {} exceeds alpha_max {}", t.alpha_min, t.alpha_max));
@@ -355,7 +357,7 @@ std::string engine_taa_text(const EngineTaa& t) {
   if (t.resolve == TaaResolve::fsr2_2)
     return fmt::format("{} at {:g}x (FSR 2.2's upsample, history, rectification and blend; {})",
                        t.preset, t.upscale.ratio, samples);
-  if (t.resolve != TaaResolve::generic && t.resolve != TaaResolve::fsr2_2)
+  if (t.resolve != TaaResolve::generic)
     return fmt::format("{} at {:g}x ({}'s own history, rectification and blend; {})", t.preset,
                        t.upscale.ratio, taa_resolve_engine(t.resolve), samples);
   return fmt::format("{} at {:g}x ({} reconstruction, {} history, {}, {}; {})", t.preset,

@@ -47,6 +47,9 @@ TaaResolve parse_taa_resolve(std::string_view name);
 std::string_view taa_resolve_name(TaaResolve r);
 // The engine and version a resolve transcribes ("UE 4.26"); "generic".
 std::string_view taa_resolve_engine(TaaResolve r);
+// Throws ParameterError naming "ratio" where the resolve is a native TAA
+// (UE's main pass, Godot's, Bevy's: 100 % screen percentage) and R != 1.
+void check_resolve_ratio(TaaResolve r, double ratio);
 
 struct EngineTaa {
   std::string preset = "custom";
